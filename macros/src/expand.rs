@@ -1,0 +1,361 @@
+//! Step 3: the generated code. A zero-sized struct, its `ButcherMethod` data and, for an
+//! explicit tableau, an `ExplicitMethod` whose step is unrolled over the nonzero
+//! coefficients.
+//!
+//! The unrolled step performs exactly the floating-point operations of the library's
+//! `RuntimeRk`, in the same order, so both give bitwise-equal trajectories: a stage input
+//! is `y_m + h * (w_j1 k_j1,m + w_j2 k_j2,m + ...)` summed left to right over the nonzero
+//! weights in column order, `y_m` alone for an empty row, and an error estimate is
+//! `h * (...)` without a base (zero when every difference vanishes).
+
+use proc_macro2::{Literal, Span, TokenStream};
+use quote::{format_ident, quote, quote_spanned};
+use stormer_order::ValidTableau;
+
+use crate::valid::Method;
+
+/// An `f64` literal that reads back to exactly `x` (sign as a separate token).
+fn float(x: f64) -> TokenStream {
+    let lit = Literal::f64_suffixed(x.abs());
+    if x.is_sign_negative() {
+        quote!(-#lit)
+    } else {
+        quote!(#lit)
+    }
+}
+
+/// `&[x1, x2, ...]`.
+fn floats(v: &[f64]) -> TokenStream {
+    let items = v.iter().map(|&x| float(x));
+    quote!(&[#(#items),*])
+}
+
+/// `None` or `Some(&[...])`.
+fn optional_floats(v: Option<&Vec<f64>>) -> TokenStream {
+    match v {
+        Some(v) => {
+            let v = floats(v);
+            quote!(::stormer::__private::Some(#v))
+        }
+        None => quote!(::stormer::__private::None),
+    }
+}
+
+/// The distinct nonzero coefficient values the step uses, in order of first use; the
+/// generated code reads slot `i` as `co[i]`.
+#[derive(Default)]
+struct Slots {
+    values: Vec<f64>,
+}
+
+impl Slots {
+    /// The slot of `x` (bitwise-equal values share one).
+    fn of(&mut self, x: f64) -> usize {
+        match self.values.iter().position(|v| v.to_bits() == x.to_bits()) {
+            Some(i) => i,
+            None => {
+                self.values.push(x);
+                self.values.len() - 1
+            }
+        }
+    }
+
+    /// `(column, slot)` of every nonzero entry of `row`, in column order.
+    fn sparse(&mut self, row: impl IntoIterator<Item = f64>) -> Vec<(usize, usize)> {
+        row.into_iter()
+            .enumerate()
+            .filter(|&(_, x)| x != 0.0)
+            .map(|(j, x)| (j, self.of(x)))
+            .collect()
+    }
+}
+
+/// `(column, bits)` of the nonzero entries: equal exactly when two rows give the same
+/// operations.
+fn pattern(row: &[f64]) -> Vec<(usize, u64)> {
+    row.iter()
+        .enumerate()
+        .filter(|&(_, &x)| x != 0.0)
+        .map(|(j, &x)| (j, x.to_bits()))
+        .collect()
+}
+
+/// The sum of the terms of one linear combination, for component `m`.
+fn sum(sp: Span, terms: &[(usize, usize)]) -> TokenStream {
+    let parts = terms.iter().map(|&(j, slot)| {
+        let kj = format_ident!("k{}", j, span = sp);
+        let slot = Literal::usize_unsuffixed(slot);
+        quote_spanned!(sp=> co[#slot] * #kj[m])
+    });
+    quote_spanned!(sp=> #(#parts)+*)
+}
+
+/// A block writing `out = base + h * sum_j w_j k_j` (`base` alone when there are no
+/// terms) or, without a base, `out = h * sum` (zero when there are no terms), with
+/// `out = State::as_mut_slice(out_expr)` and `k_j` read from the slice `ks`.
+fn combine(
+    sp: Span,
+    out: &TokenStream,
+    base: Option<TokenStream>,
+    ks: &TokenStream,
+    terms: &[(usize, usize)],
+) -> TokenStream {
+    let views = terms.iter().map(|&(j, _)| {
+        let kj = format_ident!("k{}", j, span = sp);
+        let j = Literal::usize_unsuffixed(j);
+        quote_spanned!(sp=> let #kj = &::stormer::__private::State::as_slice(&#ks[#j])[..n];)
+    });
+    let sum = sum(sp, terms);
+    let (base_view, value) = match (base, terms.is_empty()) {
+        (Some(y), true) => (
+            quote_spanned!(sp=> let ys = &::stormer::__private::State::as_slice(#y)[..n];),
+            quote_spanned!(sp=> ys[m]),
+        ),
+        (Some(y), false) => (
+            quote_spanned!(sp=> let ys = &::stormer::__private::State::as_slice(#y)[..n];),
+            quote_spanned!(sp=> ys[m] + h * (#sum)),
+        ),
+        (None, true) => (
+            quote_spanned!(sp=> let zero = ::stormer::__private::lit::<_>(0.0f64);),
+            quote_spanned!(sp=> zero),
+        ),
+        (None, false) => (quote!(), quote_spanned!(sp=> h * (#sum))),
+    };
+    quote_spanned! {sp=>
+        {
+            let out = ::stormer::__private::State::as_mut_slice(#out);
+            let n = out.len();
+            #base_view
+            #(#views)*
+            for m in 0..n {
+                out[m] = #value;
+            }
+        }
+    }
+}
+
+/// The `ExplicitMethod` impl of an explicit tableau.
+fn explicit_impl(ident: &syn::Ident, t: &ValidTableau) -> TokenStream {
+    let sp = Span::mixed_site();
+    let s = t.stages;
+    let row = |i: usize| &t.a[i * s..(i + 1) * s];
+    let mut slots = Slots::default();
+
+    // Stages 2..=s: stage input from the earlier stages, then the right-hand side.
+    let mut stages = Vec::new();
+    for i in 1..s {
+        let terms = slots.sparse(row(i)[..i].iter().copied());
+        let input = combine(
+            sp,
+            &quote_spanned!(sp=> &mut *y_new),
+            Some(quote_spanned!(sp=> y)),
+            &quote_spanned!(sp=> done),
+            &terms,
+        );
+        let time = if t.c[i] == 0.0 {
+            quote_spanned!(sp=> t)
+        } else {
+            let slot = Literal::usize_unsuffixed(slots.of(t.c[i]));
+            quote_spanned!(sp=> t + co[#slot] * h)
+        };
+        let i = Literal::usize_unsuffixed(i);
+        stages.push(quote_spanned! {sp=>
+            {
+                let (done, rest) = k.split_at_mut(#i);
+                #input
+                p.rhs(#time, &*y_new, &mut rest[0]);
+            }
+        });
+    }
+
+    // The solution, unless the last stage input already is `y + h sum_j b_j k_j`.
+    let reuse_last = t.flags.fsal && s >= 2 && pattern(row(s - 1)) == pattern(&t.b);
+    let solution = if reuse_last {
+        quote!()
+    } else {
+        let terms = slots.sparse(t.b.iter().copied());
+        combine(
+            sp,
+            &quote_spanned!(sp=> &mut *y_new),
+            Some(quote_spanned!(sp=> y)),
+            &quote_spanned!(sp=> k),
+            &terms,
+        )
+    };
+
+    // Error estimates with d = b - b_hat computed in f64, as RuntimeRk does.
+    let mut estimate = |w: Option<&Vec<f64>>| match w {
+        Some(w) => {
+            let terms = slots.sparse(t.b.iter().zip(w).map(|(b, w)| b - w));
+            combine(
+                sp,
+                &quote_spanned!(sp=> &mut *err),
+                None,
+                &quote_spanned!(sp=> k),
+                &terms,
+            )
+        }
+        None => quote_spanned!(sp=> let _ = (co, h, k, err);),
+    };
+    let error = estimate(t.b_hat.as_ref());
+    let error3 = estimate(t.b_hat3.as_ref());
+
+    let k_len = Literal::usize_unsuffixed(slots.values.len());
+    let coeffs = slots.values.iter().map(|&x| {
+        let x = float(x);
+        quote_spanned!(sp=> ::stormer::__private::lit::<T>(#x))
+    });
+
+    quote_spanned! {sp=>
+        #[automatically_derived]
+        #[allow(unused_variables, clippy::all, clippy::pedantic, clippy::nursery)]
+        impl ::stormer::__private::ExplicitMethod for #ident {
+            type Coeffs<T: ::stormer::__private::Real> = [T; #k_len];
+
+            #[inline]
+            fn coeffs<T: ::stormer::__private::Real>() -> [T; #k_len] {
+                [#(#coeffs),*]
+            }
+
+            #[inline]
+            fn stages<P: ::stormer::__private::Problem>(
+                co: &[P::Scalar; #k_len],
+                p: &P,
+                t: P::Scalar,
+                h: P::Scalar,
+                y: &P::State,
+                k: &mut [P::State],
+                y_new: &mut P::State,
+            ) {
+                #(#stages)*
+                #solution
+            }
+
+            #[inline]
+            fn error<S: ::stormer::__private::State>(
+                co: &[S::Scalar; #k_len],
+                h: S::Scalar,
+                k: &[S],
+                err: &mut S,
+            ) {
+                #error
+            }
+
+            #[inline]
+            fn error3<S: ::stormer::__private::State>(
+                co: &[S::Scalar; #k_len],
+                h: S::Scalar,
+                k: &[S],
+                err: &mut S,
+            ) {
+                #error3
+            }
+        }
+    }
+}
+
+/// The whole expansion of a validated tableau.
+pub fn expand(method: &Method) -> TokenStream {
+    let Method {
+        attrs,
+        vis,
+        ident,
+        name,
+        tableau: t,
+    } = method;
+    let order = Literal::usize_unsuffixed(t.order);
+    let stages = Literal::usize_unsuffixed(t.stages);
+    let embedded_order = match t.embedded_order {
+        Some(p) => {
+            let p = Literal::usize_unsuffixed(p);
+            quote!(::stormer::__private::Some(#p))
+        }
+        None => quote!(::stormer::__private::None),
+    };
+    let (a, b, c) = (floats(&t.a), floats(&t.b), floats(&t.c));
+    let b_hat = optional_floats(t.b_hat.as_ref());
+    let b_hat3 = optional_floats(t.b_hat3.as_ref());
+    let stormer_order::Flags {
+        explicit,
+        fsal,
+        symplectic,
+        symmetric,
+    } = t.flags;
+
+    let dyn_stepper = if explicit {
+        quote! {
+            let _ = implicit;
+            ::stormer::__private::ExplicitRk::<Self, P::State>::boxed::<P>(y0)
+        }
+    } else {
+        quote! {
+            ::stormer::__private::implicit_stepper::<P>(
+                &<Self as ::stormer::__private::ButcherMethod>::DATA,
+                y0,
+                implicit,
+            )
+        }
+    };
+    let explicit_impl = if explicit { explicit_impl(ident, t) } else { quote!() };
+
+    quote! {
+        #(#attrs)*
+        #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+        #vis struct #ident;
+
+        #[automatically_derived]
+        impl ::stormer::__private::ButcherMethod for #ident {
+            const DATA: ::stormer::__private::TableauData = ::stormer::__private::TableauData {
+                name: #name,
+                order: #order,
+                embedded_order: #embedded_order,
+                stages: #stages,
+                a: #a,
+                b: #b,
+                c: #c,
+                b_hat: #b_hat,
+                b_hat3: #b_hat3,
+                flags: ::stormer::__private::Flags {
+                    explicit: #explicit,
+                    fsal: #fsal,
+                    symplectic: #symplectic,
+                    symmetric: #symmetric,
+                },
+            };
+
+            fn dyn_stepper<P>(
+                y0: &P::State,
+                implicit: &::stormer::__private::ImplicitOptions,
+            ) -> ::stormer::__private::Box<dyn ::stormer::__private::Stepper<P>>
+            where
+                P: ::stormer::__private::Problem + 'static,
+            {
+                #dyn_stepper
+            }
+        }
+
+        #explicit_impl
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn slots_share_equal_values_and_skip_zeros() {
+        let mut slots = Slots::default();
+        assert_eq!(slots.sparse([0.0, 0.5, 0.0, 0.5]), [(1, 0), (3, 0)]);
+        assert_eq!(slots.sparse([0.25, -0.0]), [(0, 1)]);
+        assert_eq!(slots.values, [0.5, 0.25]);
+    }
+
+    #[test]
+    fn floats_read_back_exactly() {
+        for x in [1.0 / 3.0, -0.1, 1e-300, 6.02e23, -0.0, 5.0] {
+            let text = float(x).to_string().replace(' ', "");
+            let back: f64 = text.trim_end_matches("f64").parse().unwrap();
+            assert_eq!(back.to_bits(), x.to_bits(), "{text}");
+        }
+    }
+}

@@ -1,0 +1,57 @@
+//! Procedural macros of `stormer`: declare a method from its coefficients, checked at
+//! compile time.
+//!
+//! Use them through the `stormer` crate (`stormer::tableau!`); the expansion refers to
+//! `::stormer::__private`. Each macro works in three steps, one file each: `parse` (the
+//! syntax, with spans), `valid` (evaluation of the coefficients and validation by
+//! `stormer_order`, the code the library also uses at run time) and `expand` (the
+//! generated types and their unrolled steps).
+
+mod expand;
+mod parse;
+mod valid;
+
+use proc_macro::TokenStream;
+
+/// Declares a Butcher tableau, checks it at compile time and generates its stepper.
+///
+/// ```text
+/// stormer::tableau! {
+///     /// The classical fourth-order Runge-Kutta method.
+///     pub struct Rk4 {
+///         name: "rk4",
+///         order: 4,
+///         c: [0, 1/2, 1/2, 1],          // optional: the row sums of `a` by default
+///         a: [
+///             [],                       // rows may be shorter than s: padded with zeros
+///             [1/2],
+///             [0, 1/2],
+///             [0, 0, 1],
+///         ],
+///         b: [1/6, 1/3, 1/3, 1/6],
+///         // optional: b_hat: [...], embedded_order: 4, b_hat3: [...], tolerance: 1e-10
+///     }
+/// }
+/// ```
+///
+/// Keys come in any order; `name`, `order`, `a` and `b` are required. A coefficient is an
+/// expression of integers, decimals, `+ - * /`, parentheses, `sqrt(..)` and integer
+/// powers `x ^ n`, evaluated to the nearest `f64` by `stormer_order::eval_coefficient`.
+///
+/// The tableau is validated by `stormer_order::validate` (shapes, `c_i = sum_j a_ij`, every
+/// order condition of `b` up to `order`, of `b_hat` up to `embedded_order`, of `b_hat3` up
+/// to 3); each failure is a compile error on the offending tokens, e.g. on `b`:
+/// `order 4 condition sum b_i c_i^3 = 1/4 fails: got 0.2604`.
+///
+/// The expansion is a zero-sized `#[derive(Clone, Copy, Debug, Default, PartialEq, Eq,
+/// Hash)]` struct carrying the outer attributes given, implementing
+/// `stormer::ButcherMethod` and, for an explicit tableau, `stormer::ExplicitMethod` with a
+/// step unrolled over the nonzero coefficients only.
+#[proc_macro]
+pub fn tableau(input: TokenStream) -> TokenStream {
+    let input = syn::parse_macro_input!(input as parse::Input);
+    match valid::validate(input) {
+        Ok(method) => expand::expand(&method).into(),
+        Err(e) => e.into_compile_error().into(),
+    }
+}

@@ -1,0 +1,258 @@
+//! The driver: the integration loop around any [`Stepper`].
+//!
+//! Fixed or adaptive steps, forwards or backwards in time, a record every N steps,
+//! statistics, a stop condition located by root finding, and on failure everything
+//! recorded so far together with the error.
+
+mod adaptive;
+mod event;
+mod record;
+
+pub use record::{Interrupted, Recorder, Solution, Stats, StopEvent};
+
+#[allow(unused_imports)]
+use crate::real::ops::*;
+use crate::{lit, to_f64, Error, Problem, Real, State, Stepper, Tolerances};
+
+/// How the step size is chosen.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum StepControl<T> {
+    /// Constant step `h` (its sign is ignored: the direction comes from the time span);
+    /// the last step is shortened to land on `t_end` when `h` does not divide the span.
+    Fixed(T),
+    /// Embedded error control with a PI controller (Hairer's `dopri5`/`dop853` rules).
+    Adaptive {
+        /// Tolerances of the scaled error norm.
+        tol: Tolerances<T>,
+        /// First step size; chosen automatically (Hairer's `hinit`) when `None`.
+        h0: Option<T>,
+        /// Largest step magnitude allowed.
+        h_max: Option<T>,
+    },
+}
+
+/// A stop condition `g(t, y)`: the run ends where `g` changes sign.
+pub type StopFn<'a, T, S> = Box<dyn Fn(T, &S) -> T + 'a>;
+
+/// Configuration of a run. Build it with [`Driver::fixed`] or [`Driver::adaptive`].
+///
+/// ```
+/// use stormer::{catalog::Rk4, Driver, ExplicitRk, Problem};
+/// struct Fall;
+/// impl Problem for Fall {
+///     type Scalar = f64;
+///     type State = [f64; 2]; // height, velocity
+///     fn rhs(&self, _t: f64, y: &[f64; 2], dy: &mut [f64; 2]) { *dy = [y[1], -9.81]; }
+/// }
+/// let y0 = [10.0, 0.0];
+/// let mut rk4 = ExplicitRk::<Rk4, _>::new(&y0);
+/// let solution = Driver::fixed(0.01)
+///     .every(10)
+///     .stop_when(|_t, y: &[f64; 2]| y[0]) // stop when the height crosses 0
+///     .run(&Fall, &mut rk4, 0.0, &y0, 100.0)
+///     .unwrap();
+/// let landing = solution.stopped.unwrap().t;
+/// assert!((landing - (2.0 * 10.0 / 9.81f64).sqrt()).abs() < 1e-12);
+/// ```
+pub struct Driver<'a, T: Real, S> {
+    control: StepControl<T>,
+    every: u64,
+    max_steps: u64,
+    stop: Option<StopFn<'a, T, S>>,
+}
+
+impl<'a, T: Real, S: State<Scalar = T>> Driver<'a, T, S> {
+    /// Fixed steps of size `h`.
+    pub fn fixed(h: T) -> Self {
+        Driver::with(StepControl::Fixed(h))
+    }
+
+    /// Adaptive steps controlled by `tol`.
+    pub fn adaptive(tol: Tolerances<T>) -> Self {
+        Driver::with(StepControl::Adaptive {
+            tol,
+            h0: None,
+            h_max: None,
+        })
+    }
+
+    /// Any step control.
+    pub fn with(control: StepControl<T>) -> Self {
+        Driver {
+            control,
+            every: 1,
+            max_steps: 100_000_000,
+            stop: None,
+        }
+    }
+
+    /// Record every `n` accepted steps (the first and last states are always recorded).
+    pub fn every(mut self, n: u64) -> Self {
+        self.every = n.max(1);
+        self
+    }
+
+    /// Give up after `n` steps (default 1e8).
+    pub fn max_steps(mut self, n: u64) -> Self {
+        self.max_steps = n;
+        self
+    }
+
+    /// Stop where `g(t, y)` changes sign; the crossing is located by root finding on the
+    /// step size and becomes the last record.
+    pub fn stop_when(mut self, g: impl Fn(T, &S) -> T + 'a) -> Self {
+        self.stop = Some(Box::new(g));
+        self
+    }
+
+    /// Integrates from `(t0, y0)` to `t_end`, keeping the records in memory.
+    pub fn run<P, St>(
+        &self,
+        p: &P,
+        stepper: &mut St,
+        t0: T,
+        y0: &S,
+        t_end: T,
+    ) -> Result<Solution<T, S>, Interrupted<T, S>>
+    where
+        P: Problem<Scalar = T, State = S>,
+        St: Stepper<P> + ?Sized,
+    {
+        let mut solution = Solution::default();
+        match self.run_into(p, stepper, t0, y0, t_end, &mut solution) {
+            Ok((stats, stopped)) => {
+                solution.stats = stats;
+                solution.stopped = stopped;
+                Ok(solution)
+            }
+            Err((stats, error)) => {
+                solution.stats = stats;
+                Err(Interrupted { solution, error })
+            }
+        }
+    }
+
+    /// Integrates, handing each record to `out` as it is made (e.g. a CSV stream).
+    /// On failure returns the statistics so far and the error; `out` has every record
+    /// made before it.
+    pub fn run_into<P, St, R>(
+        &self,
+        p: &P,
+        stepper: &mut St,
+        t0: T,
+        y0: &S,
+        t_end: T,
+        out: &mut R,
+    ) -> Result<(Stats, Option<StopEvent<T, S>>), (Stats, Error)>
+    where
+        P: Problem<Scalar = T, State = S>,
+        St: Stepper<P> + ?Sized,
+        R: Recorder<T, S> + ?Sized,
+    {
+        let mut stats = Stats::default();
+        let check = |t: T, what: &str| {
+            if t.is_finite() {
+                Ok(())
+            } else {
+                Err(Error::invalid(what, "must be finite"))
+            }
+        };
+        let setup = check(t0, "start time")
+            .and_then(|_| check(t_end, "end time"))
+            .and_then(|_| {
+                if y0.is_finite() {
+                    Ok(())
+                } else {
+                    Err(Error::invalid("initial state", "has a non-finite component"))
+                }
+            })
+            .and_then(|_| out.record(t0, y0, p.energy(t0, y0)));
+        if let Err(e) = setup {
+            return Err((stats, e));
+        }
+        stepper.reset();
+        let base = stepper.counters();
+        let result = match self.control {
+            StepControl::Fixed(h) => self.fixed_loop(p, stepper, t0, y0, t_end, h, out, &mut stats),
+            StepControl::Adaptive { tol, h0, h_max } => {
+                self.adaptive_loop(p, stepper, t0, y0, t_end, &tol, h0, h_max, out, &mut stats)
+            }
+        };
+        let c = stepper.counters();
+        stats.evaluations += c.evaluations - base.evaluations;
+        stats.solver_iterations += c.solver_iterations - base.solver_iterations;
+        stats.jacobians += c.jacobians - base.jacobians;
+        match result {
+            Ok(stop) => Ok((stats, stop)),
+            Err(e) => Err((stats, e)),
+        }
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    fn fixed_loop<P, St, R>(
+        &self,
+        p: &P,
+        stepper: &mut St,
+        t0: T,
+        y0: &S,
+        t_end: T,
+        h: T,
+        out: &mut R,
+        stats: &mut Stats,
+    ) -> Result<Option<StopEvent<T, S>>, Error>
+    where
+        P: Problem<Scalar = T, State = S>,
+        St: Stepper<P> + ?Sized,
+        R: Recorder<T, S> + ?Sized,
+    {
+        let span = t_end - t0;
+        if !(h.is_finite() && h != T::zero()) {
+            return Err(Error::invalid(
+                "step size",
+                format!("must be finite and non-zero, got {}", to_f64(h)),
+            ));
+        }
+        let h = if span < T::zero() { -h.abs() } else { h.abs() };
+        // Steps of exactly h; a last, shorter one when h does not divide the span.
+        let ratio = to_f64(span / h);
+        let whole = ratio.round();
+        let exact = (ratio - whole).abs() <= 1e-9 * ratio.abs().max(1.0);
+        let n = if exact { whole } else { ratio.ceil() };
+        if n > self.max_steps as f64 {
+            return Err(Error::TooManySteps {
+                t: to_f64(t0),
+                steps: self.max_steps,
+            });
+        }
+        let n = n as u64;
+        let mut y = y0.clone();
+        let mut y_new = y0.clone();
+        let mut g_old = self.stop.as_ref().map(|g| g(t0, y0));
+        for i in 0..n {
+            let t = t0 + lit::<T>(i as f64) * h;
+            let hi = if i + 1 == n && !exact { t_end - t } else { h };
+            stepper.step(p, t, hi, &y, &mut y_new, None)?;
+            if !y_new.is_finite() {
+                return Err(Error::NonFinite { t: to_f64(t), step: i });
+            }
+            if let Some(event) = self.locate(p, stepper, t, hi, &y, &mut y_new, &mut g_old)? {
+                stats.steps += 1;
+                stepper.accept();
+                out.record(event.t, &event.y, p.energy(event.t, &event.y))?;
+                return Ok(Some(event));
+            }
+            stepper.accept();
+            core::mem::swap(&mut y, &mut y_new);
+            stats.steps += 1;
+            let t_next = if i + 1 == n && !exact {
+                t_end
+            } else {
+                t0 + lit::<T>((i + 1) as f64) * h
+            };
+            if (i + 1) % self.every == 0 || i + 1 == n {
+                out.record(t_next, &y, p.energy(t_next, &y))?;
+            }
+        }
+        Ok(None)
+    }
+}

@@ -1,0 +1,142 @@
+//! The one error type of the library.
+
+use thiserror::Error;
+
+/// Everything that can go wrong while building a method or integrating.
+///
+/// Numbers are reported as `f64` whatever the scalar type, so the error is not generic.
+#[derive(Debug, Clone, Error, PartialEq)]
+#[non_exhaustive]
+pub enum Error {
+    /// The state became NaN or infinite.
+    #[error("the state became non-finite at t = {t} (step {step})")]
+    NonFinite {
+        /// Time at the start of the failing step.
+        t: f64,
+        /// Index of the failing step (0-based).
+        step: u64,
+    },
+    /// An implicit stage equation was not solved.
+    #[error("the implicit solver did not converge at t = {t}: residual {residual:.3e} after {iterations} iterations")]
+    SolverDiverged {
+        /// Time at the start of the step.
+        t: f64,
+        /// Last residual (max norm of the stage update).
+        residual: f64,
+        /// Iterations performed.
+        iterations: usize,
+    },
+    /// The adaptive controller needed a step below the smallest representable increment.
+    #[error("step size underflow at t = {t}: h = {h:e}")]
+    StepSizeTooSmall {
+        /// Time where it happened.
+        t: f64,
+        /// The rejected step size.
+        h: f64,
+    },
+    /// The adaptive driver hit its step budget.
+    #[error("gave up at t = {t} after {steps} steps (max_steps)")]
+    TooManySteps {
+        /// Time reached.
+        t: f64,
+        /// Steps taken.
+        steps: u64,
+    },
+    /// A method's data are not a valid method.
+    #[error("invalid method {name}: {reason}")]
+    InvalidMethod {
+        /// The method's name (or file).
+        name: String,
+        /// What is wrong.
+        reason: String,
+    },
+    /// A method name that is not in the catalog.
+    #[error("unknown method '{name}'{}", suggest(.suggestions))]
+    UnknownMethod {
+        /// What the user typed.
+        name: String,
+        /// The nearest catalog names.
+        suggestions: Vec<String>,
+    },
+    /// A method that cannot run the requested way (e.g. adaptive steps without an embedded pair).
+    #[error("method {name} cannot be used here: {reason}")]
+    Unsupported {
+        /// The method.
+        name: String,
+        /// Why.
+        reason: String,
+    },
+    /// A scene file that cannot be read or does not describe a valid scene.
+    #[error("scene {file}: {reason}")]
+    Scene {
+        /// The scene's name or file path.
+        file: String,
+        /// What is wrong, with the line and the field where the file says it.
+        reason: String,
+    },
+    /// Writing the output of a run failed.
+    #[error("cannot write {path}: {reason}")]
+    Io {
+        /// The file being written.
+        path: String,
+        /// The operating system's reason.
+        reason: String,
+    },
+    /// An argument out of its domain.
+    #[error("invalid {what}: {reason}")]
+    InvalidArgument {
+        /// Which argument.
+        what: String,
+        /// Why.
+        reason: String,
+    },
+}
+
+fn suggest(names: &[String]) -> String {
+    match names {
+        [] => String::new(),
+        [one] => format!("; did you mean '{one}'?"),
+        more => format!("; did you mean one of: {}?", more.join(", ")),
+    }
+}
+
+/// A TOML error on one line: `line L, column C: message` (toml's own `Display` spans
+/// several lines with a source excerpt, which does not fit a one-line error).
+pub(crate) fn toml_message(e: &toml::de::Error, text: &str) -> String {
+    let message = one_line(e.message());
+    match e.span() {
+        Some(span) => {
+            let (line, column) = line_column(text, span.start);
+            format!("line {line}, column {column}: {message}")
+        }
+        None => message,
+    }
+}
+
+/// The 1-based line and column (in characters) of byte `offset` of `text`.
+pub(crate) fn line_column(text: &str, offset: usize) -> (usize, usize) {
+    let before = text.get(..offset.min(text.len())).unwrap_or(text);
+    let line = before.matches('\n').count() + 1;
+    let column = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
+    (line, column)
+}
+
+/// Joins the lines of a message with "; ".
+pub(crate) fn one_line(message: &str) -> String {
+    message
+        .lines()
+        .map(str::trim)
+        .filter(|l| !l.is_empty())
+        .collect::<Vec<_>>()
+        .join("; ")
+}
+
+impl Error {
+    /// Shorthand for [`Error::InvalidArgument`].
+    pub fn invalid(what: impl Into<String>, reason: impl Into<String>) -> Self {
+        Error::InvalidArgument {
+            what: what.into(),
+            reason: reason.into(),
+        }
+    }
+}

@@ -1,0 +1,67 @@
+#![doc = include_str!("../README.md")]
+#![forbid(unsafe_code)]
+
+// The macros expand to `::stormer::...` paths; this makes them resolve inside the crate.
+extern crate self as stormer;
+
+pub mod catalog;
+pub mod driver;
+mod error;
+pub mod method;
+mod problem;
+mod real;
+pub mod registry;
+mod state;
+pub mod stepper;
+
+pub use driver::{Driver, Interrupted, Solution, Stats, StepControl, StopEvent};
+pub use error::Error;
+pub use method::{ButcherMethod, ExplicitMethod, Flags, MethodInfo, Tableau, TableauData};
+pub use problem::Problem;
+pub use real::{lit, to_f64, Real};
+pub use state::State;
+pub use stepper::{ExplicitRk, ImplicitOptions, ImplicitRk, ImplicitSolver, RuntimeRk, Stepper, Tolerances};
+
+/// Declares a Butcher tableau, checks it at compile time and generates its stepper.
+///
+/// See `docs/declaring-a-method.md` and the crate README for the syntax.
+#[cfg(feature = "macros")]
+pub use stormer_macros::tableau;
+
+/// The order-condition algebra shared with the macros (re-exported for `verify`-style use).
+pub use stormer_order as order;
+
+/// The everyday items in one import.
+pub mod prelude {
+    pub use crate::{
+        Driver, Error, ExplicitRk, ImplicitOptions, ImplicitRk, Problem, Real, RuntimeRk, Solution, State, Stepper,
+        Tableau, Tolerances,
+    };
+}
+
+/// Items the macros' expansions use; not part of the public API.
+#[doc(hidden)]
+pub mod __private {
+    pub use crate::method::{ButcherMethod, ExplicitMethod, Flags, TableauData};
+    pub use crate::real::lit;
+    pub use crate::stepper::{ExplicitRk, ImplicitOptions, ImplicitRk, Stepper};
+    pub use crate::{Problem, Real, State, Tableau};
+    pub use core::option::Option::{None, Some};
+    pub use std::boxed::Box;
+
+    /// The implicit stepper of a compiled tableau (its data already passed the macro's
+    /// checks, so building the run-time copy cannot fail).
+    pub fn implicit_stepper<P: Problem + 'static>(
+        data: &TableauData,
+        y0: &P::State,
+        options: &ImplicitOptions,
+    ) -> Box<dyn Stepper<P>>
+    where
+        P::State: 'static,
+    {
+        match Tableau::from_data(data) {
+            Ok(t) => Box::new(ImplicitRk::new(&t, y0, *options)),
+            Err(e) => unreachable!("compiled tableau failed validation: {e}"),
+        }
+    }
+}

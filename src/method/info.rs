@@ -1,0 +1,61 @@
+//! Static description of a method: its coefficients and what is derived from them.
+
+pub use stormer_order::Flags;
+
+/// The coefficients of a Butcher tableau as compiled into the binary by [`crate::tableau!`].
+///
+/// Values are the `f64` nearest to each declared expression; `a` is row-major `s x s`.
+#[derive(Debug, Clone, Copy)]
+pub struct TableauData {
+    /// Catalog name, e.g. `"rk4"`.
+    pub name: &'static str,
+    /// Declared (and verified) order of `b`.
+    pub order: usize,
+    /// Declared (and verified) order of `b_hat`.
+    pub embedded_order: Option<usize>,
+    /// Number of stages `s`.
+    pub stages: usize,
+    /// Stage matrix, row-major.
+    pub a: &'static [f64],
+    /// Weights.
+    pub b: &'static [f64],
+    /// Nodes.
+    pub c: &'static [f64],
+    /// Embedded weights (error estimate `h sum (b_i - b_hat_i) k_i`).
+    pub b_hat: Option<&'static [f64]>,
+    /// DOP853's second, third-order embedded weights.
+    pub b_hat3: Option<&'static [f64]>,
+    /// Flags derived from the data at compile time.
+    pub flags: Flags,
+}
+
+/// One row of the method table (`stormer methods`).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct MethodInfo {
+    /// Catalog name.
+    pub name: String,
+    /// `"butcher"`, later `"splitting"` or `"composition"`.
+    pub family: &'static str,
+    /// Order.
+    pub order: usize,
+    /// Stages (right-hand-side evaluations of one step, before FSAL reuse).
+    pub stages: usize,
+    /// Embedded order, if the method estimates its error.
+    pub embedded_order: Option<usize>,
+    /// Derived flags.
+    pub flags: Flags,
+}
+
+impl TableauData {
+    /// The table row of this method.
+    pub fn info(&self) -> MethodInfo {
+        MethodInfo {
+            name: self.name.to_string(),
+            family: "butcher",
+            order: self.order,
+            stages: self.stages,
+            embedded_order: self.embedded_order,
+            flags: self.flags,
+        }
+    }
+}

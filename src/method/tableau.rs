@@ -1,0 +1,359 @@
+//! A Butcher tableau built at run time: from coefficients, or from a TOML file in the
+//! catalog's format, validated by the same code the compile-time macro uses.
+
+use super::{Flags, MethodInfo, TableauData};
+use crate::Error;
+use serde::Deserialize;
+use stormer_order::{Condition, TableauSpec, ValidTableau};
+
+/// A validated Butcher tableau held in memory (coefficients as `f64`).
+///
+/// ```
+/// use stormer::Tableau;
+/// let heun = Tableau::from_toml_str(r#"
+///     name = "my_heun"
+///     order = 2
+///     c = ["0", "1"]
+///     a = [["0", "0"], ["1", "0"]]
+///     b = ["1/2", "1/2"]
+/// "#, "inline").unwrap();
+/// assert_eq!(heun.stages(), 2);
+/// assert!(heun.flags().explicit);
+///
+/// // A wrong coefficient is an error naming the failing condition, never a panic.
+/// let bad = Tableau::from_toml_str(r#"
+///     name = "bad"
+///     order = 2
+///     c = ["0", "1"]
+///     a = [["0", "0"], ["1", "0"]]
+///     b = ["0.4", "0.6"]
+/// "#, "inline");
+/// assert!(bad.unwrap_err().to_string().contains("order 2 condition"));
+/// ```
+#[derive(Debug, Clone)]
+pub struct Tableau {
+    name: String,
+    valid: ValidTableau,
+}
+
+impl Tableau {
+    /// Validates coefficients given as plain data.
+    pub fn new(name: impl Into<String>, spec: &TableauSpec) -> Result<Self, Error> {
+        let name = name.into();
+        match stormer_order::validate(spec) {
+            Ok(valid) => Ok(Tableau { name, valid }),
+            Err(e) => Err(Error::InvalidMethod {
+                name,
+                reason: e.to_string(),
+            }),
+        }
+    }
+
+    /// The run-time copy of a compiled method's data (validated again, which cannot fail
+    /// for data that passed the macro).
+    pub fn from_data(data: &TableauData) -> Result<Self, Error> {
+        let s = data.stages;
+        let spec = TableauSpec {
+            a: data.a.chunks(s.max(1)).map(<[f64]>::to_vec).collect(),
+            b: data.b.to_vec(),
+            c: Some(data.c.to_vec()),
+            order: data.order,
+            b_hat: data.b_hat.map(<[f64]>::to_vec),
+            embedded_order: data.embedded_order,
+            b_hat3: data.b_hat3.map(<[f64]>::to_vec),
+            tolerance: None,
+        };
+        Tableau::new(data.name, &spec)
+    }
+
+    /// Reads one method from TOML text in the catalog's format: either the keys of one
+    /// method at top level, or a `[[method]]` array holding exactly one Butcher method.
+    /// `origin` (a file name) is used in error messages.
+    pub fn from_toml_str(text: &str, origin: &str) -> Result<Self, Error> {
+        let mut all = Tableau::all_from_toml_str(text, origin)?;
+        match all.len() {
+            1 => Ok(all.remove(0)),
+            n => Err(Error::InvalidMethod {
+                name: origin.to_string(),
+                reason: format!("the file holds {n} Butcher methods; give a file with one"),
+            }),
+        }
+    }
+
+    /// Reads every Butcher method of TOML text in the catalog's format (a `[[method]]`
+    /// array; methods of other families are skipped), or the one method at top level.
+    pub fn all_from_toml_str(text: &str, origin: &str) -> Result<Vec<Self>, Error> {
+        let fail = |reason: String| Error::InvalidMethod {
+            name: origin.to_string(),
+            reason,
+        };
+        let value: toml::Table = text.parse().map_err(|e: toml::de::Error| fail(e.to_string()))?;
+        let entries = match value.get("method") {
+            Some(toml::Value::Array(list)) => list
+                .iter()
+                .filter(|m| m.get("family").and_then(|f| f.as_str()).unwrap_or("butcher") == "butcher")
+                .cloned()
+                .collect(),
+            Some(_) => return Err(fail("`method` must be an array of tables ([[method]])".into())),
+            None => vec![toml::Value::Table(value)],
+        };
+        entries
+            .into_iter()
+            .enumerate()
+            .map(|(i, entry)| {
+                let file: MethodFile = entry
+                    .try_into()
+                    .map_err(|e: toml::de::Error| fail(format!("method {}: {}", i + 1, e.to_string().trim())))?;
+                file.into_tableau(origin)
+            })
+            .collect()
+    }
+
+    /// Reads a method file from disk.
+    pub fn from_file(path: &std::path::Path) -> Result<Self, Error> {
+        let origin = path.display().to_string();
+        let text = std::fs::read_to_string(path).map_err(|e| Error::InvalidMethod {
+            name: origin.clone(),
+            reason: format!("cannot read the file: {e}"),
+        })?;
+        Tableau::from_toml_str(&text, &origin)
+    }
+
+    /// The method's name.
+    pub fn name(&self) -> &str {
+        &self.name
+    }
+    /// Number of stages.
+    pub fn stages(&self) -> usize {
+        self.valid.stages
+    }
+    /// Verified order.
+    pub fn order(&self) -> usize {
+        self.valid.order
+    }
+    /// Verified embedded order.
+    pub fn embedded_order(&self) -> Option<usize> {
+        self.valid.embedded_order
+    }
+    /// Derived flags.
+    pub fn flags(&self) -> Flags {
+        self.valid.flags
+    }
+    /// Stage matrix, row-major.
+    pub fn a(&self) -> &[f64] {
+        &self.valid.a
+    }
+    /// Weights.
+    pub fn b(&self) -> &[f64] {
+        &self.valid.b
+    }
+    /// Nodes.
+    pub fn c(&self) -> &[f64] {
+        &self.valid.c
+    }
+    /// Embedded weights.
+    pub fn b_hat(&self) -> Option<&[f64]> {
+        self.valid.b_hat.as_deref()
+    }
+    /// DOP853's third-order weights.
+    pub fn b_hat3(&self) -> Option<&[f64]> {
+        self.valid.b_hat3.as_deref()
+    }
+    /// Every order condition that was checked, with its residual.
+    pub fn conditions(&self) -> &[Condition] {
+        &self.valid.conditions
+    }
+    /// The same tableau propagating its embedded solution (`b := b_hat`), e.g. to measure
+    /// the embedded order. `None` without `b_hat`.
+    pub fn embedded_as_main(&self) -> Option<Result<Tableau, Error>> {
+        let b_hat = self.valid.b_hat.clone()?;
+        let s = self.stages();
+        let spec = TableauSpec {
+            a: self.valid.a.chunks(s).map(<[f64]>::to_vec).collect(),
+            b: b_hat,
+            c: Some(self.valid.c.clone()),
+            order: self.valid.embedded_order?,
+            b_hat: None,
+            embedded_order: None,
+            b_hat3: None,
+            tolerance: None,
+        };
+        Some(Tableau::new(format!("{} (embedded)", self.name), &spec))
+    }
+    /// The table row of this method.
+    pub fn info(&self) -> MethodInfo {
+        MethodInfo {
+            name: self.name.clone(),
+            family: "butcher",
+            order: self.order(),
+            stages: self.stages(),
+            embedded_order: self.embedded_order(),
+            flags: self.flags(),
+        }
+    }
+}
+
+/// A coefficient as written in a file: an expression string, or a TOML number.
+#[derive(Debug, Deserialize)]
+#[serde(untagged)]
+enum Coefficient {
+    Text(String),
+    Integer(i64),
+    Float(f64),
+}
+
+/// The keys of one Butcher method in a file (catalog format). Descriptive keys of the
+/// catalog are accepted and ignored; the flags, when given, must agree with the data.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+#[allow(dead_code)] // the descriptive keys are read only to be accepted
+struct MethodFile {
+    name: String,
+    #[serde(default)]
+    family: Option<String>,
+    order: usize,
+    #[serde(default)]
+    embedded_order: Option<usize>,
+    #[serde(default)]
+    stages: Option<usize>,
+    #[serde(default)]
+    c: Option<Vec<Coefficient>>,
+    a: Vec<Vec<Coefficient>>,
+    b: Vec<Coefficient>,
+    #[serde(default)]
+    b_hat: Option<Vec<Coefficient>>,
+    #[serde(default)]
+    b_hat3: Option<Vec<Coefficient>>,
+    #[serde(default)]
+    tolerance: Option<f64>,
+    #[serde(default)]
+    explicit: Option<bool>,
+    #[serde(default)]
+    fsal: Option<bool>,
+    #[serde(default)]
+    symplectic: Option<bool>,
+    #[serde(default)]
+    symmetric: Option<bool>,
+    // Descriptive keys of the catalog.
+    #[serde(default)]
+    aliases: Option<toml::Value>,
+    #[serde(default)]
+    reference: Option<toml::Value>,
+    #[serde(default)]
+    source_repo: Option<toml::Value>,
+    #[serde(default)]
+    source_path: Option<toml::Value>,
+    #[serde(default)]
+    source_commit: Option<toml::Value>,
+    #[serde(default)]
+    precision: Option<toml::Value>,
+    #[serde(default)]
+    notes: Option<toml::Value>,
+    #[serde(default)]
+    closed_form: Option<toml::Value>,
+    #[serde(default)]
+    checked_ok: Option<toml::Value>,
+    #[serde(default)]
+    checked: Option<toml::Value>,
+}
+
+fn coefficient(c: &Coefficient, field: &str) -> Result<f64, String> {
+    match c {
+        Coefficient::Text(s) => stormer_order::eval_coefficient(s).map_err(|e| format!("{field} = \"{s}\": {e}")),
+        Coefficient::Integer(i) => Ok(*i as f64),
+        Coefficient::Float(x) if x.is_finite() => Ok(*x),
+        Coefficient::Float(x) => Err(format!("{field} = {x}: not a finite number")),
+    }
+}
+
+fn vector(v: &[Coefficient], field: &str) -> Result<Vec<f64>, String> {
+    v.iter()
+        .enumerate()
+        .map(|(i, c)| coefficient(c, &format!("{field}[{}]", i + 1)))
+        .collect()
+}
+
+impl MethodFile {
+    fn into_tableau(self, origin: &str) -> Result<Tableau, Error> {
+        let fail = |reason: String| Error::InvalidMethod {
+            name: format!("{} ({origin})", self.name),
+            reason,
+        };
+        if let Some(f) = self.family.as_deref().filter(|f| *f != "butcher") {
+            return Err(fail(format!("family = \"{f}\" is not a Butcher tableau")));
+        }
+        let a = self
+            .a
+            .iter()
+            .enumerate()
+            .map(|(i, row)| vector(row, &format!("a[{}]", i + 1)))
+            .collect::<Result<Vec<_>, _>>()
+            .map_err(fail)?;
+        let spec = TableauSpec {
+            a,
+            b: vector(&self.b, "b").map_err(fail)?,
+            c: self.c.as_deref().map(|c| vector(c, "c")).transpose().map_err(fail)?,
+            order: self.order,
+            b_hat: self
+                .b_hat
+                .as_deref()
+                .map(|v| vector(v, "b_hat"))
+                .transpose()
+                .map_err(fail)?,
+            embedded_order: self.embedded_order,
+            b_hat3: self
+                .b_hat3
+                .as_deref()
+                .map(|v| vector(v, "b_hat3"))
+                .transpose()
+                .map_err(fail)?,
+            tolerance: self.tolerance,
+        };
+        let tableau = Tableau::new(self.name.clone(), &spec).map_err(|e| match e {
+            Error::InvalidMethod { reason, .. } => fail(reason),
+            other => other,
+        })?;
+        let flags = tableau.flags();
+        let declared = [
+            (
+                "stages",
+                self.stages.map(|s| s == tableau.stages()),
+                self.stages.map(|s| s.to_string()),
+                tableau.stages().to_string(),
+            ),
+            (
+                "explicit",
+                self.explicit.map(|x| x == flags.explicit),
+                self.explicit.map(|x| x.to_string()),
+                flags.explicit.to_string(),
+            ),
+            (
+                "fsal",
+                self.fsal.map(|x| x == flags.fsal),
+                self.fsal.map(|x| x.to_string()),
+                flags.fsal.to_string(),
+            ),
+            (
+                "symplectic",
+                self.symplectic.map(|x| x == flags.symplectic),
+                self.symplectic.map(|x| x.to_string()),
+                flags.symplectic.to_string(),
+            ),
+            (
+                "symmetric",
+                self.symmetric.map(|x| x == flags.symmetric),
+                self.symmetric.map(|x| x.to_string()),
+                flags.symmetric.to_string(),
+            ),
+        ];
+        for (key, agrees, said, derived) in declared {
+            if agrees == Some(false) {
+                return Err(fail(format!(
+                    "the file declares {key} = {} but the coefficients give {derived}",
+                    said.unwrap_or_default()
+                )));
+            }
+        }
+        Ok(tableau)
+    }
+}

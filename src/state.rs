@@ -1,0 +1,141 @@
+//! The state: a small in-place vector trait over the containers users already have.
+
+#[allow(unused_imports)]
+use crate::real::ops::*;
+use crate::Real;
+use nalgebra::{DVector, SVector};
+
+/// A state vector that steppers update in place.
+///
+/// Implemented for `[T; N]`, nalgebra's `SVector<T, N>` (both with no heap allocation) and
+/// `DVector<T>`. Steppers only need a contiguous slice of components; everything else is
+/// derived from it, so nalgebra's allocator bounds never reach a public signature.
+///
+/// ```
+/// use stormer::State;
+/// let mut y = [1.0, 2.0];
+/// y.axpy(0.5, &[2.0, 2.0]);
+/// assert_eq!(y, [2.0, 3.0]);
+/// ```
+pub trait State: Clone + core::fmt::Debug {
+    /// The scalar type of the components.
+    type Scalar: Real;
+
+    /// The components, contiguous.
+    fn as_slice(&self) -> &[Self::Scalar];
+
+    /// The components, contiguous and mutable.
+    fn as_mut_slice(&mut self) -> &mut [Self::Scalar];
+
+    /// A state of the same shape with every component zero.
+    fn zeros_like(&self) -> Self;
+
+    /// Number of components.
+    #[inline]
+    fn dim(&self) -> usize {
+        self.as_slice().len()
+    }
+
+    /// `self += a * x`, component by component.
+    #[inline]
+    fn axpy(&mut self, a: Self::Scalar, x: &Self) {
+        for (s, &x) in self.as_mut_slice().iter_mut().zip(x.as_slice()) {
+            *s += a * x;
+        }
+    }
+
+    /// `self *= a`.
+    #[inline]
+    fn scale(&mut self, a: Self::Scalar) {
+        for s in self.as_mut_slice() {
+            *s *= a;
+        }
+    }
+
+    /// Copies the components of `x` into `self` (same shape).
+    #[inline]
+    fn copy_from(&mut self, x: &Self) {
+        self.as_mut_slice().copy_from_slice(x.as_slice());
+    }
+
+    /// True when every component is finite.
+    #[inline]
+    fn is_finite(&self) -> bool {
+        self.as_slice().iter().all(|x| x.is_finite())
+    }
+}
+
+impl<T: Real, const N: usize> State for [T; N] {
+    type Scalar = T;
+    #[inline(always)]
+    fn as_slice(&self) -> &[T] {
+        self
+    }
+    #[inline(always)]
+    fn as_mut_slice(&mut self) -> &mut [T] {
+        self
+    }
+    #[inline]
+    fn zeros_like(&self) -> Self {
+        [T::zero(); N]
+    }
+}
+
+impl<T: Real, const N: usize> State for SVector<T, N> {
+    type Scalar = T;
+    #[inline(always)]
+    fn as_slice(&self) -> &[T] {
+        nalgebra::Matrix::as_slice(self)
+    }
+    #[inline(always)]
+    fn as_mut_slice(&mut self) -> &mut [T] {
+        nalgebra::Matrix::as_mut_slice(self)
+    }
+    #[inline]
+    fn zeros_like(&self) -> Self {
+        SVector::zeros()
+    }
+}
+
+impl<T: Real> State for DVector<T> {
+    type Scalar = T;
+    #[inline(always)]
+    fn as_slice(&self) -> &[T] {
+        nalgebra::Matrix::as_slice(self)
+    }
+    #[inline(always)]
+    fn as_mut_slice(&mut self) -> &mut [T] {
+        nalgebra::Matrix::as_mut_slice(self)
+    }
+    #[inline]
+    fn zeros_like(&self) -> Self {
+        DVector::zeros(self.len())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn exercise<S: State<Scalar = f64>>(mut y: S) {
+        let x = y.clone();
+        y.axpy(2.0, &x);
+        y.scale(0.5);
+        assert_eq!(y.as_slice(), &[1.5, 3.0, 4.5]);
+        let mut z = y.zeros_like();
+        assert_eq!(z.as_slice(), &[0.0; 3]);
+        z.copy_from(&y);
+        assert_eq!(z.as_slice(), y.as_slice());
+        assert!(z.is_finite());
+        z.as_mut_slice()[1] = f64::NAN;
+        assert!(!z.is_finite());
+        assert_eq!(z.dim(), 3);
+    }
+
+    #[test]
+    fn every_container_behaves_the_same() {
+        exercise([1.0, 2.0, 3.0]);
+        exercise(SVector::<f64, 3>::new(1.0, 2.0, 3.0));
+        exercise(DVector::from_vec(vec![1.0, 2.0, 3.0]));
+    }
+}

@@ -1,0 +1,92 @@
+//! Steppers: one step of one method. The driver ([`crate::driver`]) owns the loop.
+//!
+//! A stepper owns its stage buffers, so stepping never allocates for static states.
+
+mod error_norm;
+mod explicit;
+mod implicit;
+mod runtime;
+
+pub use error_norm::Tolerances;
+pub use explicit::ExplicitRk;
+pub use implicit::{ImplicitOptions, ImplicitRk, ImplicitSolver};
+pub use runtime::RuntimeRk;
+
+use crate::{Error, MethodInfo, Problem};
+
+/// Work done by a stepper so far.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct Counters {
+    /// Right-hand-side evaluations.
+    pub evaluations: u64,
+    /// Iterations of an implicit solver (fixed-point sweeps or Newton iterations).
+    pub solver_iterations: u64,
+    /// Jacobian evaluations (Newton).
+    pub jacobians: u64,
+}
+
+/// One step of a method on problem `P`, as the driver sees it.
+///
+/// `step` reads `(t, y)` and writes the new state into `y_new`, leaving `y` untouched so
+/// that a rejected adaptive step costs nothing to undo. After a step the driver calls
+/// [`Stepper::accept`] if it keeps `y_new` (a FSAL method then reuses its last stage) or
+/// simply calls `step` again from the same `y` with another `h`.
+pub trait Stepper<P: Problem> {
+    /// Name and table row of the method.
+    fn info(&self) -> MethodInfo;
+
+    /// Order of the error estimate that drives step-size control, `None` if the method
+    /// has no estimate (fixed steps only).
+    fn error_order(&self) -> Option<usize>;
+
+    /// One step of size `h` from `(t, y)` into `y_new`. With `tol`, a method with an
+    /// error estimate returns its scaled norm (a step is acceptable when it is <= 1).
+    fn step(
+        &mut self,
+        p: &P,
+        t: P::Scalar,
+        h: P::Scalar,
+        y: &P::State,
+        y_new: &mut P::State,
+        tol: Option<&Tolerances<P::Scalar>>,
+    ) -> Result<Option<P::Scalar>, Error>;
+
+    /// The last step's `y_new` becomes the current state.
+    fn accept(&mut self);
+
+    /// Forgets cached stage values (the state was changed from outside).
+    fn reset(&mut self);
+
+    /// Work counters.
+    fn counters(&self) -> Counters;
+}
+
+impl<P: Problem, St: Stepper<P> + ?Sized> Stepper<P> for Box<St> {
+    fn info(&self) -> MethodInfo {
+        (**self).info()
+    }
+    fn error_order(&self) -> Option<usize> {
+        (**self).error_order()
+    }
+    #[inline]
+    fn step(
+        &mut self,
+        p: &P,
+        t: P::Scalar,
+        h: P::Scalar,
+        y: &P::State,
+        y_new: &mut P::State,
+        tol: Option<&Tolerances<P::Scalar>>,
+    ) -> Result<Option<P::Scalar>, Error> {
+        (**self).step(p, t, h, y, y_new, tol)
+    }
+    fn accept(&mut self) {
+        (**self).accept()
+    }
+    fn reset(&mut self) {
+        (**self).reset()
+    }
+    fn counters(&self) -> Counters {
+        (**self).counters()
+    }
+}

@@ -1,0 +1,78 @@
+#![allow(unsafe_code)] // the counting allocator below; the library itself forbids unsafe code
+//! Stepping a static state never allocates: 1000 RK4 steps allocate exactly as much as 1.
+//!
+//! A counting global allocator (this test binary only) counts every allocation.
+
+use std::alloc::{GlobalAlloc, Layout, System};
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+use stormer::{catalog::Rk4, Driver, ExplicitRk, Problem, Stepper};
+
+struct Counting;
+
+static ALLOCATIONS: AtomicUsize = AtomicUsize::new(0);
+
+unsafe impl GlobalAlloc for Counting {
+    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
+        ALLOCATIONS.fetch_add(1, Ordering::SeqCst);
+        System.alloc(layout)
+    }
+    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
+        System.dealloc(ptr, layout)
+    }
+}
+
+#[global_allocator]
+static GLOBAL: Counting = Counting;
+
+struct Pendulum;
+
+impl Problem for Pendulum {
+    type Scalar = f64;
+    type State = nalgebra::SVector<f64, 2>;
+    fn rhs(&self, _t: f64, y: &Self::State, dy: &mut Self::State) {
+        dy[0] = y[1];
+        dy[1] = -y[0].sin();
+    }
+}
+
+fn allocations_for(steps: usize) -> usize {
+    let y0 = nalgebra::SVector::<f64, 2>::new(0.5, 0.0);
+    let mut stepper = ExplicitRk::<Rk4, _>::new(&y0);
+    let (mut y, mut y_new) = (y0, y0);
+    let before = ALLOCATIONS.load(Ordering::SeqCst);
+    for i in 0..steps {
+        stepper
+            .step(&Pendulum, i as f64 * 0.01, 0.01, &y, &mut y_new, None)
+            .unwrap();
+        Stepper::<Pendulum>::accept(&mut stepper);
+        core::mem::swap(&mut y, &mut y_new);
+    }
+    let after = ALLOCATIONS.load(Ordering::SeqCst);
+    assert!(y.iter().all(|x| x.is_finite()));
+    after - before
+}
+
+fn driver_allocations_for(steps: u64) -> usize {
+    let y0 = nalgebra::SVector::<f64, 2>::new(0.5, 0.0);
+    let mut stepper = ExplicitRk::<Rk4, _>::new(&y0);
+    let before = ALLOCATIONS.load(Ordering::SeqCst);
+    // Recording only the start and the end: the loop itself must not allocate.
+    let solution = Driver::fixed(0.01)
+        .every(u64::MAX)
+        .run(&Pendulum, &mut stepper, 0.0, &y0, steps as f64 * 0.01)
+        .unwrap();
+    let after = ALLOCATIONS.load(Ordering::SeqCst);
+    assert_eq!(solution.stats.steps, steps);
+    after - before
+}
+
+#[test]
+fn a_thousand_steps_allocate_as_much_as_one() {
+    let one = allocations_for(1);
+    let thousand = allocations_for(1000);
+    assert_eq!(one, thousand, "1 step: {one} allocations, 1000 steps: {thousand}");
+    assert_eq!(one, 0);
+    // The driver allocates its records, never per step.
+    assert_eq!(driver_allocations_for(1), driver_allocations_for(1000));
+}

@@ -1,0 +1,213 @@
+//! Measured convergence order of every Butcher method of the catalog on a nonlinear,
+//! non-autonomous problem with a known solution, in f64 and (orders <= 4) f32, for the
+//! main and the embedded solution. The declared order must be met within +-0.2.
+
+mod common;
+
+use common::{rel_error, Generic, HairerProblem};
+use stormer::{lit, registry, to_f64, Driver, ImplicitOptions, ImplicitSolver, Problem, Real, Stepper, Tableau};
+
+const T_END: f64 = 1.0;
+const TOLERANCE: f64 = 0.2;
+
+/// Errors at `n, 2n, 4n, ...` steps; the slope is read on the finest pair whose errors
+/// are both inside `[floor, ceiling]`: below the ceiling the error is asymptotic, above
+/// the floor it is not round-off.
+fn measured_order<T: Real>(mut run: impl FnMut(usize) -> T, floor: f64, ceiling: f64) -> Result<f64, String> {
+    let mut history: Vec<(usize, f64)> = Vec::new();
+    let mut n = 1;
+    while n <= 1 << 16 {
+        let e = to_f64(run(n));
+        history.push((n, e));
+        if e < floor {
+            break;
+        }
+        n *= 2;
+    }
+    history
+        .windows(2)
+        .rev()
+        .find(|w| w[0].1 <= ceiling && w[1].1 >= floor)
+        .map(|w| (w[0].1 / w[1].1).log2())
+        .ok_or_else(|| format!("no pair of errors inside [{floor:e}, {ceiling:e}]: {history:?}"))
+}
+
+fn error_with<T: Real>(stepper: &mut dyn Stepper<Generic<HairerProblem, T>>, n: usize) -> T {
+    let p = Generic::<HairerProblem, T>::new();
+    let y0 = [T::one(); 4];
+    let t_end: T = lit(T_END);
+    let h = t_end / lit::<T>(n as f64);
+    match Driver::fixed(h).every(n as u64).run(&p, stepper, T::zero(), &y0, t_end) {
+        Ok(sol) => rel_error(sol.y.last().unwrap(), &HairerProblem::exact(t_end)),
+        Err(e) => panic!("{} failed with n = {n}: {}", stepper.info().name, e.error),
+    }
+}
+
+fn implicit_options<T: Real>() -> ImplicitOptions {
+    ImplicitOptions {
+        solver: ImplicitSolver::Newton,
+        tol: 10.0 * to_f64(T::default_epsilon()),
+        max_iterations: 50,
+    }
+}
+
+fn check<T: Real>(name: &str, embedded: bool, floor: f64, ceiling: f64) {
+    let data = registry::find(name).unwrap();
+    let y0 = [T::one(); 4];
+    let opts = implicit_options::<T>();
+    let (declared, order) = if embedded {
+        let tableau = Tableau::from_data(data)
+            .unwrap()
+            .embedded_as_main()
+            .expect("has b_hat")
+            .unwrap();
+        let declared = tableau.order();
+        let order = measured_order(
+            |n| {
+                let mut s = registry::tableau_stepper::<Generic<HairerProblem, T>>(&tableau, &y0, &opts).unwrap();
+                error_with(&mut *s, n)
+            },
+            floor,
+            ceiling,
+        );
+        (declared, order)
+    } else {
+        let order = measured_order(
+            |n| {
+                let mut s = registry::stepper::<Generic<HairerProblem, T>>(name, &y0, &opts).unwrap();
+                error_with(&mut *s, n)
+            },
+            floor,
+            ceiling,
+        );
+        (data.order, order)
+    };
+    let order = order.unwrap_or_else(|e| panic!("{name}: {e}"));
+    assert!(
+        (order - declared as f64).abs() <= TOLERANCE,
+        "{name}{}: measured order {order:.3}, declared {declared}",
+        if embedded { " (embedded)" } else { "" }
+    );
+}
+
+macro_rules! convergence {
+    ($($name:ident: $order:literal $(+ $embedded:literal)?),* $(,)?) => {
+        paste::paste! {
+            $(
+                #[test]
+                fn [<f64_ $name>]() {
+                    check::<f64>(stringify!($name), false, 1e-11, 1e-3);
+                }
+                convergence!(@f32 $name $order);
+                $(
+                    #[test]
+                    fn [<f64_embedded_ $name>]() {
+                        let _ = $embedded;
+                        check::<f64>(stringify!($name), true, 1e-11, 1e-3);
+                    }
+                )?
+            )*
+            /// The list above covers the whole compiled catalog.
+            #[test]
+            fn every_catalog_method_is_tested() {
+                let listed = [$(stringify!($name)),*];
+                for data in registry::BUTCHER {
+                    assert!(listed.contains(&data.name), "{} has no convergence test", data.name);
+                }
+                assert_eq!(listed.len(), registry::BUTCHER.len());
+            }
+        }
+    };
+    (@f32 $name:ident 1) => { convergence!(@f32x $name); };
+    (@f32 $name:ident 2) => { convergence!(@f32x $name); };
+    (@f32 $name:ident 3) => { convergence!(@f32x $name); };
+    (@f32 $name:ident 4) => { convergence!(@f32x $name); };
+    (@f32 $name:ident $order:literal) => {};
+    (@f32x $name:ident) => {
+        paste::paste! {
+            #[test]
+            fn [<f32_ $name>]() {
+                check::<f32>(stringify!($name), false, 2e-4, 3e-2);
+            }
+        }
+    };
+}
+
+// name: order (+ "embedded" when the method has b_hat)
+convergence! {
+    euler: 1,
+    midpoint: 2 + "embedded",
+    heun2: 2 + "embedded",
+    ralston2: 2,
+    kutta3: 3,
+    ssprk33: 3,
+    ssprk43: 3,
+    rk4: 4,
+    rk4_38: 4,
+    ralston4: 4,
+    bogacki_shampine3: 3 + "embedded",
+    fehlberg45: 5 + "embedded",
+    cash_karp: 5 + "embedded",
+    dormand_prince5: 5 + "embedded",
+    tsitouras5: 5 + "embedded",
+    verner6: 6 + "embedded",
+    verner7: 7 + "embedded",
+    verner8: 8 + "embedded",
+    verner9: 9 + "embedded",
+    fehlberg78: 8 + "embedded",
+    dop853: 8 + "embedded",
+    backward_euler: 1,
+    implicit_midpoint: 2,
+    trapezoidal: 2 + "embedded",
+    gauss_legendre4: 4,
+    gauss_legendre6: 6,
+    radau_iia3: 3,
+    radau_iia5: 5,
+    lobatto_iiia4: 4 + "embedded",
+    lobatto_iiib4: 4 + "embedded",
+    lobatto_iiic4: 4 + "embedded",
+}
+
+/// The f32 bounds are not so loose that a wrong method passes: a first-order method
+/// measured with the same machinery is not taken for second order.
+#[test]
+fn negative_control_a_perturbed_tableau_measures_lower() {
+    let data = registry::find("heun2").unwrap();
+    let mut spec_b = data.b.to_vec();
+    spec_b[0] += 0.01;
+    spec_b[1] -= 0.01;
+    let tableau = Tableau::new(
+        "heun2-perturbed",
+        &stormer::order::TableauSpec {
+            a: data.a.chunks(2).map(<[f64]>::to_vec).collect(),
+            b: spec_b,
+            c: None,
+            order: 1,
+            b_hat: None,
+            embedded_order: None,
+            b_hat3: None,
+            tolerance: None,
+        },
+    )
+    .unwrap();
+    let y0 = [1.0f64; 4];
+    let order = measured_order(
+        |n| {
+            let mut s =
+                registry::tableau_stepper::<Generic<HairerProblem, f64>>(&tableau, &y0, &ImplicitOptions::default())
+                    .unwrap();
+            error_with(&mut *s, n)
+        },
+        1e-11,
+        1e-3,
+    )
+    .unwrap();
+    assert!((order - 1.0).abs() <= TOLERANCE, "perturbed Heun measured {order}");
+}
+
+#[allow(dead_code)]
+fn _uses(p: &Generic<HairerProblem, f64>) -> usize {
+    let mut dy = [0.0; 4];
+    p.rhs(0.0, &[1.0; 4], &mut dy);
+    dy.len()
+}
