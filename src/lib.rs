@@ -11,6 +11,7 @@ pub mod method;
 mod problem;
 mod real;
 pub mod registry;
+pub mod scenes;
 mod state;
 pub mod stepper;
 

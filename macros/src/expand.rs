@@ -358,4 +358,58 @@ mod tests {
             assert_eq!(back.to_bits(), x.to_bits(), "{text}");
         }
     }
+
+    fn expand(tokens: proc_macro2::TokenStream) -> String {
+        let input = syn::parse2(tokens).unwrap();
+        let method = crate::valid::validate(input).map_err(|e| e.to_string()).unwrap();
+        super::expand(&method).to_string()
+    }
+
+    #[test]
+    fn rk4_is_unrolled_over_its_nonzero_coefficients() {
+        let code = expand(quote! {
+            pub struct Rk4 {
+                name: "rk4", order: 4,
+                a: [[], [1/2], [0, 1/2], [0, 0, 1]],
+                b: [1/6, 1/3, 1/3, 1/6],
+            }
+        });
+        // 1/2, 1, 1/6, 1/3: one slot per distinct nonzero value.
+        assert!(code.contains("type Coeffs < T : :: stormer :: __private :: Real > = [T ; 4]"));
+        // Three stages and the solution, no error estimate.
+        assert_eq!(code.matches("for m in 0 .. n").count(), 4);
+        assert_eq!(code.matches(". rhs (").count(), 3);
+        assert!(
+            code.contains("ys [m] + h * (co [1] * k2 [m])"),
+            "stage 4 reads k_3 only"
+        );
+        assert!(code.contains("t + co [1] * h"), "c_4 = 1 shares the slot of a_43 = 1");
+        assert!(code.contains("co [2] * k0 [m] + co [3] * k1 [m] + co [3] * k2 [m] + co [2] * k3 [m]"));
+        assert!(code.contains("ExplicitRk :: < Self , P :: State > :: boxed"));
+    }
+
+    #[test]
+    fn fsal_solution_is_the_last_stage_input() {
+        // Bogacki-Shampine: the last row of a is b, so y_new is not recomputed.
+        let code = expand(quote! {
+            struct Bs3 {
+                name: "bs3", order: 3, embedded_order: 2,
+                a: [[], [1/2], [0, 3/4], [2/9, 1/3, 4/9]],
+                b: [2/9, 1/3, 4/9, 0],
+                b_hat: [7/24, 1/4, 1/3, 1/8],
+            }
+        });
+        assert!(code.contains("fsal : true"));
+        // Three stage inputs and one error estimate, no separate solution.
+        assert_eq!(code.matches("for m in 0 .. n").count(), 4);
+    }
+
+    #[test]
+    fn implicit_tableaus_get_no_unrolled_step() {
+        let code = expand(quote! {
+            struct Midpoint { name: "implicit_midpoint", order: 2, a: [[1/2]], b: [1] }
+        });
+        assert!(code.contains("implicit_stepper"));
+        assert!(!code.contains("ExplicitMethod for"));
+    }
 }

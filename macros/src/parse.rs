@@ -156,6 +156,22 @@ fn push(errors: &mut Option<syn::Error>, e: syn::Error) {
     }
 }
 
+/// Levenshtein distance, for suggesting a key.
+fn distance(a: &str, b: &str) -> usize {
+    let b: Vec<char> = b.chars().collect();
+    let mut row: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.chars().enumerate() {
+        let mut diagonal = row[0];
+        row[0] = i + 1;
+        for (j, &cb) in b.iter().enumerate() {
+            let substitution = diagonal + usize::from(ca != cb);
+            diagonal = row[j + 1];
+            row[j + 1] = substitution.min(row[j] + 1).min(diagonal + 1);
+        }
+    }
+    row[b.len()]
+}
+
 /// Skips the tokens of one value (up to the next top-level comma).
 fn skip_value(input: ParseStream) -> syn::Result<()> {
     while !input.is_empty() && !input.peek(Token![,]) {
@@ -182,13 +198,12 @@ impl Fields {
             "b_hat3" => self.b_hat3.is_some(),
             "tolerance" => self.tolerance.is_some(),
             _ => {
-                push(
-                    errors,
-                    syn::Error::new(
-                        key.span(),
-                        format!("unknown key `{name}`; expected one of {}", KEYS.join(", ")),
-                    ),
-                );
+                let hint = match KEYS.iter().min_by_key(|k| distance(k, &name)) {
+                    Some(k) if distance(k, &name) <= 2 => format!(" (did you mean `{k}`?)"),
+                    _ => String::new(),
+                };
+                let message = format!("unknown key `{name}`{hint}; expected one of {}", KEYS.join(", "));
+                push(errors, syn::Error::new(key.span(), message));
                 return skip_value(input);
             }
         };
@@ -326,12 +341,24 @@ mod tests {
         .unwrap();
         let messages: Vec<String> = err.into_iter().map(|e| e.to_string()).collect();
         assert_eq!(messages.len(), 2, "{messages:?}");
-        assert!(messages[0].starts_with("unknown key `bee`"));
+        assert!(
+            messages[0].starts_with("unknown key `bee` (did you mean `b`?)"),
+            "{}",
+            messages[0]
+        );
         assert_eq!(messages[1], "duplicate key `order`");
 
         let err = parse(quote! { struct X { name: "x", a: [[0]] } }).err().unwrap();
         let messages: Vec<String> = err.into_iter().map(|e| e.to_string()).collect();
         assert_eq!(messages, ["missing key `order`", "missing key `b`"]);
+    }
+
+    #[test]
+    fn distance_counts_edits() {
+        assert_eq!(distance("bhat", "b_hat"), 1);
+        assert_eq!(distance("order", "order"), 0);
+        assert_eq!(distance("", "abc"), 3);
+        assert_eq!(distance("kitten", "sitting"), 3);
     }
 
     #[test]

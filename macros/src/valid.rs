@@ -88,7 +88,7 @@ fn span_of(input: &Input, err: &TableauError, s: usize) -> Span {
             _ => None,
         }
     };
-    let entry = |array: &Array, index: usize| array.items.get(index).map_or(array.span, |e| spanned(e));
+    let entry = |array: &Array, index: usize| array.items.get(index).map_or(array.span, spanned);
     let order_span = |order: usize| match &input.embedded_order {
         Some(e) if input.order.value != order && e.value.value == order => e.value.span,
         _ => input.order.span,
@@ -242,6 +242,25 @@ mod tests {
         })
         .unwrap_err();
         assert!(err.starts_with("order 2 condition"), "{err}");
+    }
+
+    #[test]
+    fn order_and_tolerance_errors() {
+        let err = check(quote! { struct X { name: "x", order: 0, a: [[0]], b: [1] } }).unwrap_err();
+        assert_eq!(err, "an order must be at least 1");
+        let err = check(quote! {
+            struct X { name: "x", order: 1, a: [[0]], b: [1], b_hat: [1], embedded_order: 11 }
+        })
+        .unwrap_err();
+        assert!(err.starts_with("order 11 is above"), "{err}");
+        let err = check(quote! { struct X { name: "x", order: 1, a: [[0]], b: [1], tolerance: -1 } }).unwrap_err();
+        assert!(err.starts_with("tolerance -1 is not"), "{err}");
+        // A looser tolerance admits a coefficient rounded to 7 digits.
+        let rounded =
+            |tolerance| quote! { struct X { name: "x", order: 2, a: [[], [0.6666667]], b: [1/4, 3/4], #tolerance } };
+        let err = check(rounded(quote!())).unwrap_err();
+        assert!(err.starts_with("order 2 condition sum b_i c_i = 1/2 fails"), "{err}");
+        assert!(check(rounded(quote!(tolerance: 1e-6))).is_ok());
     }
 
     #[test]

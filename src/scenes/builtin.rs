@@ -15,16 +15,6 @@ pub struct BuiltinScene {
     pub text: &'static str,
 }
 
-impl BuiltinScene {
-    /// The first comment line of the file, without the `#`: what the scene is.
-    pub fn summary(&self) -> &'static str {
-        self.text
-            .lines()
-            .find_map(|l| l.trim().strip_prefix('#'))
-            .map_or("", str::trim)
-    }
-}
-
 /// The built-in scenes, in the order of `SCENES.md`.
 pub const BUILTIN: &[BuiltinScene] = &[
     BuiltinScene {
@@ -118,4 +108,109 @@ pub fn parse(text: &str, origin: &str, name: &str) -> Result<AnyScene, Error> {
             ))
         }
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_builtin_scene_loads_with_the_users_values() {
+        for s in BUILTIN {
+            let scene = load(s.name).unwrap();
+            assert_eq!(scene.name(), s.name);
+            assert_eq!(scene.model(), s.name, "each built-in is its model's scene");
+        }
+        let AnyScene::DampedOscillator(d) = load("damped-oscillator").unwrap() else { panic!("model") };
+        assert_eq!(d.model.w0, (100.0f64 / 5.0).sqrt());
+        assert_eq!(d.model.q, d.model.w0);
+        assert_eq!(d.y0, [10.0, 0.0]);
+        assert_eq!((d.run.dt, d.run.t0, d.run.t_end, d.run.every), (0.001, 0.0, 10.0, 1));
+        assert!(d.initial_energy().is_none(), "the damped oscillator has no energy");
+        let AnyScene::Pendulum(p) = load("pendulum").unwrap() else { panic!("model") };
+        assert_eq!(p.y0, [core::f64::consts::FRAC_PI_4, 0.0]);
+        assert_eq!(p.run.t_end, 60.0);
+        assert!(p.exact(1.0).is_none());
+        let AnyScene::Harmonic(h) = load("harmonic").unwrap() else { panic!("model") };
+        assert_eq!(h.model.w0, 20f64.sqrt());
+        assert_eq!(h.initial_energy(), Some(0.5 * 20.0 * 100.0 + 0.0));
+    }
+
+    const GOOD: &str = "model = \"damped-oscillator\"\n\
+                        [parameters]\n\
+                        w0 = 2.0\n\
+                        Q = 1.0\n\
+                        [initial]\n\
+                        x = 1.0\n\
+                        v = 0.0\n\
+                        [run]\n\
+                        method = \"rk4\"\n\
+                        dt = 0.01\n\
+                        t_end = 1.0\n";
+
+    /// The error message for `GOOD` with line `line` (1-based) replaced.
+    fn error_with(line: usize, text: &str) -> String {
+        let mut lines: Vec<&str> = GOOD.lines().collect();
+        lines[line - 1] = text;
+        let err = parse(&lines.join("\n"), "t.toml", "t").unwrap_err();
+        assert!(matches!(err, Error::Scene { .. }), "{err:?}");
+        let message = err.to_string();
+        assert!(!message.contains('\n'), "one line: {message}");
+        message
+    }
+
+    #[test]
+    fn the_good_file_parses() {
+        assert_eq!(parse(GOOD, "t.toml", "t").unwrap().model(), "damped-oscillator");
+    }
+
+    #[test]
+    fn every_mistake_is_an_error_naming_its_line() {
+        let cases = [
+            (4, "Q = -1.0", "line 4: parameters.Q must be > 0, got -1"),
+            (4, "Q = 0", "line 4: parameters.Q must be > 0, got 0"),
+            (3, "w0 = nan", "line 3: parameters.w0 must be a finite number, got NaN"),
+            (6, "x = inf", "line 6: initial.x must be a finite number, got inf"),
+            (6, "x = \"ten\"", "line 6, column 5: invalid type: string \"ten\""),
+            (6, "y = 1.0", "line 6, column 1: unknown field `y`"),
+            (10, "dt = 0.0", "line 10: run.dt must be > 0, got 0"),
+            (10, "dt = -1", "line 10: run.dt must be > 0, got -1"),
+            (11, "t_end = -inf", "line 11: run.t_end must be a finite number, got -inf"),
+            (11, "every = 0", "line 11: run.every must be >= 1, got 0"),
+            (11, "every = 1.5", "line 11, column 9: invalid type: floating point `1.5`, expected u64"),
+            (9, "method = \"\"", "line 9: run.method must name a method"),
+            (5, "[initial", "line 5, column 9: invalid table header"),
+            (1, "model = \"kepler\"", "line 1: unknown model \"kepler\""),
+            (1, "mdl = \"harmonic\"", "missing field `model`"),
+        ];
+        for (line, text, expected) in cases {
+            let message = error_with(line, text);
+            assert!(message.contains(expected), "{text}: {message}");
+        }
+        assert!(error_with(11, "").contains("missing field `t_end`"));
+        assert!(error_with(2, "").contains("unknown field `w0`"), "a key outside its table");
+    }
+
+    #[test]
+    fn missing_parameters_are_named() {
+        let text = GOOD.replace("[parameters]\nw0 = 2.0\nQ = 1.0\n", "");
+        let message = parse(&text, "t.toml", "t").unwrap_err().to_string();
+        assert!(message.contains("missing table [parameters]"), "{message}");
+    }
+
+    #[test]
+    fn names_and_paths() {
+        assert!(builtin("Damped_Oscillator").is_some());
+        let message = load("harmonik").unwrap_err().to_string();
+        assert!(message.contains("did you mean 'harmonic'"), "{message}");
+        let message = load("no/such/file.toml").unwrap_err().to_string();
+        assert!(message.contains("cannot read the file"), "{message}");
+        let dir = std::env::temp_dir().join(format!("stormer-scene-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("my-scene.toml");
+        std::fs::write(&path, GOOD).unwrap();
+        let scene = load(path.to_str().unwrap()).unwrap();
+        assert_eq!(scene.name(), "my-scene");
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
 }

@@ -149,7 +149,7 @@ mod tests {
         let w0 = 20f64.sqrt();
         let p = DampedOscillator::new(w0, w0);
         let t = 0.3;
-        let gamma = 0.5;
+        let gamma = 0.5f64;
         let wd = (20.0f64 - 0.25).sqrt();
         let without_c = (-gamma * t).exp() * 10.0 * (wd * t).cos();
         let exact = p.exact(0.0, &[10.0, 0.0], t).unwrap()[0];

@@ -167,6 +167,15 @@ impl AnyScene {
         }
     }
 
+    /// The file's `description`, if any.
+    pub fn description(&self) -> Option<&str> {
+        match self {
+            AnyScene::Harmonic(s) => s.description.as_deref(),
+            AnyScene::DampedOscillator(s) => s.description.as_deref(),
+            AnyScene::Pendulum(s) => s.description.as_deref(),
+        }
+    }
+
     /// The model name.
     pub fn model(&self) -> &'static str {
         match self {

@@ -1,126 +1,571 @@
-//! Implicit Runge-Kutta: the stage equations solved by fixed-point iteration or Newton.
+//! Implicit Runge-Kutta: the stage equations solved by fixed-point iteration or by
+//! simplified Newton iteration.
+//!
+//! One step of an `s`-stage tableau from `(t, y)` with step `h` solves, for the stage
+//! increments `Z_i = Y_i - y`,
+//!
+//! ```text
+//! Z_i = h sum_j a_ij f(t + c_j h, y + Z_j),     i = 1..s            (1)
+//! ```
+//!
+//! and then forms `y_new = y + h sum_i b_i f(Y_i)` (see [`ImplicitRk`] for the variants
+//! used when the tableau allows a better formula). Working with the increments `Z`
+//! rather than the stage values `Y` keeps round-off small (Hairer & Wanner, *Solving
+//! ODEs II*, IV.8).
+
+mod newton;
 
 use super::{Counters, Stepper, Tolerances};
 #[allow(unused_imports)]
 use crate::real::ops::*;
 use crate::{lit, to_f64, Error, MethodInfo, Problem, Real, State, Tableau};
+use newton::Newton;
 
-/// How the stage equations are solved.
+/// How the stage equations (1) are solved.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum ImplicitSolver {
-    /// `Z <- h A F(Z)` repeated until the update is below the tolerance: cheap, but
-    /// converges only for `h L` small (L = Lipschitz constant of f).
+    /// Fixed-point iteration `Z <- h (A ⊗ I) F(Z)` until the update is below the
+    /// tolerance. Costs `s` evaluations per sweep and no linear algebra; converges only
+    /// when `|h| L rho(A) < 1` (L = Lipschitz constant of `f`), i.e. on non-stiff problems
+    /// with moderate steps. This is the classical choice for symplectic Gauss methods on
+    /// Hamiltonian problems (Hairer, Lubich & Wanner, *Geometric Numerical Integration*,
+    /// VIII.6) and the scheme of SCENES.md 6.
     #[default]
     FixedPoint,
-    /// Simplified Newton with a finite-difference Jacobian and an LU factorisation
-    /// (nalgebra), refreshed every step: converges on stiff problems.
+    /// Simplified Newton iteration (Hairer & Wanner, *Solving ODEs II*, IV.8): the Jacobian
+    /// `J = df/dy` at `(t, y)` by forward differences, the `(s n) x (s n)` matrix
+    /// `I - h (A ⊗ J)` factorised once per step (nalgebra's LU with partial pivoting),
+    /// then `Z <- Z + dZ` with `(I - h A ⊗ J) dZ = -Z + h (A ⊗ I) F(Z)`. Converges on
+    /// stiff problems, whatever `h L`.
     Newton,
 }
 
 /// Options of the implicit solver.
+///
+/// Both solvers stop when the max-norm of the last update `Z^{k+1} - Z^k` is at most
+/// `tol * (1 + max_j |y_j|)` (`y` = the state at the start of the step), and return
+/// [`Error::SolverDiverged`] — never an unconverged number — when that has not happened
+/// after `max_iterations` iterations or when the update is not finite.
+///
+/// A `tol` below `10 ε` of the scalar type (`ε` = machine epsilon), or not a finite
+/// non-negative number, is raised to `10 ε`: the update cannot be driven much below
+/// round-off, so a smaller tolerance would only turn every step into an error (this is
+/// what makes the `f64` default usable in `f32`, where it becomes `1.2e-6`).
+///
+/// ```
+/// use stormer::{ImplicitOptions, ImplicitSolver};
+/// let stiff = ImplicitOptions::newton();
+/// assert_eq!(stiff.solver, ImplicitSolver::Newton);
+/// assert_eq!(ImplicitOptions::default(), ImplicitOptions::fixed_point());
+/// let loose = ImplicitOptions { tol: 1e-10, ..ImplicitOptions::newton() };
+/// assert_eq!(loose.max_iterations, 10);
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ImplicitOptions {
     /// Solver choice.
     pub solver: ImplicitSolver,
-    /// Stop when the max-norm of the stage update is below `tol * (1 + max|y|)`.
+    /// Stop when the max-norm of the stage update is at most `tol * (1 + max|y|)`.
     pub tol: f64,
     /// Give up (an error, never a wrong number) after this many iterations.
     pub max_iterations: usize,
 }
 
-impl Default for ImplicitOptions {
-    fn default() -> Self {
+impl ImplicitOptions {
+    /// Default tolerance of both solvers: `1e-14`, about `45 ε` of `f64`.
+    ///
+    /// The implicit methods are used here at fixed steps for their structure (symplectic
+    /// Gauss methods, stiffly accurate Radau/Lobatto IIIC), which only holds for the exact
+    /// solution of (1); Hairer, Lubich & Wanner (*GNI*, VIII.6) therefore iterate "until
+    /// round-off". `1e-14` relative is as close to round-off as the update can be pushed
+    /// reliably in `f64`; once below it, a contracting iteration's remaining error is a
+    /// fraction of the last update.
+    pub const DEFAULT_TOL: f64 = 1e-14;
+
+    /// Fixed-point iteration with `tol = 1e-14` and at most 100 sweeps (the default).
+    ///
+    /// 100 sweeps reduce the error by `q^100` for a contraction factor `q = |h| L rho(A)`:
+    /// enough to gain 14 digits from a zero start as long as `q <~ 0.7`. A step that needs
+    /// more is too large for fixed-point iteration; use Newton or a smaller `h`.
+    pub fn fixed_point() -> Self {
         ImplicitOptions {
             solver: ImplicitSolver::FixedPoint,
-            tol: 1e-14,
+            tol: Self::DEFAULT_TOL,
             max_iterations: 100,
+        }
+    }
+
+    /// Simplified Newton with `tol = 1e-14` and at most 10 iterations.
+    ///
+    /// Hairer & Wanner's RADAU5 allows 7 Newton iterations, but it stops at a fraction of
+    /// the (much looser) local error tolerance; reaching `1e-14` from a starting error of
+    /// `~1e-4` at the linear rate of simplified Newton (`~0.01` per iteration on smooth
+    /// problems) takes 5 to 8, hence 10.
+    pub fn newton() -> Self {
+        ImplicitOptions {
+            solver: ImplicitSolver::Newton,
+            tol: Self::DEFAULT_TOL,
+            max_iterations: 10,
         }
     }
 }
 
-/// Stepper for an implicit (or any) [`Tableau`].
+impl Default for ImplicitOptions {
+    /// [`ImplicitOptions::fixed_point`]: no linear algebra, no allocation per step.
+    fn default() -> Self {
+        ImplicitOptions::fixed_point()
+    }
+}
+
+/// A row of the stage matrix without its zero entries: `(column, a_ij)`.
+type Row<T> = Vec<(usize, T)>;
+
+/// How `y_new` is formed from the converged stages.
+#[derive(Debug, Clone)]
+enum Update<T> {
+    /// Stiffly accurate tableau (last row of `A` = `b`): `y_new = y + Z_s`.
+    LastStage,
+    /// `y_new = y + h sum_i b_i F_i` with the last evaluated stage derivatives.
+    Weights,
+    /// Newton on a tableau with invertible `A`: `y_new = y + sum_i d_i Z_i`, `d = b^T A^-1`.
+    Inverse(Vec<T>),
+}
+
+/// The starting guess for `Z`: the previous step's stage polynomial, extrapolated.
+///
+/// The last accepted step's increments `Z_j` and `0` at `theta = 0` define the polynomial
+/// `P(theta)` of degree <= s through `(0, 0)` and `(c_j, Z_j)` (distinct non-zero nodes
+/// only); for a collocation method it is the collocation polynomial, `y_old + P(theta)`
+/// approximating the solution at `t_old + theta h_old`. The new stage `i` lies at
+/// `theta = 1 + c_i r`, `r = h / h_old`, so the guess is `Z_i = P(1 + c_i r) - P(1)`, a
+/// fixed linear combination `sum_j e_ij(r) Z_j^old` (RADAU5's default starting values;
+/// Hairer & Wanner, IV.8). It is used only for `0 < r <= 2`; otherwise, after
+/// [`Stepper::reset`], and on the first step, the guess is `Z = 0`. The guess changes
+/// only the number of iterations, not what they converge to.
+#[derive(Debug, Clone)]
+struct Extrapolation<S: State> {
+    enabled: bool,
+    /// Stages whose node is distinct from 0 and from the nodes before it.
+    nodes: Vec<usize>,
+    /// `Z` of the last accepted step.
+    previous: Vec<S>,
+    h_previous: S::Scalar,
+    valid: bool,
+    /// The ratio `coef` was computed for.
+    ratio: Option<S::Scalar>,
+    /// `e_ij`, `s x s` row-major (zero outside the node columns).
+    coef: Vec<S::Scalar>,
+}
+
+/// Stepper for an implicit (or any) [`Tableau`], solving the stage equations by
+/// fixed-point iteration or simplified Newton ([`ImplicitSolver`]).
+///
+/// **Final update.** `y_new = y + h sum_i b_i f(Y_i)`, with the stage derivatives of the
+/// last iteration, except:
+/// - for a *stiffly accurate* tableau (last row of `A` equal to `b`: backward Euler,
+///   trapezoid, Radau IIA, Lobatto IIIA and IIIC), `y_new = y + Z_s`, the last stage
+///   itself. Equal to the formula above for the exact stages, but it never multiplies
+///   `f` by `h` after the solve, which for stiff problems would amplify the iteration
+///   error by `h L` (Hairer & Wanner, IV.8);
+/// - with Newton and an invertible `A` that is not stiffly accurate (the Gauss methods),
+///   `y_new = y + sum_i d_i Z_i` with `d^T = b^T A^{-1}` (Hairer & Wanner, IV.8, same
+///   reason).
+///
+/// Stages whose row of `A` is zero (Lobatto IIIA's and the trapezoid's first stage) are
+/// explicit: their `Z_i = 0` and `f(t, y)` is evaluated once per step, not per iteration.
+///
+/// **Starting guess**: the previous step's stage polynomial extrapolated (RADAU5's
+/// default), or zero; see [`ImplicitRk::extrapolate`].
+///
+/// **Counters**: every right-hand-side evaluation (stage sweeps, the `n + 1` of each
+/// finite-difference Jacobian, the explicit stage), every iteration (fixed-point sweep
+/// or Newton iteration, failed steps included) and every Jacobian.
+///
+/// **Allocation**: buffers are allocated by [`ImplicitRk::new`]. The fixed-point path
+/// never allocates after that (for static states: not at all). The Newton workspace
+/// (`n x n` Jacobian, `(s n) x (s n)` matrix, right-hand side) is allocated on the first
+/// Newton step and reused; the matrix storage is recovered from the previous step's
+/// factorisation. What remains is nalgebra's: `LU::new` builds a fresh pivot sequence
+/// (`s n` index pairs), one small allocation per Newton step.
+///
+/// **Adaptive steps**: a tableau with embedded weights `b_hat` (the trapezoid) reports the
+/// estimate `h sum_i (b_i - b_hat_i) f(Y_i)` and works with [`crate::Driver::adaptive`];
+/// the others are fixed-step only.
+///
+/// ```
+/// use stormer::{catalog::GaussLegendre4, ButcherMethod, ImplicitOptions, ImplicitRk, Problem, Stepper, Tableau};
+/// /// The harmonic oscillator x'' = -x.
+/// struct Oscillator;
+/// impl Problem for Oscillator {
+///     type Scalar = f64;
+///     type State = [f64; 2];
+///     fn rhs(&self, _t: f64, y: &[f64; 2], dy: &mut [f64; 2]) {
+///         *dy = [y[1], -y[0]];
+///     }
+/// }
+/// let tableau = Tableau::from_data(&GaussLegendre4::DATA).unwrap();
+/// let y0 = [1.0, 0.0];
+/// let mut gl4 = ImplicitRk::new(&tableau, &y0, ImplicitOptions::default());
+/// let (mut y, mut y_new) = (y0, y0);
+/// for i in 0..1000 {
+///     gl4.step(&Oscillator, i as f64 * 0.1, 0.1, &y, &mut y_new, None).unwrap();
+///     Stepper::<Oscillator>::accept(&mut gl4);
+///     std::mem::swap(&mut y, &mut y_new);
+/// }
+/// // Symplectic: the quadratic invariant x^2 + v^2 is kept to round-off...
+/// assert!((y[0] * y[0] + y[1] * y[1] - 1.0).abs() < 1e-13);
+/// // ...and the phase is fourth-order accurate.
+/// assert!((y[0] - 100f64.cos()).abs() < 1e-4);
+/// ```
 #[derive(Debug, Clone)]
 pub struct ImplicitRk<S: State> {
     info: MethodInfo,
     options: ImplicitOptions,
+    /// The effective tolerance factor (`options.tol` floored at `10 ε`).
+    tol: S::Scalar,
+    error_order: Option<usize>,
+    /// Rows of `A` without zeros (an empty row is an explicit stage).
+    rows: Vec<Row<S::Scalar>>,
+    /// `A`, `s x s` row-major, for the Newton matrix.
     a: Vec<S::Scalar>,
-    b: Vec<S::Scalar>,
+    b: Row<S::Scalar>,
     c: Vec<S::Scalar>,
-    /// Stage increments Z_i = Y_i - y.
+    /// `b - b_hat` without zeros, when the tableau has embedded weights.
+    e: Option<Row<S::Scalar>>,
+    update: Update<S::Scalar>,
+    /// Stage increments `Z_i = Y_i - y`.
     z: Vec<S>,
-    /// f at the stages.
+    /// `f` at the stages, as last evaluated.
     f: Vec<S>,
     stage: S,
+    err: S,
+    guess: Extrapolation<S>,
+    newton: Option<Newton<S>>,
+    /// `h` of the last successful step (what [`Stepper::accept`] keeps).
+    last_h: Option<S::Scalar>,
     counters: Counters,
 }
 
+/// `|x - y| <= 4 ε max(1, |y|)` in `f64`: equal coefficients written differently.
+fn same(x: f64, y: f64) -> bool {
+    (x - y).abs() <= 4.0 * f64::EPSILON * y.abs().max(1.0)
+}
+
+fn row<T: Real>(values: impl IntoIterator<Item = f64>) -> Row<T> {
+    values
+        .into_iter()
+        .enumerate()
+        .filter(|&(_, x)| x != 0.0)
+        .map(|(j, x)| (j, lit(x)))
+        .collect()
+}
+
+/// `d = b^T A^{-1}` when `A` is invertible and `d` is moderate.
+fn inverse_weights(a: &[f64], b: &[f64]) -> Option<Vec<f64>> {
+    let s = b.len();
+    let inv = nalgebra::DMatrix::from_row_slice(s, s, a).try_inverse()?;
+    let d: Vec<f64> = (0..s).map(|j| (0..s).map(|i| b[i] * inv[(i, j)]).sum()).collect();
+    d.iter().all(|x| x.is_finite() && x.abs() < 1e8).then_some(d)
+}
+
+/// The effective tolerance factor: `tol`, floored at `10 ε` (non-finite or negative:
+/// `10 ε`).
+fn effective_tol<T: Real>(tol: f64) -> T {
+    let floor = lit::<T>(10.0) * T::default_epsilon();
+    if tol.is_finite() && tol >= 0.0 {
+        let tol: T = lit(tol);
+        if tol > floor {
+            return tol;
+        }
+    }
+    floor
+}
+
 impl<S: State> ImplicitRk<S> {
-    /// A stepper for `tableau` with buffers shaped like `y0`.
+    /// A stepper for `tableau` with stage buffers shaped like `y0`.
+    ///
+    /// Coefficients are converted to the scalar type here, once. Any valid tableau works,
+    /// explicit ones included (fixed-point iteration then converges in at most `s` sweeps).
     pub fn new(tableau: &Tableau, y0: &S, options: ImplicitOptions) -> Self {
         let s = tableau.stages();
+        let (a, b, c) = (tableau.a(), tableau.b(), tableau.c());
+        let stiffly_accurate = (0..s).all(|j| same(a[(s - 1) * s + j], b[j]));
+        let update = if stiffly_accurate {
+            Update::LastStage
+        } else {
+            match (options.solver, inverse_weights(a, b)) {
+                (ImplicitSolver::Newton, Some(d)) => Update::Inverse(d.into_iter().map(lit).collect()),
+                _ => Update::Weights,
+            }
+        };
+        let mut nodes: Vec<usize> = Vec::new();
+        for i in 0..s {
+            if c[i] != 0.0 && nodes.iter().all(|&j| !same(c[j], c[i])) {
+                nodes.push(i);
+            }
+        }
+        let zero = y0.zeros_like();
         ImplicitRk {
             info: tableau.info(),
             options,
-            a: tableau.a().iter().map(|&x| lit(x)).collect(),
-            b: tableau.b().iter().map(|&x| lit(x)).collect(),
-            c: tableau.c().iter().map(|&x| lit(x)).collect(),
-            z: vec![y0.zeros_like(); s],
-            f: vec![y0.zeros_like(); s],
-            stage: y0.zeros_like(),
+            tol: effective_tol(options.tol),
+            error_order: tableau.b_hat().and(tableau.embedded_order()),
+            rows: a.chunks(s).map(|r| row(r.iter().copied())).collect(),
+            a: a.iter().map(|&x| lit(x)).collect(),
+            b: row(b.iter().copied()),
+            c: c.iter().map(|&x| lit(x)).collect(),
+            e: tableau.b_hat().map(|bh| row(b.iter().zip(bh).map(|(b, bh)| b - bh))),
+            update,
+            z: vec![zero.clone(); s],
+            f: vec![zero.clone(); s],
+            stage: zero.clone(),
+            err: zero.clone(),
+            guess: Extrapolation {
+                enabled: true,
+                nodes,
+                previous: vec![zero; s],
+                h_previous: S::Scalar::zero(),
+                valid: false,
+                ratio: None,
+                coef: vec![S::Scalar::zero(); s * s],
+            },
+            newton: None,
+            last_h: None,
             counters: Counters::default(),
         }
     }
 
-    fn evaluate_stages<P: Problem<Scalar = S::Scalar, State = S>>(&mut self, p: &P, t: S::Scalar, h: S::Scalar, y: &S) {
+    /// Turns the extrapolated starting guess on (the default) or off (`Z = 0` every step,
+    /// which RADAU5 recommends when Newton struggles on very stiff problems, where the
+    /// previous step's polynomial says little about the next one).
+    pub fn extrapolate(mut self, on: bool) -> Self {
+        self.guess.enabled = on;
+        self.guess.valid = false;
+        self
+    }
+
+    /// The options this stepper was built with.
+    pub fn options(&self) -> &ImplicitOptions {
+        &self.options
+    }
+
+    /// Writes the starting guess into `z`.
+    fn start(&mut self, h: S::Scalar) {
+        let s = self.z.len();
+        for z in &mut self.z {
+            z.scale(S::Scalar::zero());
+        }
+        let g = &mut self.guess;
+        if !(g.enabled && g.valid && !g.nodes.is_empty()) {
+            return;
+        }
+        let r = h / g.h_previous;
+        if !(r > S::Scalar::zero() && r <= lit(2.0)) {
+            return;
+        }
+        if g.ratio != Some(r) {
+            // e_ij = l_j(1 + c_i r) - l_j(1), l_j the Lagrange basis on {0} ∪ {c_k : k in nodes}.
+            let lagrange = |j: usize, x: S::Scalar| {
+                let cj = self.c[j];
+                let mut l = x / cj;
+                for &k in &g.nodes {
+                    if k != j {
+                        l *= (x - self.c[k]) / (cj - self.c[k]);
+                    }
+                }
+                l
+            };
+            for i in 0..s {
+                for j in 0..s {
+                    g.coef[i * s + j] = S::Scalar::zero();
+                }
+                if self.rows[i].is_empty() {
+                    continue;
+                }
+                let x = S::Scalar::one() + self.c[i] * r;
+                for &j in &g.nodes {
+                    g.coef[i * s + j] = lagrange(j, x) - lagrange(j, S::Scalar::one());
+                }
+            }
+            g.ratio = Some(r);
+        }
+        for i in 0..s {
+            for &j in &g.nodes {
+                let e = g.coef[i * s + j];
+                if e != S::Scalar::zero() {
+                    self.z[i].axpy(e, &g.previous[j]);
+                }
+            }
+        }
+    }
+
+    /// `f` at the implicit stages (the explicit ones keep `f(t, y)`).
+    fn evaluate<P: Problem<Scalar = S::Scalar, State = S>>(&mut self, p: &P, t: S::Scalar, h: S::Scalar, y: &S) {
         for i in 0..self.z.len() {
+            if self.rows[i].is_empty() {
+                continue;
+            }
             self.stage.copy_from(y);
             self.stage.axpy(S::Scalar::one(), &self.z[i]);
             p.rhs(t + self.c[i] * h, &self.stage, &mut self.f[i]);
+            self.counters.evaluations += 1;
         }
-        self.counters.evaluations += self.z.len() as u64;
     }
 
-    /// Fixed-point sweeps `Z_i <- h sum_j a_ij f(Y_j)`; returns the last update's size.
+    /// `f(t, y)` into the explicit stages' slots (one evaluation, or a copy of `f0`).
+    fn explicit_stages<P: Problem<Scalar = S::Scalar, State = S>>(&mut self, p: &P, t: S::Scalar, y: &S, f0: Option<&S>) {
+        let Some(first) = self.rows.iter().position(Vec::is_empty) else {
+            return;
+        };
+        match f0 {
+            Some(f0) => self.f[first].copy_from(f0),
+            None => {
+                p.rhs(t, y, &mut self.f[first]);
+                self.counters.evaluations += 1;
+            }
+        }
+        for i in first + 1..self.z.len() {
+            if self.rows[i].is_empty() {
+                let (done, rest) = self.f.split_at_mut(i);
+                rest[0].copy_from(&done[first]);
+            }
+        }
+    }
+
+    /// Fixed-point sweeps `Z_i <- h sum_j a_ij F_j(Z)` until the update is at most `tol`.
     fn fixed_point<P: Problem<Scalar = S::Scalar, State = S>>(
         &mut self,
         p: &P,
         t: S::Scalar,
         h: S::Scalar,
         y: &S,
+        tol: S::Scalar,
     ) -> Result<(), Error> {
-        let s = self.z.len();
-        let scale = S::Scalar::one() + y.as_slice().iter().fold(S::Scalar::zero(), |m, x| m.max(x.abs()));
-        let tol = lit::<S::Scalar>(self.options.tol) * scale;
+        self.explicit_stages(p, t, y, None);
         let mut residual = S::Scalar::zero();
         for iteration in 1..=self.options.max_iterations {
-            self.evaluate_stages(p, t, h, y);
+            self.evaluate(p, t, h, y);
             self.counters.solver_iterations += 1;
             residual = S::Scalar::zero();
-            for i in 0..s {
+            let mut bad = None;
+            for (i, row) in self.rows.iter().enumerate() {
+                if row.is_empty() {
+                    continue;
+                }
                 let zi = self.z[i].as_mut_slice();
                 for m in 0..zi.len() {
                     let mut sum = S::Scalar::zero();
-                    for j in 0..s {
-                        sum += self.a[i * s + j] * self.f[j].as_slice()[m];
+                    for &(j, a) in row {
+                        sum += a * self.f[j].as_slice()[m];
                     }
                     let new = h * sum;
-                    residual = residual.max((new - zi[m]).abs());
+                    let d = (new - zi[m]).abs();
+                    if !d.is_finite() {
+                        bad = Some(d);
+                    }
+                    if d > residual {
+                        residual = d;
+                    }
                     zi[m] = new;
                 }
             }
-            if !residual.is_finite() {
-                break;
+            if let Some(d) = bad {
+                return Err(diverged(t, to_f64(d), iteration));
             }
             if residual <= tol {
-                let _ = iteration;
                 return Ok(());
             }
         }
-        Err(Error::SolverDiverged {
-            t: to_f64(t),
-            residual: to_f64(residual),
-            iterations: self.options.max_iterations,
-        })
+        Err(diverged(t, to_f64(residual), self.options.max_iterations))
+    }
+
+    /// Simplified Newton iterations until the update is at most `tol`.
+    fn newton<P: Problem<Scalar = S::Scalar, State = S>>(
+        &mut self,
+        p: &P,
+        t: S::Scalar,
+        h: S::Scalar,
+        y: &S,
+        tol: S::Scalar,
+    ) -> Result<(), Error> {
+        let s = self.z.len();
+        // Allocated on the first Newton step, then reused.
+        let mut newton = self.newton.take().unwrap_or_else(|| Newton::new(y, s));
+        self.counters.evaluations += newton.jacobian(p, t, y);
+        self.counters.jacobians += 1;
+        let invertible = newton.factor(h, &self.a, s);
+        self.explicit_stages(p, t, y, Some(newton.f0()));
+        let result = if invertible {
+            self.newton_iterations(&mut newton, p, t, h, y, tol)
+        } else {
+            Err(diverged(t, f64::INFINITY, 0))
+        };
+        self.newton = Some(newton);
+        result
+    }
+
+    fn newton_iterations<P: Problem<Scalar = S::Scalar, State = S>>(
+        &mut self,
+        newton: &mut Newton<S>,
+        p: &P,
+        t: S::Scalar,
+        h: S::Scalar,
+        y: &S,
+        tol: S::Scalar,
+    ) -> Result<(), Error> {
+        let mut residual = S::Scalar::zero();
+        for iteration in 1..=self.options.max_iterations {
+            self.evaluate(p, t, h, y);
+            self.counters.solver_iterations += 1;
+            match newton.correct(h, &self.rows, &mut self.z, &self.f) {
+                Some(r) if r.is_finite() => residual = r,
+                Some(r) => return Err(diverged(t, to_f64(r), iteration)),
+                None => return Err(diverged(t, f64::INFINITY, iteration)),
+            }
+            if residual <= tol {
+                return Ok(());
+            }
+        }
+        Err(diverged(t, to_f64(residual), self.options.max_iterations))
+    }
+
+    /// `y_new` from the converged stages.
+    fn finish(&self, h: S::Scalar, y: &S, y_new: &mut S) {
+        let out = y_new.as_mut_slice();
+        let y = y.as_slice();
+        match &self.update {
+            Update::LastStage => {
+                let zs = self.z[self.z.len() - 1].as_slice();
+                for m in 0..out.len() {
+                    out[m] = y[m] + zs[m];
+                }
+            }
+            Update::Weights => {
+                for m in 0..out.len() {
+                    let mut sum = S::Scalar::zero();
+                    for &(i, b) in &self.b {
+                        sum += b * self.f[i].as_slice()[m];
+                    }
+                    out[m] = y[m] + h * sum;
+                }
+            }
+            Update::Inverse(d) => {
+                for m in 0..out.len() {
+                    let mut sum = S::Scalar::zero();
+                    for (i, &d) in d.iter().enumerate() {
+                        sum += d * self.z[i].as_slice()[m];
+                    }
+                    out[m] = y[m] + sum;
+                }
+            }
+        }
+    }
+}
+
+fn diverged<T: Real>(t: T, residual: f64, iterations: usize) -> Error {
+    Error::SolverDiverged {
+        t: to_f64(t),
+        residual,
+        iterations,
     }
 }
 
@@ -130,7 +575,7 @@ impl<P: Problem> Stepper<P> for ImplicitRk<P::State> {
     }
 
     fn error_order(&self) -> Option<usize> {
-        None
+        self.error_order
     }
 
     fn step(
@@ -140,23 +585,52 @@ impl<P: Problem> Stepper<P> for ImplicitRk<P::State> {
         h: P::Scalar,
         y: &P::State,
         y_new: &mut P::State,
-        _tol: Option<&Tolerances<P::Scalar>>,
+        tol: Option<&Tolerances<P::Scalar>>,
     ) -> Result<Option<P::Scalar>, Error> {
-        for z in &mut self.z {
-            z.scale(P::Scalar::zero());
+        self.last_h = None;
+        self.start(h);
+        let scale = y.as_slice().iter().fold(P::Scalar::zero(), |m, x| m.max(x.abs()));
+        let tolerance = self.tol * (P::Scalar::one() + scale);
+        if self.rows.iter().all(Vec::is_empty) {
+            // An explicit tableau with all rows zero (explicit Euler): nothing to solve.
+            self.explicit_stages(p, t, y, None);
+        } else {
+            match self.options.solver {
+                ImplicitSolver::FixedPoint => self.fixed_point(p, t, h, y, tolerance)?,
+                ImplicitSolver::Newton => self.newton(p, t, h, y, tolerance)?,
+            }
         }
-        self.fixed_point(p, t, h, y)?;
-        self.evaluate_stages(p, t, h, y);
-        y_new.copy_from(y);
-        for i in 0..self.z.len() {
-            y_new.axpy(h * self.b[i], &self.f[i]);
+        self.finish(h, y, y_new);
+        self.last_h = Some(h);
+        let (Some(tol), Some(e)) = (tol, self.e.as_ref()) else {
+            return Ok(None);
+        };
+        let err = self.err.as_mut_slice();
+        for m in 0..err.len() {
+            let mut sum = P::Scalar::zero();
+            for &(i, w) in e {
+                sum += w * self.f[i].as_slice()[m];
+            }
+            err[m] = h * sum;
         }
-        Ok(None)
+        Ok(Some(tol.rms(y, y_new, &self.err)))
     }
 
-    fn accept(&mut self) {}
+    fn accept(&mut self) {
+        if let Some(h) = self.last_h.take() {
+            let g = &mut self.guess;
+            for (prev, z) in g.previous.iter_mut().zip(&self.z) {
+                prev.copy_from(z);
+            }
+            g.h_previous = h;
+            g.valid = g.enabled;
+        }
+    }
 
-    fn reset(&mut self) {}
+    fn reset(&mut self) {
+        self.guess.valid = false;
+        self.last_h = None;
+    }
 
     fn counters(&self) -> Counters {
         self.counters

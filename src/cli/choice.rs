@@ -1,0 +1,86 @@
+//! What `--method` names: a catalog method, a method file, or the theta method.
+
+use std::path::{Path, PathBuf};
+use stormer::registry::{self, normalize};
+use stormer::scenes::Scene;
+use stormer::{Error, ImplicitOptions, Stepper, Tableau, TableauData};
+
+/// A method chosen on the command line.
+pub enum MethodChoice {
+    /// A compiled catalog method.
+    Catalog(&'static TableauData),
+    /// A tableau read from a TOML method file.
+    File {
+        /// The validated tableau.
+        tableau: Tableau,
+        /// Where it was read from.
+        path: PathBuf,
+    },
+    /// The theta method with weight `alpha` (`registry::theta`).
+    Theta(Tableau),
+}
+
+/// True when `arg` is meant as a file: it ends in `.toml`, has a path separator, or names
+/// an existing file.
+pub fn looks_like_path(arg: &str) -> bool {
+    arg.ends_with(".toml") || arg.contains(['/', '\\']) || Path::new(arg).is_file()
+}
+
+impl MethodChoice {
+    /// Resolves `name`: `theta` (with `alpha`, default 1/2), a method file, or a catalog
+    /// name (an unknown name is an error suggesting the nearest ones).
+    pub fn resolve(name: &str, alpha: Option<f64>) -> Result<Self, Error> {
+        if normalize(name) == "theta" {
+            return Ok(MethodChoice::Theta(registry::theta(alpha.unwrap_or(0.5))?));
+        }
+        if alpha.is_some() {
+            return Err(Error::invalid("--alpha", format!("it applies to --method theta only, not to {name}")));
+        }
+        if looks_like_path(name) {
+            let path = PathBuf::from(name);
+            let tableau = Tableau::from_file(&path)?;
+            return Ok(MethodChoice::File { tableau, path });
+        }
+        match registry::find(name) {
+            Ok(data) => Ok(MethodChoice::Catalog(data)),
+            // `rk-4` for `rk4`: separators are optional when that names one method.
+            Err(e) => {
+                let loose = |s: &str| s.replace(['-', '_', ' '], "");
+                let key = loose(&normalize(name));
+                let mut matches = registry::BUTCHER.iter().filter(|d| loose(d.name) == key);
+                match (matches.next(), matches.next()) {
+                    (Some(data), None) => Ok(MethodChoice::Catalog(data)),
+                    _ => Err(e),
+                }
+            }
+        }
+    }
+
+    /// The short name used in output file names and summaries.
+    pub fn label(&self) -> String {
+        match self {
+            MethodChoice::Catalog(d) => d.name.to_string(),
+            MethodChoice::File { tableau, .. } => tableau.name().to_string(),
+            MethodChoice::Theta(t) => t.name().to_string(),
+        }
+    }
+
+    /// The run-time tableau (for `verify`).
+    pub fn tableau(&self) -> Result<Tableau, Error> {
+        match self {
+            MethodChoice::Catalog(d) => Tableau::from_data(d),
+            MethodChoice::File { tableau, .. } | MethodChoice::Theta(tableau) => Ok(tableau.clone()),
+        }
+    }
+
+    /// A stepper for the scene's model: the compiled stepper of a catalog method, the
+    /// run-time one of a file or theta tableau.
+    pub fn stepper<S: Scene>(&self, y0: &S::State, implicit: &ImplicitOptions) -> Result<Box<dyn Stepper<S>>, Error> {
+        match self {
+            MethodChoice::Catalog(d) => registry::stepper::<S>(d.name, y0, implicit),
+            MethodChoice::File { tableau, .. } | MethodChoice::Theta(tableau) => {
+                registry::tableau_stepper::<S>(tableau, y0, implicit)
+            }
+        }
+    }
+}

@@ -1,0 +1,88 @@
+//! `stormer methods`: the catalog as a table or as JSON.
+
+use super::output::{print, yes_no};
+use super::TableFormat;
+use stormer::registry::BUTCHER;
+use stormer::MethodInfo;
+
+/// The table's columns, in order.
+const HEADER: [&str; 9] = [
+    "name",
+    "family",
+    "order",
+    "stages",
+    "explicit",
+    "embedded order",
+    "FSAL",
+    "symplectic",
+    "symmetric",
+];
+
+/// One method as the table's cells.
+fn cells(m: &MethodInfo) -> [String; 9] {
+    [
+        m.name.clone(),
+        m.family.to_string(),
+        m.order.to_string(),
+        m.stages.to_string(),
+        yes_no(m.flags.explicit).into(),
+        m.embedded_order.map_or_else(|| "-".into(), |q| q.to_string()),
+        yes_no(m.flags.fsal).into(),
+        yes_no(m.flags.symplectic).into(),
+        yes_no(m.flags.symmetric).into(),
+    ]
+}
+
+/// One method as a JSON object.
+pub fn json(m: &MethodInfo) -> serde_json::Value {
+    serde_json::json!({
+        "name": m.name,
+        "family": m.family,
+        "order": m.order,
+        "stages": m.stages,
+        "explicit": m.flags.explicit,
+        "embedded_order": m.embedded_order,
+        "fsal": m.flags.fsal,
+        "symplectic": m.flags.symplectic,
+        "symmetric": m.flags.symmetric,
+    })
+}
+
+/// Aligned columns: text left, numbers right.
+fn table(rows: &[[String; 9]]) -> String {
+    let mut width = HEADER.map(str::len);
+    for row in rows {
+        for (w, cell) in width.iter_mut().zip(row) {
+            *w = (*w).max(cell.len());
+        }
+    }
+    let numeric = [false, false, true, true, false, true, false, false, false];
+    let line = |row: &[String]| {
+        let cols: Vec<String> = row
+            .iter()
+            .zip(width)
+            .zip(numeric)
+            .map(|((c, w), num)| if num { format!("{c:>w$}") } else { format!("{c:<w$}") })
+            .collect();
+        cols.join("  ").trim_end().to_string() + "\n"
+    };
+    let mut out = line(&HEADER.map(String::from));
+    for row in rows {
+        out.push_str(&line(row));
+    }
+    out
+}
+
+/// Prints the catalog.
+pub fn run(format: TableFormat) -> anyhow::Result<()> {
+    let infos: Vec<MethodInfo> = BUTCHER.iter().map(|d| d.info()).collect();
+    let text = match format {
+        TableFormat::Table => table(&infos.iter().map(cells).collect::<Vec<_>>()),
+        TableFormat::Json => {
+            let list: Vec<_> = infos.iter().map(json).collect();
+            serde_json::to_string_pretty(&list)? + "\n"
+        }
+    };
+    print(&text)?;
+    Ok(())
+}

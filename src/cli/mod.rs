@@ -1,0 +1,105 @@
+//! Argument parsing and dispatch to the subcommands.
+
+mod choice;
+mod methods;
+mod output;
+mod run;
+mod scene;
+mod verify;
+
+use clap::{Parser, Subcommand, ValueEnum};
+use std::io::Write;
+use std::process::ExitCode;
+
+/// ODE integration where every method is data.
+#[derive(Debug, Parser)]
+#[command(name = "stormer", version, about, long_about = None)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Debug, Subcommand)]
+enum Command {
+    /// List the methods of the catalog with their order, stages and derived flags.
+    Methods {
+        /// Output format.
+        #[arg(long, value_enum, default_value_t = TableFormat::Table)]
+        format: TableFormat,
+    },
+    /// Check a method: flags, row sums, every order condition with its residual, and the
+    /// highest order its coefficients reach.
+    Verify {
+        /// A catalog name (`-` and `_` both accepted) or a path to a TOML method file.
+        method: String,
+        /// Output format.
+        #[arg(long, value_enum, default_value_t = TextFormat::Text)]
+        format: TextFormat,
+    },
+    /// Run a scene and write its trajectory as CSV (t, the components, the energy).
+    Run(run::RunArgs),
+    /// The built-in scenes: list them, or print one's TOML to copy and edit.
+    Scene {
+        #[command(subcommand)]
+        command: SceneCommand,
+    },
+}
+
+#[derive(Debug, Subcommand)]
+enum SceneCommand {
+    /// List the built-in scenes.
+    List,
+    /// Print a built-in scene's TOML file.
+    Show {
+        /// The scene's name.
+        name: String,
+    },
+}
+
+/// Output format of `methods`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+enum TableFormat {
+    /// Aligned columns.
+    Table,
+    /// A JSON array of objects.
+    Json,
+}
+
+/// Output format of `verify`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+enum TextFormat {
+    /// A report for people.
+    Text,
+    /// One JSON object.
+    Json,
+}
+
+/// Parses the arguments, runs the command, and turns its outcome into an exit code.
+pub fn main() -> ExitCode {
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) => {
+            // Help and version go to stdout (exit 0); usage errors to stderr (exit 2).
+            let _ = e.print();
+            return ExitCode::from(u8::try_from(e.exit_code()).unwrap_or(2));
+        }
+    };
+    let result = match cli.command {
+        Command::Methods { format } => methods::run(format),
+        Command::Verify { method, format } => verify::run(&method, format),
+        Command::Run(args) => run::run(&args),
+        Command::Scene { command } => match command {
+            SceneCommand::List => scene::list(),
+            SceneCommand::Show { name } => scene::show(&name),
+        },
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        // `stormer methods | head -1`: the reader left, which is not a failure.
+        Err(e) if output::is_broken_pipe(&e) => ExitCode::SUCCESS,
+        Err(e) => {
+            let _ = writeln!(std::io::stderr(), "error: {}", output::one_line(&format!("{e:#}")));
+            ExitCode::FAILURE
+        }
+    }
+}

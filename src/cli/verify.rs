@@ -1,0 +1,165 @@
+//! `stormer verify METHOD|FILE`: flags, row sums, every order condition with its residual,
+//! and the highest order the coefficients reach.
+
+use super::choice::MethodChoice;
+use super::output::{print, yes_no};
+use super::TextFormat;
+use std::fmt::Write as _;
+use stormer::order::{achieved_order, DEFAULT_TOLERANCE, MAX_ORDER};
+use stormer::Tableau;
+
+/// What `verify` reports about a tableau.
+struct Report {
+    tableau: Tableau,
+    source: String,
+    row_sum_residual: f64,
+    /// Orders checked for exactness: `min(order + 1, MAX_ORDER)`.
+    limit: usize,
+    achieved: usize,
+    achieved_embedded: Option<(usize, usize)>,
+}
+
+impl Report {
+    fn new(tableau: Tableau, source: String) -> Self {
+        let s = tableau.stages();
+        let row_sum_residual = tableau
+            .c()
+            .iter()
+            .zip(tableau.a().chunks(s.max(1)))
+            .map(|(c, row)| (c - row.iter().sum::<f64>()).abs())
+            .fold(0.0f64, f64::max);
+        let limit = (tableau.order() + 1).min(MAX_ORDER);
+        let achieved = achieved_order(tableau.a(), tableau.b(), limit, DEFAULT_TOLERANCE);
+        let achieved_embedded = tableau.b_hat().zip(tableau.embedded_order()).map(|(b_hat, q)| {
+            let limit = (q + 1).min(MAX_ORDER);
+            (achieved_order(tableau.a(), b_hat, limit, DEFAULT_TOLERANCE), limit)
+        });
+        Report {
+            tableau,
+            source,
+            row_sum_residual,
+            limit,
+            achieved,
+            achieved_embedded,
+        }
+    }
+
+    fn conditions_ok(&self) -> bool {
+        self.tableau.conditions().iter().all(|c| c.holds())
+    }
+
+    /// One sentence on the achieved order against the declared one.
+    fn verdict(achieved: usize, declared: usize, limit: usize) -> String {
+        if achieved == declared && limit > declared {
+            format!("{achieved}: the order {limit} conditions fail, so the order is exactly {declared}")
+        } else if achieved == declared {
+            format!("{achieved} (order {MAX_ORDER} is the highest checked)")
+        } else if achieved > declared {
+            format!("{achieved}: the coefficients reach more than the declared order {declared}")
+        } else {
+            format!("{achieved}: below the declared order {declared} at tolerance {DEFAULT_TOLERANCE:e}")
+        }
+    }
+
+    fn text(&self) -> String {
+        let t = &self.tableau;
+        let f = t.flags();
+        let mut out = String::new();
+        let ok = if self.conditions_ok() { "hold" } else { "FAIL" };
+        let _ = writeln!(out, "{}: declared order {}, order conditions {ok}", t.name(), t.order());
+        let rows = [
+            ("source", self.source.clone()),
+            ("family", "butcher".to_string()),
+            ("stages", t.stages().to_string()),
+            ("embedded order", t.embedded_order().map_or("none".into(), |q| q.to_string())),
+            ("explicit", yes_no(f.explicit).into()),
+            ("FSAL", yes_no(f.fsal).into()),
+            ("symplectic", yes_no(f.symplectic).into()),
+            ("symmetric", yes_no(f.symmetric).into()),
+            ("row sums", format!("c_i = sum_j a_ij, max |c_i - sum_j a_ij| = {:.1e}", self.row_sum_residual)),
+        ];
+        for (key, value) in rows {
+            let _ = writeln!(out, "  {key:<15} {value}");
+        }
+        let conditions = t.conditions();
+        let _ = writeln!(out, "order conditions ({}):", conditions.len());
+        let width = conditions.iter().map(|c| c.text.len()).max().unwrap_or(0).max(9);
+        let _ = writeln!(
+            out,
+            "  {:<5}  {:<width$}  {:<22}  {:<22}  {:<9}",
+            "order", "condition", "expected", "got", "residual"
+        );
+        for c in conditions {
+            let _ = writeln!(
+                out,
+                "  {:<5}  {:<width$}  {:<22}  {:<22}  {:<9.1e}  {}",
+                c.order,
+                c.text,
+                format!("{:?}", c.expected),
+                format!("{:?}", c.got),
+                c.residual,
+                if c.holds() { "ok" } else { "FAILS" }
+            );
+        }
+        let _ = writeln!(out, "achieved order {}", Report::verdict(self.achieved, t.order(), self.limit));
+        if let (Some((q, limit)), Some(declared)) = (self.achieved_embedded, t.embedded_order()) {
+            let _ = writeln!(out, "achieved embedded order {}", Report::verdict(q, declared, limit));
+        }
+        out
+    }
+
+    fn json(&self) -> serde_json::Value {
+        let t = &self.tableau;
+        let f = t.flags();
+        let conditions: Vec<_> = t
+            .conditions()
+            .iter()
+            .map(|c| {
+                serde_json::json!({
+                    "order": c.order,
+                    "condition": c.text,
+                    "expected": c.expected,
+                    "got": c.got,
+                    "residual": c.residual,
+                    "tolerance": c.tolerance,
+                    "ok": c.holds(),
+                })
+            })
+            .collect();
+        serde_json::json!({
+            "name": t.name(),
+            "source": self.source,
+            "family": "butcher",
+            "declared_order": t.order(),
+            "order_conditions_ok": self.conditions_ok(),
+            "embedded_order": t.embedded_order(),
+            "stages": t.stages(),
+            "explicit": f.explicit,
+            "fsal": f.fsal,
+            "symplectic": f.symplectic,
+            "symmetric": f.symmetric,
+            "row_sum_residual": self.row_sum_residual,
+            "conditions": conditions,
+            "achieved_order": self.achieved,
+            "achieved_order_checked_up_to": self.limit,
+            "achieved_embedded_order": self.achieved_embedded.map(|(q, _)| q),
+        })
+    }
+}
+
+/// Verifies a catalog method or a method file and prints the report.
+pub fn run(method: &str, format: TextFormat) -> anyhow::Result<()> {
+    let choice = MethodChoice::resolve(method, None)?;
+    let source = match &choice {
+        MethodChoice::File { path, .. } => path.display().to_string(),
+        MethodChoice::Theta(_) => "the theta method (alpha = 1/2)".to_string(),
+        MethodChoice::Catalog(_) => "catalog".to_string(),
+    };
+    let report = Report::new(choice.tableau()?, source);
+    let text = match format {
+        TextFormat::Text => report.text(),
+        TextFormat::Json => serde_json::to_string_pretty(&report.json())? + "\n",
+    };
+    print(&text)?;
+    Ok(())
+}
