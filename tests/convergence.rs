@@ -11,7 +11,10 @@ use stormer::{lit, registry, to_f64, Driver, ImplicitOptions, ImplicitSolver, Re
 const T0: f64 = 0.3;
 
 fn span() -> f64 {
-    std::env::var("STORMER_T_END").ok().and_then(|s| s.parse().ok()).unwrap_or(3.0)
+    std::env::var("STORMER_T_END")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(3.0)
 }
 const TOLERANCE: f64 = 0.2;
 
@@ -20,7 +23,11 @@ const TOLERANCE: f64 = 0.2;
 /// ceiling the error is asymptotic, above the floor it is not round-off; at least three
 /// points). A run may fail only while the steps are coarser than any run that succeeded
 /// (an implicit solve or the problem's `y^(1/5)` at huge steps).
-fn measured_order<T: Real>(mut run: impl FnMut(usize) -> Result<T, String>, floor: f64, ceiling: f64) -> Result<f64, String> {
+fn measured_order<T: Real>(
+    mut run: impl FnMut(usize) -> Result<T, String>,
+    floor: f64,
+    ceiling: f64,
+) -> Result<f64, String> {
     let mut history: Vec<(usize, f64)> = Vec::new();
     let mut k = 2;
     loop {
@@ -47,14 +54,16 @@ fn measured_order<T: Real>(mut run: impl FnMut(usize) -> Result<T, String>, floo
         .map(|&(n, e)| ((n as f64).ln(), e.ln()))
         .collect();
     if points.len() < 3 {
-        return Err(format!("fewer than 3 errors inside [{floor:e}, {ceiling:e}]: {history:?}"));
+        return Err(format!(
+            "fewer than 3 errors inside [{floor:e}, {ceiling:e}]: {history:?}"
+        ));
     }
     let m = points.len() as f64;
     let (sx, sy) = points.iter().fold((0.0, 0.0), |(a, b), &(x, y)| (a + x, b + y));
     let (mx, my) = (sx / m, sy / m);
-    let (sxy, sxx) = points
-        .iter()
-        .fold((0.0, 0.0), |(a, b), &(x, y)| (a + (x - mx) * (y - my), b + (x - mx) * (x - mx)));
+    let (sxy, sxx) = points.iter().fold((0.0, 0.0), |(a, b), &(x, y)| {
+        (a + (x - mx) * (y - my), b + (x - mx) * (x - mx))
+    });
     // The local error of one step is O(h^(p+1)).
     Ok(-sxy / sxx - 1.0)
 }
@@ -223,9 +232,8 @@ fn negative_control_a_perturbed_tableau_measures_lower() {
     let y0 = Logistic::initial::<f64>();
     let order = measured_order(
         |n| {
-            let mut s =
-                registry::tableau_stepper::<Generic<Logistic, f64>>(&tableau, &y0, &ImplicitOptions::default())
-                    .unwrap();
+            let mut s = registry::tableau_stepper::<Generic<Logistic, f64>>(&tableau, &y0, &ImplicitOptions::default())
+                .unwrap();
             error_with(&mut *s, n)
         },
         1e-11,

@@ -7,9 +7,27 @@
 //! is `y_m + h * (w_j1 k_j1,m + w_j2 k_j2,m + ...)` summed left to right over the nonzero
 //! weights in column order, `y_m` alone for an empty row, and an error estimate is
 //! `h * (...)` without a base (zero when every difference vanishes).
+//!
+//! Stage 3 of RK4 (`a_32 = 1/2`, `c_3 = 1/2`, both in coefficient slot 0), for example:
+//!
+//! ```text
+//! {
+//!     let (__done, __rest) = __k.split_at_mut(2);
+//!     {
+//!         let __out = State::as_mut_slice(&mut *__y_new);
+//!         let __n = __out.len();
+//!         let __ys = &State::as_slice(__y)[..__n];
+//!         let __k1 = &State::as_slice(&__done[1])[..__n];
+//!         for __m in 0..__n {
+//!             __out[__m] = __ys[__m] + __h * (__co[0] * __k1[__m]);
+//!         }
+//!     }
+//!     Problem::rhs(__p, __t + __co[0] * __h, &*__y_new, &mut __rest[0]);
+//! }
+//! ```
 
-use proc_macro2::{Literal, Span, TokenStream};
-use quote::{format_ident, quote, quote_spanned};
+use proc_macro2::{Literal, TokenStream};
+use quote::{format_ident, quote};
 use stormer_order::ValidTableau;
 
 use crate::valid::Method;
@@ -42,7 +60,7 @@ fn optional_floats(v: Option<&Vec<f64>>) -> TokenStream {
 }
 
 /// The distinct nonzero coefficient values the step uses, in order of first use; the
-/// generated code reads slot `i` as `co[i]`.
+/// generated code reads slot `i` as `__co[i]`.
 #[derive(Default)]
 struct Slots {
     values: Vec<f64>,
@@ -80,63 +98,59 @@ fn pattern(row: &[f64]) -> Vec<(usize, u64)> {
         .collect()
 }
 
-/// The sum of the terms of one linear combination, for component `m`.
-fn sum(sp: Span, terms: &[(usize, usize)]) -> TokenStream {
+/// The sum of the terms of one linear combination, for component `__m`.
+fn sum(terms: &[(usize, usize)]) -> TokenStream {
     let parts = terms.iter().map(|&(j, slot)| {
-        let kj = format_ident!("k{}", j, span = sp);
+        let kj = format_ident!("__k{}", j);
         let slot = Literal::usize_unsuffixed(slot);
-        quote_spanned!(sp=> co[#slot] * #kj[m])
+        quote!(__co[#slot] * #kj[__m])
     });
-    quote_spanned!(sp=> #(#parts)+*)
+    quote!(#(#parts)+*)
 }
 
 /// A block writing `out = base + h * sum_j w_j k_j` (`base` alone when there are no
-/// terms) or, without a base, `out = h * sum` (zero when there are no terms), with
-/// `out = State::as_mut_slice(out_expr)` and `k_j` read from the slice `ks`.
-fn combine(
-    sp: Span,
-    out: &TokenStream,
-    base: Option<TokenStream>,
-    ks: &TokenStream,
-    terms: &[(usize, usize)],
-) -> TokenStream {
+/// terms) or, without a base, `out = h * sum` (zero when there are no terms), with `k_j`
+/// read from the slice `ks`.
+fn combine(out: TokenStream, base: Option<TokenStream>, ks: TokenStream, terms: &[(usize, usize)]) -> TokenStream {
     let views = terms.iter().map(|&(j, _)| {
-        let kj = format_ident!("k{}", j, span = sp);
+        let kj = format_ident!("__k{}", j);
         let j = Literal::usize_unsuffixed(j);
-        quote_spanned!(sp=> let #kj = &::stormer::__private::State::as_slice(&#ks[#j])[..n];)
+        quote!(let #kj = &::stormer::__private::State::as_slice(&#ks[#j])[..__n];)
     });
-    let sum = sum(sp, terms);
+    let sum = sum(terms);
     let (base_view, value) = match (base, terms.is_empty()) {
         (Some(y), true) => (
-            quote_spanned!(sp=> let ys = &::stormer::__private::State::as_slice(#y)[..n];),
-            quote_spanned!(sp=> ys[m]),
+            quote!(let __ys = &::stormer::__private::State::as_slice(#y)[..__n];),
+            quote!(__ys[__m]),
         ),
         (Some(y), false) => (
-            quote_spanned!(sp=> let ys = &::stormer::__private::State::as_slice(#y)[..n];),
-            quote_spanned!(sp=> ys[m] + h * (#sum)),
+            quote!(let __ys = &::stormer::__private::State::as_slice(#y)[..__n];),
+            quote!(__ys[__m] + __h * (#sum)),
         ),
         (None, true) => (
-            quote_spanned!(sp=> let zero = ::stormer::__private::lit::<_>(0.0f64);),
-            quote_spanned!(sp=> zero),
+            quote!(let __zero = ::stormer::__private::lit::<_>(0.0f64);),
+            quote!(__zero),
         ),
-        (None, false) => (quote!(), quote_spanned!(sp=> h * (#sum))),
+        (None, false) => (quote!(), quote!(__h * (#sum))),
     };
-    quote_spanned! {sp=>
+    quote! {
         {
-            let out = ::stormer::__private::State::as_mut_slice(#out);
-            let n = out.len();
+            let __out = ::stormer::__private::State::as_mut_slice(#out);
+            let __n = __out.len();
             #base_view
             #(#views)*
-            for m in 0..n {
-                out[m] = #value;
+            for __m in 0..__n {
+                __out[__m] = #value;
             }
         }
     }
 }
 
 /// The `ExplicitMethod` impl of an explicit tableau.
+///
+/// Every local name starts with `__`: a `let` or parameter pattern would otherwise match a
+/// same-named constant of the invoking module (hygiene on stable Rust does not prevent it).
 fn explicit_impl(ident: &syn::Ident, t: &ValidTableau) -> TokenStream {
-    let sp = Span::mixed_site();
     let s = t.stages;
     let row = |i: usize| &t.a[i * s..(i + 1) * s];
     let mut slots = Slots::default();
@@ -145,25 +159,19 @@ fn explicit_impl(ident: &syn::Ident, t: &ValidTableau) -> TokenStream {
     let mut stages = Vec::new();
     for i in 1..s {
         let terms = slots.sparse(row(i)[..i].iter().copied());
-        let input = combine(
-            sp,
-            &quote_spanned!(sp=> &mut *y_new),
-            Some(quote_spanned!(sp=> y)),
-            &quote_spanned!(sp=> done),
-            &terms,
-        );
+        let input = combine(quote!(&mut *__y_new), Some(quote!(__y)), quote!(__done), &terms);
         let time = if t.c[i] == 0.0 {
-            quote_spanned!(sp=> t)
+            quote!(__t)
         } else {
             let slot = Literal::usize_unsuffixed(slots.of(t.c[i]));
-            quote_spanned!(sp=> t + co[#slot] * h)
+            quote!(__t + __co[#slot] * __h)
         };
         let i = Literal::usize_unsuffixed(i);
-        stages.push(quote_spanned! {sp=>
+        stages.push(quote! {
             {
-                let (done, rest) = k.split_at_mut(#i);
+                let (__done, __rest) = __k.split_at_mut(#i);
                 #input
-                p.rhs(#time, &*y_new, &mut rest[0]);
+                ::stormer::__private::Problem::rhs(__p, #time, &*__y_new, &mut __rest[0]);
             }
         });
     }
@@ -174,28 +182,16 @@ fn explicit_impl(ident: &syn::Ident, t: &ValidTableau) -> TokenStream {
         quote!()
     } else {
         let terms = slots.sparse(t.b.iter().copied());
-        combine(
-            sp,
-            &quote_spanned!(sp=> &mut *y_new),
-            Some(quote_spanned!(sp=> y)),
-            &quote_spanned!(sp=> k),
-            &terms,
-        )
+        combine(quote!(&mut *__y_new), Some(quote!(__y)), quote!(__k), &terms)
     };
 
     // Error estimates with d = b - b_hat computed in f64, as RuntimeRk does.
     let mut estimate = |w: Option<&Vec<f64>>| match w {
         Some(w) => {
             let terms = slots.sparse(t.b.iter().zip(w).map(|(b, w)| b - w));
-            combine(
-                sp,
-                &quote_spanned!(sp=> &mut *err),
-                None,
-                &quote_spanned!(sp=> k),
-                &terms,
-            )
+            combine(quote!(&mut *__err), None, quote!(__k), &terms)
         }
-        None => quote_spanned!(sp=> let _ = (co, h, k, err);),
+        None => quote!(),
     };
     let error = estimate(t.b_hat.as_ref());
     let error3 = estimate(t.b_hat3.as_ref());
@@ -203,10 +199,10 @@ fn explicit_impl(ident: &syn::Ident, t: &ValidTableau) -> TokenStream {
     let k_len = Literal::usize_unsuffixed(slots.values.len());
     let coeffs = slots.values.iter().map(|&x| {
         let x = float(x);
-        quote_spanned!(sp=> ::stormer::__private::lit::<T>(#x))
+        quote!(::stormer::__private::lit::<T>(#x))
     });
 
-    quote_spanned! {sp=>
+    quote! {
         #[automatically_derived]
         #[allow(unused_variables, clippy::all, clippy::pedantic, clippy::nursery)]
         impl ::stormer::__private::ExplicitMethod for #ident {
@@ -219,13 +215,13 @@ fn explicit_impl(ident: &syn::Ident, t: &ValidTableau) -> TokenStream {
 
             #[inline]
             fn stages<P: ::stormer::__private::Problem>(
-                co: &[P::Scalar; #k_len],
-                p: &P,
-                t: P::Scalar,
-                h: P::Scalar,
-                y: &P::State,
-                k: &mut [P::State],
-                y_new: &mut P::State,
+                __co: &[P::Scalar; #k_len],
+                __p: &P,
+                __t: P::Scalar,
+                __h: P::Scalar,
+                __y: &P::State,
+                __k: &mut [P::State],
+                __y_new: &mut P::State,
             ) {
                 #(#stages)*
                 #solution
@@ -233,20 +229,20 @@ fn explicit_impl(ident: &syn::Ident, t: &ValidTableau) -> TokenStream {
 
             #[inline]
             fn error<S: ::stormer::__private::State>(
-                co: &[S::Scalar; #k_len],
-                h: S::Scalar,
-                k: &[S],
-                err: &mut S,
+                __co: &[S::Scalar; #k_len],
+                __h: S::Scalar,
+                __k: &[S],
+                __err: &mut S,
             ) {
                 #error
             }
 
             #[inline]
             fn error3<S: ::stormer::__private::State>(
-                co: &[S::Scalar; #k_len],
-                h: S::Scalar,
-                k: &[S],
-                err: &mut S,
+                __co: &[S::Scalar; #k_len],
+                __h: S::Scalar,
+                __k: &[S],
+                __err: &mut S,
             ) {
                 #error3
             }
@@ -262,7 +258,15 @@ pub fn expand(method: &Method) -> TokenStream {
         ident,
         name,
         tableau: t,
+        tolerance,
     } = method;
+    let tolerance = match tolerance {
+        Some(x) => {
+            let x = Literal::f64_suffixed(*x);
+            quote!(::stormer::__private::Some(#x))
+        }
+        None => quote!(::stormer::__private::None),
+    };
     let order = Literal::usize_unsuffixed(t.order);
     let stages = Literal::usize_unsuffixed(t.stages);
     let embedded_order = match t.embedded_order {
@@ -283,16 +287,13 @@ pub fn expand(method: &Method) -> TokenStream {
     } = t.flags;
 
     let dyn_stepper = if explicit {
-        quote! {
-            let _ = implicit;
-            ::stormer::__private::ExplicitRk::<Self, P::State>::boxed::<P>(y0)
-        }
+        quote!(::stormer::__private::ExplicitRk::<Self, P::State>::boxed::<P>(__y0))
     } else {
         quote! {
             ::stormer::__private::implicit_stepper::<P>(
                 &<Self as ::stormer::__private::ButcherMethod>::DATA,
-                y0,
-                implicit,
+                __y0,
+                __implicit,
             )
         }
     };
@@ -315,6 +316,7 @@ pub fn expand(method: &Method) -> TokenStream {
                 c: #c,
                 b_hat: #b_hat,
                 b_hat3: #b_hat3,
+                tolerance: #tolerance,
                 flags: ::stormer::__private::Flags {
                     explicit: #explicit,
                     fsal: #fsal,
@@ -324,8 +326,8 @@ pub fn expand(method: &Method) -> TokenStream {
             };
 
             fn dyn_stepper<P>(
-                y0: &P::State,
-                implicit: &::stormer::__private::ImplicitOptions,
+                __y0: &P::State,
+                __implicit: &::stormer::__private::ImplicitOptions,
             ) -> ::stormer::__private::Box<dyn ::stormer::__private::Stepper<P>>
             where
                 P: ::stormer::__private::Problem + 'static,
@@ -377,14 +379,18 @@ mod tests {
         // 1/2, 1, 1/6, 1/3: one slot per distinct nonzero value.
         assert!(code.contains("type Coeffs < T : :: stormer :: __private :: Real > = [T ; 4]"));
         // Three stages and the solution, no error estimate.
-        assert_eq!(code.matches("for m in 0 .. n").count(), 4);
-        assert_eq!(code.matches(". rhs (").count(), 3);
+        assert_eq!(code.matches("for __m in 0 .. __n").count(), 4);
+        assert_eq!(code.matches("Problem :: rhs (").count(), 3);
         assert!(
-            code.contains("ys [m] + h * (co [1] * k2 [m])"),
+            code.contains("__ys [__m] + __h * (__co [1] * __k2 [__m])"),
             "stage 4 reads k_3 only"
         );
-        assert!(code.contains("t + co [1] * h"), "c_4 = 1 shares the slot of a_43 = 1");
-        assert!(code.contains("co [2] * k0 [m] + co [3] * k1 [m] + co [3] * k2 [m] + co [2] * k3 [m]"));
+        assert!(
+            code.contains("__t + __co [1] * __h"),
+            "c_4 = 1 shares the slot of a_43 = 1"
+        );
+        assert!(code
+            .contains("__co [2] * __k0 [__m] + __co [3] * __k1 [__m] + __co [3] * __k2 [__m] + __co [2] * __k3 [__m]"));
         assert!(code.contains("ExplicitRk :: < Self , P :: State > :: boxed"));
     }
 
@@ -401,7 +407,7 @@ mod tests {
         });
         assert!(code.contains("fsal : true"));
         // Three stage inputs and one error estimate, no separate solution.
-        assert_eq!(code.matches("for m in 0 .. n").count(), 4);
+        assert_eq!(code.matches("for __m in 0 .. __n").count(), 4);
     }
 
     #[test]

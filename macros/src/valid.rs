@@ -21,6 +21,8 @@ pub struct Method {
     pub name: LitStr,
     /// The validated coefficients and flags.
     pub tableau: ValidTableau,
+    /// The tolerance factor the checks used, when not the default.
+    pub tolerance: Option<f64>,
 }
 
 /// An expression as the user wrote it, near enough for a message: `1/2 - sqrt(3)/6`
@@ -53,32 +55,45 @@ fn eval(expr: &Expr) -> syn::Result<f64> {
         .map_err(|e| syn::Error::new_spanned(expr, format!("cannot evaluate coefficient `{}`: {e}", display(expr))))
 }
 
-/// Collects the values of `exprs`, or every evaluation error combined.
+/// Evaluates coefficients, collecting every error (so that all bad coefficients of an
+/// invocation are reported at once).
+#[derive(Default)]
 struct Evaluator {
     errors: Option<syn::Error>,
 }
 
 impl Evaluator {
-    fn array(&mut self, array: &Array) -> Vec<f64> {
-        array
-            .items
-            .iter()
-            .map(|expr| match eval(expr) {
-                Ok(x) => x,
-                Err(e) => {
-                    match &mut self.errors {
-                        Some(all) => all.combine(e),
-                        None => self.errors = Some(e),
-                    }
-                    0.0
+    /// The value of one coefficient; `None` after recording its error.
+    fn one(&mut self, expr: &Expr) -> Option<f64> {
+        match eval(expr) {
+            Ok(x) => Some(x),
+            Err(e) => {
+                match &mut self.errors {
+                    Some(all) => all.combine(e),
+                    None => self.errors = Some(e),
                 }
-            })
-            .collect()
+                None
+            }
+        }
+    }
+
+    /// The values of an array (a placeholder 0 for an entry that failed).
+    fn array(&mut self, array: &Array) -> Vec<f64> {
+        array.items.iter().map(|expr| self.one(expr).unwrap_or(0.0)).collect()
     }
 }
 
+/// What a validation error points at.
+enum Target<'a> {
+    /// One coefficient expression (the error covers all of its tokens).
+    Coefficient(&'a Expr),
+    /// An array, a row, a key or a literal.
+    Tokens(Span),
+}
+
 /// The offending tokens of a validation error.
-fn span_of(input: &Input, err: &TableauError, s: usize) -> Span {
+fn target<'a>(input: &'a Input, err: &TableauError, s: usize) -> Target<'a> {
+    use Target::{Coefficient, Tokens};
     let array = |what: &str| -> Option<&Array> {
         match what {
             "b" => Some(&input.b),
@@ -88,72 +103,53 @@ fn span_of(input: &Input, err: &TableauError, s: usize) -> Span {
             _ => None,
         }
     };
-    let entry = |array: &Array, index: usize| array.items.get(index).map_or(array.span, spanned);
-    let order_span = |order: usize| match &input.embedded_order {
-        Some(e) if input.order.value != order && e.value.value == order => e.value.span,
-        _ => input.order.span,
+    let entry = |array: &'a Array, index: usize| array.items.get(index).map_or(Tokens(array.span), Coefficient);
+    let row = |i: usize| input.a.rows.get(i).map_or(input.a.span, |r| r.span);
+    // OrderTooHigh and ZeroOrder concern `order` or `embedded_order`: the one with that value.
+    let order = |value: usize| match &input.embedded_order {
+        Some(e) if input.order.value != value && e.value.value == value => Tokens(e.value.span),
+        _ => Tokens(input.order.span),
     };
+    let fallback = Tokens(input.ident.span());
     match err {
-        TableauError::Empty => input.b.span,
+        TableauError::Empty => Tokens(input.b.span),
         TableauError::Shape {
             what: "a",
-            index: Some(row),
+            index: Some(i),
             ..
-        } => input.a.rows.get(*row).map_or(input.a.span, |r| r.span),
-        TableauError::Shape { what: "a", .. } => input.a.span,
-        TableauError::Shape { what, .. } => array(what).map_or(input.a.span, |a| a.span),
+        } => Tokens(row(*i)),
+        TableauError::Shape { what: "a", .. } => Tokens(input.a.span),
+        TableauError::Shape { what, .. } => array(what).map_or(fallback, |a| Tokens(a.span)),
         TableauError::NonFinite { what: "a", index } => {
             let (i, j) = (index / s.max(1), index % s.max(1));
-            input.a.rows.get(i).map_or(input.a.span, |row| entry(row, j))
+            input.a.rows.get(i).map_or(Tokens(input.a.span), |r| entry(r, j))
         }
-        TableauError::NonFinite { what, index } => array(what).map_or(input.ident.span(), |a| entry(a, *index)),
-        TableauError::RowSum { row, .. } => match &input.c {
-            Some(c) => entry(c, *row),
-            None => input.a.rows.get(*row).map_or(input.a.span, |r| r.span),
+        TableauError::NonFinite { what, index } => array(what).map_or(fallback, |a| entry(a, *index)),
+        TableauError::RowSum { row: i, .. } => match &input.c {
+            Some(c) => entry(c, *i),
+            None => Tokens(row(*i)),
         },
-        TableauError::OrderCondition { weights, .. } => array(weights).map_or(input.b.span, |a| a.span),
-        TableauError::OrderTooHigh { order, .. } => order_span(*order),
-        TableauError::ZeroOrder => order_span(0),
-        TableauError::MissingEmbeddedOrder => input.b_hat.as_ref().map_or(input.ident.span(), |k| k.key.span()),
-        TableauError::EmbeddedOrderWithoutWeights => input
-            .embedded_order
-            .as_ref()
-            .map_or(input.ident.span(), |k| k.key.span()),
-        TableauError::InvalidTolerance { .. } => input.tolerance.as_ref().map_or(input.ident.span(), spanned),
-        _ => input.ident.span(),
+        TableauError::OrderCondition { weights, .. } => array(weights).map_or(fallback, |a| Tokens(a.span)),
+        TableauError::OrderTooHigh { order: value, .. } => order(*value),
+        TableauError::ZeroOrder => order(0),
+        TableauError::MissingEmbeddedOrder => input.b_hat.as_ref().map_or(fallback, |k| Tokens(k.key.span())),
+        TableauError::EmbeddedOrderWithoutWeights => {
+            input.embedded_order.as_ref().map_or(fallback, |k| Tokens(k.key.span()))
+        }
+        TableauError::InvalidTolerance { .. } => input.tolerance.as_ref().map_or(fallback, Coefficient),
+        _ => fallback,
     }
-}
-
-/// The span of an expression's first token (rustc extends a `new_spanned` error over the
-/// whole expression; for a plain `Span` the first token is the best stable choice).
-fn spanned(expr: &Expr) -> Span {
-    expr.to_token_stream()
-        .into_iter()
-        .next()
-        .map_or_else(Span::call_site, |t| t.span())
 }
 
 /// Evaluates and validates a parsed invocation.
 pub fn validate(input: Input) -> syn::Result<Method> {
-    let mut ev = Evaluator { errors: None };
+    let mut ev = Evaluator::default();
     let a: Vec<Vec<f64>> = input.a.rows.iter().map(|row| ev.array(row)).collect();
     let b = ev.array(&input.b);
     let c = input.c.as_ref().map(|c| ev.array(c));
     let b_hat = input.b_hat.as_ref().map(|k| ev.array(&k.value));
     let b_hat3 = input.b_hat3.as_ref().map(|b| ev.array(b));
-    let tolerance = match &input.tolerance {
-        Some(expr) => match eval(expr) {
-            Ok(x) => Some(x),
-            Err(e) => {
-                match &mut ev.errors {
-                    Some(all) => all.combine(e),
-                    None => ev.errors = Some(e),
-                }
-                None
-            }
-        },
-        None => None,
-    };
+    let tolerance = input.tolerance.as_ref().and_then(|expr| ev.one(expr));
     if let Some(e) = ev.errors {
         return Err(e);
     }
@@ -176,27 +172,12 @@ pub fn validate(input: Input) -> syn::Result<Method> {
             ident: input.ident,
             name: input.name,
             tableau,
+            tolerance,
         }),
-        Err(err) => {
-            let span = span_of(&input, &err, s);
-            Err(error_at(&input, &err, span))
-        }
-    }
-}
-
-/// The error, spanned over the whole offending coefficient when it is one.
-fn error_at(input: &Input, err: &TableauError, span: Span) -> syn::Error {
-    let message = err.to_string();
-    let whole = |expr: Option<&Expr>| match expr {
-        Some(e) => syn::Error::new_spanned(e, &message),
-        None => syn::Error::new(span, &message),
-    };
-    match err {
-        TableauError::RowSum { row, .. } if input.c.is_some() => {
-            whole(input.c.as_ref().and_then(|c| c.items.get(*row)))
-        }
-        TableauError::InvalidTolerance { .. } => whole(input.tolerance.as_ref()),
-        _ => syn::Error::new(span, message),
+        Err(err) => Err(match target(&input, &err, s) {
+            Target::Coefficient(expr) => syn::Error::new_spanned(expr, err),
+            Target::Tokens(span) => syn::Error::new(span, err),
+        }),
     }
 }
 

@@ -34,7 +34,10 @@ impl MethodChoice {
             return Ok(MethodChoice::Theta(registry::theta(alpha.unwrap_or(0.5))?));
         }
         if alpha.is_some() {
-            return Err(Error::invalid("--alpha", format!("it applies to --method theta only, not to {name}")));
+            return Err(Error::invalid(
+                "--alpha",
+                format!("it applies to --method theta only, not to {name}"),
+            ));
         }
         if looks_like_path(name) {
             let path = PathBuf::from(name);

@@ -33,19 +33,32 @@ fn cells(m: &MethodInfo) -> [String; 9] {
     ]
 }
 
-/// One method as a JSON object.
-pub fn json(m: &MethodInfo) -> serde_json::Value {
-    serde_json::json!({
-        "name": m.name,
-        "family": m.family,
-        "order": m.order,
-        "stages": m.stages,
-        "explicit": m.flags.explicit,
-        "embedded_order": m.embedded_order,
-        "fsal": m.flags.fsal,
-        "symplectic": m.flags.symplectic,
-        "symmetric": m.flags.symmetric,
-    })
+/// One method as a JSON object (keys in this order).
+#[derive(serde::Serialize)]
+struct Row<'a> {
+    name: &'a str,
+    family: &'a str,
+    order: usize,
+    stages: usize,
+    explicit: bool,
+    embedded_order: Option<usize>,
+    fsal: bool,
+    symplectic: bool,
+    symmetric: bool,
+}
+
+fn json(m: &MethodInfo) -> Row<'_> {
+    Row {
+        name: &m.name,
+        family: m.family,
+        order: m.order,
+        stages: m.stages,
+        explicit: m.flags.explicit,
+        embedded_order: m.embedded_order,
+        fsal: m.flags.fsal,
+        symplectic: m.flags.symplectic,
+        symmetric: m.flags.symmetric,
+    }
 }
 
 /// Aligned columns: text left, numbers right.

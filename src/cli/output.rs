@@ -9,8 +9,10 @@ use stormer::{Error, State};
 
 /// True when the error is (caused by) writing to a pipe whose reader has gone.
 pub fn is_broken_pipe(e: &anyhow::Error) -> bool {
-    e.chain()
-        .any(|c| c.downcast_ref::<io::Error>().is_some_and(|io| io.kind() == io::ErrorKind::BrokenPipe))
+    e.chain().any(|c| {
+        c.downcast_ref::<io::Error>()
+            .is_some_and(|io| io.kind() == io::ErrorKind::BrokenPipe)
+    })
 }
 
 /// The lines of a message joined with "; ", so that every error is one line. The source
@@ -49,7 +51,13 @@ pub fn yes_no(b: bool) -> &'static str {
 pub fn file_safe(name: &str) -> String {
     let s: String = name
         .chars()
-        .map(|c| if c.is_ascii_alphanumeric() || matches!(c, '.' | '-' | '_') { c } else { '_' })
+        .map(|c| {
+            if c.is_ascii_alphanumeric() || matches!(c, '.' | '-' | '_') {
+                c
+            } else {
+                '_'
+            }
+        })
         .collect();
     s.trim_matches('_').to_string()
 }
@@ -123,7 +131,11 @@ impl<'a, S: Scene> CsvRecorder<'a, S> {
     /// and whether it is relative.
     pub fn energy_drift(&self) -> Option<(f64, bool)> {
         let e0 = self.e0?;
-        Some(if e0 == 0.0 { (self.max_de, false) } else { (self.max_de / e0.abs(), true) })
+        Some(if e0 == 0.0 {
+            (self.max_de, false)
+        } else {
+            (self.max_de / e0.abs(), true)
+        })
     }
 }
 

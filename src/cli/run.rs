@@ -4,9 +4,9 @@ use super::choice::MethodChoice;
 use super::output::{file_safe, CsvRecorder};
 use anyhow::anyhow;
 use std::io::Write;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use stormer::scenes::{self, Scene, SceneVisitor, Setup};
-use stormer::{Driver, Error, ImplicitOptions, ImplicitSolver, StepControl, Tolerances};
+use stormer::{Driver, Error, ImplicitOptions, Stats, StepControl, Tolerances};
 
 /// Arguments of `stormer run`; every value defaults to the scene file's.
 #[derive(Debug, clap::Args)]
@@ -40,7 +40,8 @@ pub struct RunArgs {
     /// How implicit methods solve their stage equations [default: fixed-point].
     #[arg(long, value_enum)]
     pub solver: Option<SolverArg>,
-    /// Iterations allowed to the implicit solver per step [default: 100].
+    /// Iterations allowed to the implicit solver per step [default: 100 fixed-point
+    /// sweeps, 20 Newton iterations].
     #[arg(long, value_name = "N")]
     pub max_iterations: Option<usize>,
     /// Weight of the theta method (`--method theta`), in [0, 1]: 1 explicit Euler,
@@ -111,14 +112,13 @@ impl SceneVisitor for Runner<'_> {
         let args = self.args;
         let method_name = args.method.as_deref().unwrap_or(&setup.run.method);
         let method = MethodChoice::resolve(method_name, args.alpha)?;
-        let implicit = ImplicitOptions {
-            solver: match args.solver {
-                Some(SolverArg::Newton) => ImplicitSolver::Newton,
-                Some(SolverArg::FixedPoint) | None => ImplicitSolver::FixedPoint,
-            },
-            max_iterations: args.max_iterations.unwrap_or(ImplicitOptions::default().max_iterations),
-            ..ImplicitOptions::default()
+        let mut implicit = match args.solver {
+            Some(SolverArg::Newton) => ImplicitOptions::newton(),
+            Some(SolverArg::FixedPoint) | None => ImplicitOptions::fixed_point(),
         };
+        if let Some(n) = args.max_iterations {
+            implicit.max_iterations = n;
+        }
         let mut stepper = method.stepper::<S>(&setup.y0, &implicit)?;
         let (t0, t_end) = (setup.run.t0, args.t_end.unwrap_or(setup.run.t_end));
         let every = args.every.unwrap_or(setup.run.every);
@@ -155,33 +155,51 @@ impl SceneVisitor for Runner<'_> {
             Err((stats, e)) => (stats, Some(e)),
         };
         if let Some(e) = error {
-            let last = csv.last_t.map_or_else(String::new, |t| format!(", the last at t = {t}"));
+            let last = csv
+                .last_t
+                .map_or_else(String::new, |t| format!(", the last at t = {t}"));
             let kept = match flushed {
-                Ok(()) => format!("{} records kept in {}{last}", csv.records, path.display()),
-                Err(f) => format!("{f}"),
+                Ok(()) => format!("; {} records kept in {}{last}", csv.records, path.display()),
+                Err(_) if matches!(e, Error::Io { .. }) => String::new(),
+                Err(f) => format!("; {f}"),
             };
-            return Err(anyhow!("{e}; stopped after {} steps; {kept}", stats.steps));
+            return Err(anyhow!("{e}; stopped after {} steps{kept}", stats.steps));
         }
         flushed?;
-        let mut parts = vec![format!("{} on {}: {} steps", method.label(), setup.name, stats.steps)];
-        if adaptive {
-            parts.push(format!("{} rejected", stats.rejected));
-        }
-        parts.push(format!("{} evaluations", stats.evaluations));
-        if stats.solver_iterations > 0 {
-            parts.push(format!("{} solver iterations", stats.solver_iterations));
-        }
-        match csv.energy_drift() {
-            Some((d, true)) => parts.push(format!("max |dE/E0| {d:.3e}")),
-            Some((d, false)) => parts.push(format!("max |dE| {d:.3e}")),
-            None => {}
-        }
-        if let Some(e) = csv.max_error {
-            parts.push(format!("max error vs exact {e:.3e}"));
-        }
-        parts.push(format!("{} records in {}", csv.records, path.display()));
+        let summary = summary(
+            &format!("{} on {}", method.label(), setup.name),
+            &stats,
+            adaptive,
+            &csv,
+            &path,
+        );
         // The summary is information, not output: a closed stderr is not an error.
-        let _ = writeln!(std::io::stderr(), "{}", parts.join(", "));
+        let _ = writeln!(std::io::stderr(), "{summary}");
         Ok(())
     }
+}
+
+/// The one-line summary of a finished run.
+fn summary<S: Scene>(what: &str, stats: &Stats, adaptive: bool, csv: &CsvRecorder<'_, S>, path: &Path) -> String {
+    let mut parts = vec![format!("{what}: {} steps", stats.steps)];
+    if adaptive {
+        parts.push(format!("{} rejected", stats.rejected));
+    }
+    parts.push(format!("{} evaluations", stats.evaluations));
+    if stats.solver_iterations > 0 {
+        parts.push(format!("{} solver iterations", stats.solver_iterations));
+    }
+    if stats.jacobians > 0 {
+        parts.push(format!("{} Jacobians", stats.jacobians));
+    }
+    match csv.energy_drift() {
+        Some((d, true)) => parts.push(format!("max |dE/E0| {d:.3e}")),
+        Some((d, false)) => parts.push(format!("max |dE| {d:.3e}")),
+        None => {}
+    }
+    if let Some(e) = csv.max_error {
+        parts.push(format!("max error vs exact {e:.3e}"));
+    }
+    parts.push(format!("{} records in {}", csv.records, path.display()));
+    parts.join(", ")
 }

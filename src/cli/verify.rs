@@ -71,12 +71,21 @@ impl Report {
             ("source", self.source.clone()),
             ("family", "butcher".to_string()),
             ("stages", t.stages().to_string()),
-            ("embedded order", t.embedded_order().map_or("none".into(), |q| q.to_string())),
+            (
+                "embedded order",
+                t.embedded_order().map_or("none".into(), |q| q.to_string()),
+            ),
             ("explicit", yes_no(f.explicit).into()),
             ("FSAL", yes_no(f.fsal).into()),
             ("symplectic", yes_no(f.symplectic).into()),
             ("symmetric", yes_no(f.symmetric).into()),
-            ("row sums", format!("c_i = sum_j a_ij, max |c_i - sum_j a_ij| = {:.1e}", self.row_sum_residual)),
+            (
+                "row sums",
+                format!(
+                    "c_i = sum_j a_ij, max |c_i - sum_j a_ij| = {:.1e}",
+                    self.row_sum_residual
+                ),
+            ),
         ];
         for (key, value) in rows {
             let _ = writeln!(out, "  {key:<15} {value}");
@@ -101,50 +110,84 @@ impl Report {
                 if c.holds() { "ok" } else { "FAILS" }
             );
         }
-        let _ = writeln!(out, "achieved order {}", Report::verdict(self.achieved, t.order(), self.limit));
+        let _ = writeln!(
+            out,
+            "achieved order {}",
+            Report::verdict(self.achieved, t.order(), self.limit)
+        );
         if let (Some((q, limit)), Some(declared)) = (self.achieved_embedded, t.embedded_order()) {
             let _ = writeln!(out, "achieved embedded order {}", Report::verdict(q, declared, limit));
         }
-        out
+        out.lines().map(|l| l.trim_end().to_string() + "\n").collect()
     }
 
-    fn json(&self) -> serde_json::Value {
+    fn json(&self) -> JsonReport<'_> {
         let t = &self.tableau;
         let f = t.flags();
-        let conditions: Vec<_> = t
-            .conditions()
-            .iter()
-            .map(|c| {
-                serde_json::json!({
-                    "order": c.order,
-                    "condition": c.text,
-                    "expected": c.expected,
-                    "got": c.got,
-                    "residual": c.residual,
-                    "tolerance": c.tolerance,
-                    "ok": c.holds(),
+        JsonReport {
+            name: t.name(),
+            source: &self.source,
+            family: "butcher",
+            declared_order: t.order(),
+            order_conditions_ok: self.conditions_ok(),
+            embedded_order: t.embedded_order(),
+            stages: t.stages(),
+            explicit: f.explicit,
+            fsal: f.fsal,
+            symplectic: f.symplectic,
+            symmetric: f.symmetric,
+            row_sum_residual: self.row_sum_residual,
+            conditions: t
+                .conditions()
+                .iter()
+                .map(|c| JsonCondition {
+                    order: c.order,
+                    condition: &c.text,
+                    expected: c.expected,
+                    got: c.got,
+                    residual: c.residual,
+                    tolerance: c.tolerance,
+                    ok: c.holds(),
                 })
-            })
-            .collect();
-        serde_json::json!({
-            "name": t.name(),
-            "source": self.source,
-            "family": "butcher",
-            "declared_order": t.order(),
-            "order_conditions_ok": self.conditions_ok(),
-            "embedded_order": t.embedded_order(),
-            "stages": t.stages(),
-            "explicit": f.explicit,
-            "fsal": f.fsal,
-            "symplectic": f.symplectic,
-            "symmetric": f.symmetric,
-            "row_sum_residual": self.row_sum_residual,
-            "conditions": conditions,
-            "achieved_order": self.achieved,
-            "achieved_order_checked_up_to": self.limit,
-            "achieved_embedded_order": self.achieved_embedded.map(|(q, _)| q),
-        })
+                .collect(),
+            achieved_order: self.achieved,
+            achieved_order_checked_up_to: self.limit,
+            achieved_embedded_order: self.achieved_embedded.map(|(q, _)| q),
+        }
     }
+}
+
+/// `verify --format json`, keys in this order.
+#[derive(serde::Serialize)]
+struct JsonReport<'a> {
+    name: &'a str,
+    source: &'a str,
+    family: &'a str,
+    declared_order: usize,
+    order_conditions_ok: bool,
+    embedded_order: Option<usize>,
+    stages: usize,
+    explicit: bool,
+    fsal: bool,
+    symplectic: bool,
+    symmetric: bool,
+    row_sum_residual: f64,
+    conditions: Vec<JsonCondition<'a>>,
+    achieved_order: usize,
+    achieved_order_checked_up_to: usize,
+    achieved_embedded_order: Option<usize>,
+}
+
+/// One order condition in `verify --format json`.
+#[derive(serde::Serialize)]
+struct JsonCondition<'a> {
+    order: usize,
+    condition: &'a str,
+    expected: f64,
+    got: f64,
+    residual: f64,
+    tolerance: f64,
+    ok: bool,
 }
 
 /// Verifies a catalog method or a method file and prints the report.

@@ -39,9 +39,9 @@ impl<T: Real, S: State<Scalar = T>> Driver<'_, T, S> {
                 reason: "it has no embedded error estimate; use fixed steps (--dt)".into(),
             });
         };
-        if !(tol.rtol >= T::zero() && tol.atol >= T::zero() && tol.rtol + tol.atol > T::zero())
-            || !(tol.rtol.is_finite() && tol.atol.is_finite())
-        {
+        let finite = tol.rtol.is_finite() && tol.atol.is_finite();
+        let valid = finite && tol.rtol >= T::zero() && tol.atol >= T::zero() && tol.rtol + tol.atol > T::zero();
+        if !valid {
             return Err(Error::invalid(
                 "tolerances",
                 "rtol and atol must be finite, >= 0 and not both 0",

@@ -31,6 +31,10 @@ pub enum StepControl<T> {
     },
 }
 
+/// How [`Driver::run_into`] ended: the statistics and the located stop event, or the
+/// statistics up to the failure and the error.
+pub type RunOutcome<T, S> = Result<(Stats, Option<StopEvent<T, S>>), (Stats, Error)>;
+
 /// A stop condition `g(t, y)`: the run ends where `g` changes sign.
 pub type StopFn<'a, T, S> = Box<dyn Fn(T, &S) -> T + 'a>;
 
@@ -106,6 +110,7 @@ impl<'a, T: Real, S: State<Scalar = T>> Driver<'a, T, S> {
     }
 
     /// Integrates from `(t0, y0)` to `t_end`, keeping the records in memory.
+    #[allow(clippy::result_large_err)] // the error carries everything recorded before it, by design
     pub fn run<P, St>(
         &self,
         p: &P,
@@ -135,15 +140,7 @@ impl<'a, T: Real, S: State<Scalar = T>> Driver<'a, T, S> {
     /// Integrates, handing each record to `out` as it is made (e.g. a CSV stream).
     /// On failure returns the statistics so far and the error; `out` has every record
     /// made before it.
-    pub fn run_into<P, St, R>(
-        &self,
-        p: &P,
-        stepper: &mut St,
-        t0: T,
-        y0: &S,
-        t_end: T,
-        out: &mut R,
-    ) -> Result<(Stats, Option<StopEvent<T, S>>), (Stats, Error)>
+    pub fn run_into<P, St, R>(&self, p: &P, stepper: &mut St, t0: T, y0: &S, t_end: T, out: &mut R) -> RunOutcome<T, S>
     where
         P: Problem<Scalar = T, State = S>,
         St: Stepper<P> + ?Sized,

@@ -25,6 +25,8 @@ pub struct TableauData {
     pub b_hat: Option<&'static [f64]>,
     /// DOP853's second, third-order embedded weights.
     pub b_hat3: Option<&'static [f64]>,
+    /// The tolerance factor of the order-condition checks, when the declaration set one.
+    pub tolerance: Option<f64>,
     /// Flags derived from the data at compile time.
     pub flags: Flags,
 }

@@ -34,6 +34,7 @@ use stormer_order::{Condition, TableauSpec, ValidTableau};
 pub struct Tableau {
     name: String,
     valid: ValidTableau,
+    tolerance: Option<f64>,
 }
 
 impl Tableau {
@@ -41,7 +42,11 @@ impl Tableau {
     pub fn new(name: impl Into<String>, spec: &TableauSpec) -> Result<Self, Error> {
         let name = name.into();
         match stormer_order::validate(spec) {
-            Ok(valid) => Ok(Tableau { name, valid }),
+            Ok(valid) => Ok(Tableau {
+                name,
+                valid,
+                tolerance: spec.tolerance,
+            }),
             Err(e) => Err(Error::InvalidMethod {
                 name,
                 reason: e.to_string(),
@@ -61,7 +66,7 @@ impl Tableau {
             b_hat: data.b_hat.map(<[f64]>::to_vec),
             embedded_order: data.embedded_order,
             b_hat3: data.b_hat3.map(<[f64]>::to_vec),
-            tolerance: None,
+            tolerance: data.tolerance,
         };
         Tableau::new(data.name, &spec)
     }
@@ -163,6 +168,11 @@ impl Tableau {
     pub fn conditions(&self) -> &[Condition] {
         &self.valid.conditions
     }
+    /// The tolerance factor used by the checks (`None`: the default).
+    pub fn tolerance(&self) -> Option<f64> {
+        self.tolerance
+    }
+
     /// The same tableau propagating its embedded solution (`b := b_hat`), e.g. to measure
     /// the embedded order. `None` without `b_hat`.
     pub fn embedded_as_main(&self) -> Option<Result<Tableau, Error>> {
@@ -176,7 +186,7 @@ impl Tableau {
             b_hat: None,
             embedded_order: None,
             b_hat3: None,
-            tolerance: None,
+            tolerance: self.tolerance,
         };
         Some(Tableau::new(format!("{} (embedded)", self.name), &spec))
     }

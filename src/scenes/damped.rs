@@ -117,6 +117,7 @@ impl Scene for DampedOscillator {
 }
 
 #[cfg(test)]
+#[allow(clippy::float_cmp)] // values read from a file or computed exactly are compared exactly
 mod tests {
     use super::*;
     use crate::{catalog::Dop853, Driver, ExplicitRk};

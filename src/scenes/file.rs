@@ -142,7 +142,9 @@ struct Header {
 
 /// The model named by a scene file (syntax errors are reported here, with their line).
 pub(super) fn model_name(src: &Source<'_>) -> Result<Spanned<String>, Error> {
-    toml::from_str::<Header>(src.text).map(|h| h.model).map_err(|e| src.toml_error(&e))
+    toml::from_str::<Header>(src.text)
+        .map(|h| h.model)
+        .map_err(|e| src.toml_error(&e))
 }
 
 /// Second pass: the whole file read as a scene of model `S`.

@@ -93,14 +93,12 @@ impl Scene for Harmonic {
 
     fn exact(&self, t0: f64, y0: &[f64; 2], t: f64) -> Option<[f64; 2]> {
         let (s, c) = (self.w0 * (t - t0)).sin_cos();
-        Some([
-            y0[0] * c + y0[1] / self.w0 * s,
-            y0[1] * c - self.w0 * y0[0] * s,
-        ])
+        Some([y0[0] * c + y0[1] / self.w0 * s, y0[1] * c - self.w0 * y0[0] * s])
     }
 }
 
 #[cfg(test)]
+#[allow(clippy::float_cmp)] // values read from a file or computed exactly are compared exactly
 mod tests {
     use super::*;
     use crate::{catalog::Dop853, Driver, ExplicitRk};

@@ -76,6 +76,7 @@ impl Scene for Pendulum {
 }
 
 #[cfg(test)]
+#[allow(clippy::float_cmp)] // values read from a file or computed exactly are compared exactly
 mod tests {
     use super::*;
     use crate::catalog::{Dop853, Euler, Rk4};
@@ -87,7 +88,10 @@ mod tests {
     fn crossing<M: ExplicitMethod>(h: f64, g: fn(f64, &[f64; 2]) -> f64) -> f64 {
         let y0 = [FRAC_PI_4, 0.0];
         let mut st = ExplicitRk::<M, [f64; 2]>::new(&y0);
-        let sol = Driver::fixed(h).stop_when(g).run(&Pendulum, &mut st, 0.0, &y0, 60.0).unwrap();
+        let sol = Driver::fixed(h)
+            .stop_when(g)
+            .run(&Pendulum, &mut st, 0.0, &y0, 60.0)
+            .unwrap();
         sol.stopped.expect("the pendulum swings back").t
     }
 
@@ -104,10 +108,18 @@ mod tests {
     fn measured_period_matches() {
         // omega = 0 at the start (not a crossing), next at the far turning point: T/2.
         let half = crossing::<Dop853>(0.01, |_, y| y[1]);
-        assert!((2.0 * half - PENDULUM_PERIOD_45_DEGREES).abs() < 1e-9, "dop853: T = {}", 2.0 * half);
+        assert!(
+            (2.0 * half - PENDULUM_PERIOD_45_DEGREES).abs() < 1e-9,
+            "dop853: T = {}",
+            2.0 * half
+        );
         // theta crosses zero first at T/4.
         let quarter = crossing::<Rk4>(1e-3, |_, y| y[0]);
-        assert!((4.0 * quarter - PENDULUM_PERIOD_45_DEGREES).abs() < 1e-9, "rk4: T = {}", 4.0 * quarter);
+        assert!(
+            (4.0 * quarter - PENDULUM_PERIOD_45_DEGREES).abs() < 1e-9,
+            "rk4: T = {}",
+            4.0 * quarter
+        );
     }
 
     #[test]

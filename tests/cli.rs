@@ -1,0 +1,458 @@
+//! The `stormer` binary, run as a user runs it.
+
+// Record times and bit patterns are compared exactly on purpose.
+#![allow(clippy::float_cmp)]
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output, Stdio};
+
+/// A fresh directory for one test (the binary writes `out/` into its working directory).
+fn workdir(name: &str) -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("cli").join(name);
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn stormer(dir: &Path, args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_stormer"))
+        .args(args)
+        .current_dir(dir)
+        .output()
+        .expect("the binary runs")
+}
+
+fn stderr(out: &Output) -> String {
+    String::from_utf8_lossy(&out.stderr).into_owned()
+}
+
+fn stdout(out: &Output) -> String {
+    String::from_utf8_lossy(&out.stdout).into_owned()
+}
+
+/// Succeeds, with a one-line summary on stderr.
+fn assert_ok(out: &Output) {
+    assert!(out.status.success(), "failed: {}", stderr(out));
+    assert!(!stderr(out).contains("panicked"));
+}
+
+/// Exit code 1, exactly one line on stderr, `error: ` and `needle` in it, no panic.
+fn assert_error(out: &Output, needle: &str) {
+    let err = stderr(out);
+    assert_eq!(out.status.code(), Some(1), "exit code; stderr: {err}");
+    assert!(!err.contains("panicked"), "{err}");
+    assert_eq!(err.lines().count(), 1, "one line: {err}");
+    assert!(err.starts_with("error: "), "{err}");
+    assert!(err.contains(needle), "expected {needle:?} in: {err}");
+}
+
+/// The CSV as (header, rows of numbers).
+fn read_csv(path: &Path) -> (Vec<String>, Vec<Vec<f64>>) {
+    let text = std::fs::read_to_string(path).unwrap();
+    let mut lines = text.lines();
+    let header = lines.next().unwrap().split(',').map(String::from).collect();
+    let rows = lines
+        .map(|l| l.split(',').map(|x| x.parse::<f64>().unwrap()).collect())
+        .collect();
+    (header, rows)
+}
+
+#[test]
+fn damped_oscillator_reproduces_the_exact_solution() {
+    let dir = workdir("damped");
+    let out = stormer(
+        &dir,
+        &[
+            "run",
+            "damped-oscillator",
+            "--method",
+            "rk4",
+            "--dt",
+            "0.001",
+            "--t-end",
+            "10",
+        ],
+    );
+    assert_ok(&out);
+    let summary = stderr(&out);
+    assert!(
+        summary.contains("10000 steps") && summary.contains("max error vs exact"),
+        "{summary}"
+    );
+    assert!(!summary.contains("dE"), "no energy for a damped oscillator: {summary}");
+    let (header, rows) = read_csv(&dir.join("out/damped-oscillator-rk4.csv"));
+    assert_eq!(header, ["t", "x", "v"]);
+    assert_eq!(rows.len(), 10001);
+    // SCENES.md 2, written here as a phase-shifted cosine: x = A e^{-g t} cos(wd t - phi).
+    let w0 = (100.0f64 / 5.0).sqrt();
+    let q = w0;
+    let (x0, v0) = (10.0f64, 0.0f64);
+    let g = w0 / (2.0 * q);
+    let wd = (w0 * w0 - g * g).sqrt();
+    let (amplitude, phi) = (x0.hypot((v0 + g * x0) / wd), ((v0 + g * x0) / wd).atan2(x0));
+    let mut worst = 0.0f64;
+    for row in &rows {
+        let t = row[0];
+        let (c, s) = ((wd * t - phi).cos(), (wd * t - phi).sin());
+        let x = amplitude * (-g * t).exp() * c;
+        let v = -amplitude * (-g * t).exp() * (g * c + wd * s);
+        worst = worst.max((row[1] - x).abs()).max((row[2] - v).abs());
+    }
+    assert!(worst < 1e-9, "max error {worst:e}");
+    assert!(rows.last().unwrap()[0] == 10.0);
+}
+
+#[test]
+fn adaptive_dop853_on_the_harmonic_oscillator() {
+    let dir = workdir("adaptive");
+    let csv = dir.join("h.csv");
+    let out = stormer(
+        &dir,
+        &[
+            "run",
+            "harmonic",
+            "--method",
+            "dop853",
+            "--rtol",
+            "1e-10",
+            "--atol",
+            "1e-12",
+            "--out",
+            csv.to_str().unwrap(),
+        ],
+    );
+    assert_ok(&out);
+    assert!(stderr(&out).contains("rejected"), "{}", stderr(&out));
+    let (header, rows) = read_csv(&csv);
+    assert_eq!(header, ["t", "x", "v", "energy"]);
+    assert!(
+        rows.len() > 10 && rows.len() < 2000,
+        "adaptive steps are large: {}",
+        rows.len()
+    );
+    let w0 = 20f64.sqrt();
+    let mut worst = 0.0f64;
+    for row in &rows {
+        let (x, v) = (10.0 * (w0 * row[0]).cos(), -10.0 * w0 * (w0 * row[0]).sin());
+        worst = worst.max((row[1] - x).abs()).max((row[2] - v).abs());
+    }
+    assert!(worst < 1e-8, "max error {worst:e}");
+    assert_eq!(rows.last().unwrap()[0], 10.0);
+}
+
+#[test]
+fn csv_round_trip_is_bitwise() {
+    use stormer::scenes::Pendulum;
+    use stormer::{registry, Driver, ImplicitOptions};
+    let dir = workdir("roundtrip");
+    let out = stormer(
+        &dir,
+        &[
+            "run", "pendulum", "--method", "dop853", "--dt", "0.03", "--t-end", "7", "--every", "7",
+        ],
+    );
+    assert_ok(&out);
+    let (header, rows) = read_csv(&dir.join("out/pendulum-dop853.csv"));
+    assert_eq!(header, ["t", "theta", "omega", "energy"]);
+    let y0 = [std::f64::consts::FRAC_PI_4, 0.0];
+    let mut stepper = registry::stepper::<Pendulum>("dop853", &y0, &ImplicitOptions::default()).unwrap();
+    let sol = Driver::fixed(0.03)
+        .every(7)
+        .run(&Pendulum, &mut stepper, 0.0, &y0, 7.0)
+        .unwrap();
+    assert_eq!(rows.len(), sol.t.len());
+    for (i, row) in rows.iter().enumerate() {
+        let expected = [sol.t[i], sol.y[i][0], sol.y[i][1], sol.energy[i]];
+        for (got, want) in row.iter().zip(expected) {
+            assert_eq!(got.to_bits(), want.to_bits(), "record {i}: {got:?} != {want:?}");
+        }
+    }
+}
+
+#[test]
+fn methods_json_lists_the_catalog() {
+    let dir = workdir("methods");
+    let out = stormer(&dir, &["methods", "--format", "json"]);
+    assert_ok(&out);
+    let list: serde_json::Value = serde_json::from_str(&stdout(&out)).unwrap();
+    let list = list.as_array().unwrap();
+    assert_eq!(list.len(), 31);
+    for m in list {
+        for key in [
+            "name",
+            "family",
+            "order",
+            "stages",
+            "explicit",
+            "embedded_order",
+            "fsal",
+            "symplectic",
+            "symmetric",
+        ] {
+            assert!(m.get(key).is_some(), "{key} missing in {m}");
+        }
+    }
+    let rk4 = list.iter().find(|m| m["name"] == "rk4").unwrap();
+    assert_eq!(rk4["order"], 4);
+    assert!(rk4["embedded_order"].is_null());
+    let dop853 = list.iter().find(|m| m["name"] == "dop853").unwrap();
+    assert_eq!(
+        (dop853["embedded_order"].as_u64(), dop853["fsal"].as_bool()),
+        (Some(5), Some(true))
+    );
+    let table = stormer(&dir, &["methods"]);
+    assert_ok(&table);
+    let text = stdout(&table);
+    assert!(text.lines().next().unwrap().starts_with("name"));
+    assert_eq!(text.lines().count(), 32);
+}
+
+#[test]
+fn a_closed_pipe_is_not_an_error() {
+    // `stormer methods | head -0`: the reader is gone before the first write.
+    for args in [&["methods"][..], &["verify", "dop853"], &["scene", "show", "pendulum"]] {
+        let mut child = Command::new(env!("CARGO_BIN_EXE_stormer"))
+            .args(args)
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped())
+            .spawn()
+            .unwrap();
+        drop(child.stdout.take());
+        let out = child.wait_with_output().unwrap();
+        assert!(out.status.success(), "{args:?}: {}", stderr(&out));
+        assert!(stderr(&out).is_empty(), "{args:?}: {}", stderr(&out));
+    }
+}
+
+#[test]
+fn verify_rk4_json() {
+    let dir = workdir("verify");
+    let out = stormer(&dir, &["verify", "rk4", "--format", "json"]);
+    assert_ok(&out);
+    let v: serde_json::Value = serde_json::from_str(&stdout(&out)).unwrap();
+    assert_eq!(v["name"], "rk4");
+    assert_eq!(v["declared_order"], 4);
+    assert_eq!(v["order_conditions_ok"], true);
+    assert_eq!(v["achieved_order"], 4, "order 5 conditions fail: the order is exact");
+    assert_eq!(v["stages"], 4);
+    assert_eq!(v["explicit"], true);
+    assert!(v["embedded_order"].is_null());
+    let conditions = v["conditions"].as_array().unwrap();
+    assert_eq!(conditions.len(), 8, "the 8 rooted trees up to order 4");
+    assert!(conditions
+        .iter()
+        .all(|c| c["ok"] == true && c["residual"].as_f64().unwrap() < 1e-15));
+    for key in ["fsal", "symplectic", "symmetric"] {
+        assert_eq!(v[key], false, "{key}");
+    }
+    // The text form, and a symplectic method.
+    let text = stdout(&stormer(&dir, &["verify", "gauss-legendre4"]));
+    assert!(text.contains("symplectic      yes"), "{text}");
+    assert!(
+        text.contains("the order 5 conditions fail, so the order is exactly 4"),
+        "{text}"
+    );
+}
+
+#[test]
+fn bad_method_files_are_one_line_errors() {
+    let dir = workdir("bad-methods");
+    let files = [
+        ("shape.toml", "name = \"shape\"\norder = 2\na = [[\"0\", \"0\"], [\"1\", \"0\"], [\"1\", \"1\"]]\nb = [\"1/2\", \"1/2\"]\n", "3 rows"),
+        ("abc.toml", "name = \"abc\"\norder = 2\na = [[\"0\", \"0\"], [\"abc\", \"0\"]]\nb = [\"1/2\", \"1/2\"]\n", "abc"),
+        (
+            "rk4-order5.toml",
+            "name = \"rk4_claims_5\"\norder = 5\nc = [\"0\", \"1/2\", \"1/2\", \"1\"]\n\
+             a = [[\"0\"], [\"1/2\"], [\"0\", \"1/2\"], [\"0\", \"0\", \"1\"]]\nb = [\"1/6\", \"1/3\", \"1/3\", \"1/6\"]\n",
+            "order 5 condition",
+        ),
+        ("syntax.toml", "name = \"x\"\norder = 2\na = [[0, 0], [1, 0]\nb = [0.5, 0.5]\n", "line 4"),
+        ("unknown-key.toml", "name = \"x\"\norder = 1\na = [[0]]\nb = [1]\nweights = 2\n", "weights"),
+    ];
+    for (file, text, needle) in files {
+        std::fs::write(dir.join(file), text).unwrap();
+        assert_error(&stormer(&dir, &["verify", file]), needle);
+        assert_error(&stormer(&dir, &["verify", file, "--format", "json"]), needle);
+        assert_error(&stormer(&dir, &["run", "harmonic", "--method", file]), needle);
+    }
+    assert_error(&stormer(&dir, &["verify", "missing.toml"]), "cannot read");
+}
+
+#[test]
+fn a_method_file_runs() {
+    let dir = workdir("method-file");
+    let heun = "name = \"my_heun\"\norder = 2\nc = [\"0\", \"1\"]\na = [[\"0\", \"0\"], [\"1\", \"0\"]]\nb = [\"1/2\", \"1/2\"]\n";
+    std::fs::write(dir.join("heun.toml"), heun).unwrap();
+    let v = stdout(&stormer(&dir, &["verify", "heun.toml", "--format", "json"]));
+    let v: serde_json::Value = serde_json::from_str(&v).unwrap();
+    assert_eq!(
+        (v["declared_order"].as_u64(), v["achieved_order"].as_u64()),
+        (Some(2), Some(2))
+    );
+    let out = stormer(&dir, &["run", "harmonic", "--method", "heun.toml", "--t-end", "1"]);
+    assert_ok(&out);
+    assert!(dir.join("out/harmonic-my_heun.csv").is_file());
+}
+
+#[test]
+fn method_names() {
+    let dir = workdir("names");
+    // `-` and `_` are both accepted, and optional when unambiguous.
+    assert_ok(&stormer(
+        &dir,
+        &["run", "harmonic", "--method", "rk-4", "--t-end", "0.1"],
+    ));
+    assert_ok(&stormer(
+        &dir,
+        &["run", "harmonic", "--method", "gauss-legendre4", "--t-end", "0.01"],
+    ));
+    assert_ok(&stormer(&dir, &["verify", "Dormand-Prince5"]));
+    assert_error(
+        &stormer(&dir, &["run", "harmonic", "--method", "rk5", "--t-end", "0.1"]),
+        "did you mean",
+    );
+    assert_error(&stormer(&dir, &["verify", "dopri853"]), "did you mean");
+    assert_error(
+        &stormer(&dir, &["run", "harmonic", "--method", "rk4", "--alpha", "0.3"]),
+        "--alpha",
+    );
+    assert_ok(&stormer(
+        &dir,
+        &[
+            "run", "harmonic", "--method", "theta", "--alpha", "0.5", "--dt", "0.01", "--t-end", "0.1",
+        ],
+    ));
+}
+
+#[test]
+fn arguments_out_of_their_domain() {
+    let dir = workdir("arguments");
+    let cases: [(&[&str], &str); 11] = [
+        (&["--dt", "0"], "--dt"),
+        (&["--dt", "-1"], "--dt"),
+        (&["--dt=-1"], "--dt"),
+        (&["--dt", "nan"], "--dt"),
+        (&["--dt", "inf"], "--dt"),
+        (&["--t-end", "inf"], "--t-end"),
+        (&["--t-end", "nan"], "--t-end"),
+        (&["--every", "0"], "--every"),
+        (&["--rtol", "-1", "--method", "dop853"], "--rtol"),
+        (&["--atol", "nan", "--method", "dop853"], "--atol"),
+        (&["--method", "theta", "--alpha", "1.5"], "--alpha"),
+    ];
+    for (args, needle) in cases {
+        let mut all = vec!["run", "harmonic"];
+        all.extend_from_slice(args);
+        assert_error(&stormer(&dir, &all), needle);
+    }
+    // Adaptive steps need an embedded pair.
+    assert_error(
+        &stormer(&dir, &["run", "harmonic", "--method", "rk4", "--rtol", "1e-6"]),
+        "embedded",
+    );
+    // A usage error is clap's, with its exit code 2.
+    let usage = stormer(&dir, &["run", "harmonic", "--dt", "abc"]);
+    assert_eq!(usage.status.code(), Some(2));
+    assert!(!stderr(&usage).contains("panicked"));
+    assert!(
+        !dir.join("out").exists(),
+        "nothing is written when the arguments are wrong"
+    );
+}
+
+#[test]
+fn malformed_scene_files() {
+    let dir = workdir("bad-scenes");
+    let good = stdout(&stormer(&dir, &["scene", "show", "damped-oscillator"]));
+    let edits: [(&str, &str, &str, &str); 7] = [
+        ("syntax.toml", "[initial]", "[initial", "line 12"),
+        (
+            "unknown-key.toml",
+            "every = 1",
+            "every = 1\nsteps = 5",
+            "unknown field `steps`",
+        ),
+        ("wrong-type.toml", "x = 10.0", "x = \"ten\"", "invalid type"),
+        (
+            "negative-q.toml",
+            "Q = 4.47213595499958",
+            "Q = -1.0",
+            "parameters.Q must be > 0",
+        ),
+        ("zero-dt.toml", "dt = 0.001", "dt = 0.0", "run.dt must be > 0"),
+        (
+            "nan-end.toml",
+            "t_end = 10.0",
+            "t_end = nan",
+            "run.t_end must be a finite number",
+        ),
+        (
+            "unknown-model.toml",
+            "model = \"damped-oscillator\"",
+            "model = \"kepler\"",
+            "unknown model",
+        ),
+    ];
+    for (file, from, to, needle) in edits {
+        assert!(good.contains(from), "{from}");
+        std::fs::write(dir.join(file), good.replacen(from, to, 1)).unwrap();
+        assert_error(&stormer(&dir, &["run", file]), needle);
+    }
+    assert_error(&stormer(&dir, &["run", "no-such-scene"]), "not a built-in scene");
+    assert_error(&stormer(&dir, &["run", "missing.toml"]), "cannot read");
+    assert_error(&stormer(&dir, &["scene", "show", "kepler"]), "not a built-in scene");
+}
+
+#[test]
+fn a_copied_scene_file_runs() {
+    let dir = workdir("copied-scene");
+    let show = stormer(&dir, &["scene", "show", "pendulum"]);
+    assert_ok(&show);
+    let text = stdout(&show).replace("t_end = 60.0", "t_end = 3.0");
+    std::fs::write(dir.join("my-pendulum.toml"), text).unwrap();
+    let out = stormer(&dir, &["run", "my-pendulum.toml", "--method", "dormand-prince5"]);
+    assert_ok(&out);
+    let (_, rows) = read_csv(&dir.join("out/my-pendulum-dormand_prince5.csv"));
+    assert_eq!(rows.last().unwrap()[0], 3.0);
+    let list = stdout(&stormer(&dir, &["scene", "list"]));
+    for name in ["pendulum", "harmonic", "damped-oscillator"] {
+        assert!(list.contains(name), "{list}");
+    }
+}
+
+#[test]
+fn a_failing_run_keeps_its_records() {
+    let dir = workdir("failing");
+    // Explicit Euler at h w0 = 4.5 grows by |1 + i h w0| = 4.6 per step: overflow.
+    let out = stormer(
+        &dir,
+        &["run", "harmonic", "--method", "euler", "--dt", "1", "--t-end", "10000"],
+    );
+    assert_error(&out, "non-finite");
+    assert!(
+        stderr(&out).contains("records kept in out/harmonic-euler.csv"),
+        "{}",
+        stderr(&out)
+    );
+    let (_, rows) = read_csv(&dir.join("out/harmonic-euler.csv"));
+    assert!(rows.len() > 100 && rows.len() < 10000);
+    assert!(
+        rows.iter().all(|r| r[1].is_finite() && r[2].is_finite()),
+        "states recorded are finite"
+    );
+    // An implicit solver that cannot converge is an error too, never a wrong number.
+    let out = stormer(
+        &dir,
+        &[
+            "run",
+            "harmonic",
+            "--method",
+            "backward-euler",
+            "--dt",
+            "1",
+            "--max-iterations",
+            "20",
+        ],
+    );
+    assert_error(&out, "did not converge");
+}
