@@ -9,6 +9,8 @@
 //!
 //! Run: `cargo bench --bench rk4_pendulum`
 
+#![allow(missing_docs)] // criterion_group! generates an undocumented function
+
 use std::hint::black_box;
 use std::time::Instant;
 
@@ -130,7 +132,8 @@ fn interleaved_ratios() {
         }
         start.elapsed().as_secs_f64() * 1e9 / (REPEAT * STEPS) as f64
     };
-    let kernels: [(&str, Box<dyn Fn() -> [f64; 2]>); 3] = [
+    type Kernel<'a> = (&'static str, Box<dyn Fn() -> [f64; 2] + 'a>);
+    let kernels: [Kernel; 3] = [
         (
             "hand_written",
             Box::new(|| hand_written(STEPS, black_box(H), black_box(Y0))),

@@ -112,9 +112,9 @@ impl ImplicitOptions {
     /// converges linearly at a rate `θ` set by how much `J` changes over the step, so it
     /// needs about `16 / -log10(θ)` iterations. On smooth problems at moderate `h`
     /// (`θ ~ 1e-3`) that is 2 to 6 (the tests measure 2 to 4 per step on average); a
-    /// coarse step of a strongly nonlinear problem (`θ ~ 0.3`, Hairer's 4-D problem at
-    /// `h = 0.25`) takes 25 to 30. The cap of 50 covers `θ` up to `~0.5`: beyond, the step
-    /// is too large for a Jacobian frozen at its start.
+    /// coarse step of a strongly nonlinear problem takes more (Hairer's 4-D problem at
+    /// `h = 0.25`: 12 to 21 iterations to round-off). The cap of 50 covers `θ` up to
+    /// `~0.5`: beyond, the step is too large for a Jacobian frozen at its start.
     pub fn newton() -> Self {
         ImplicitOptions {
             solver: ImplicitSolver::Newton,
@@ -140,13 +140,24 @@ struct Stop<T> {
 }
 
 impl<T: Real> Stop<T> {
-    fn new(tol: T, y: &[T]) -> Self {
-        let sigma = T::one() + y.iter().fold(T::zero(), |m, x| m.max(x.abs()));
+    /// The rule's factors for `σ = 1` (converted to `T` once, when the stepper is built).
+    fn factors(tol: T) -> Self {
         let eps = T::default_epsilon();
         Stop {
-            tol: tol * sigma,
-            round_off: lit::<T>(100.0) * eps * sigma,
-            negligible: lit::<T>(0.01) * eps * sigma,
+            tol,
+            round_off: lit::<T>(100.0) * eps,
+            negligible: lit::<T>(0.01) * eps,
+            previous: None,
+        }
+    }
+
+    /// The rule for a step from `y`: the factors times `σ = 1 + max|y|`.
+    fn for_step(&self, y: &[T]) -> Self {
+        let sigma = T::one() + y.iter().fold(T::zero(), |m, x| m.max(x.abs()));
+        Stop {
+            tol: self.tol * sigma,
+            round_off: self.round_off * sigma,
+            negligible: self.negligible * sigma,
             previous: None,
         }
     }
@@ -278,8 +289,10 @@ struct Extrapolation<S: State> {
 pub struct ImplicitRk<S: State> {
     info: MethodInfo,
     options: ImplicitOptions,
-    /// The tolerance factor (`options.tol`, or 0).
-    tol: S::Scalar,
+    /// The stopping rule's factors (`σ = 1`).
+    stop: Stop<S::Scalar>,
+    /// Largest step ratio `h / h_old` for which the starting guess is extrapolated.
+    max_ratio: S::Scalar,
     error_order: Option<usize>,
     /// Rows of `A` without zeros (an empty row is an explicit stage).
     rows: Vec<Row<S::Scalar>>,
@@ -361,7 +374,8 @@ impl<S: State> ImplicitRk<S> {
         ImplicitRk {
             info: tableau.info(),
             options,
-            tol: effective_tol(options.tol),
+            stop: Stop::factors(effective_tol(options.tol)),
+            max_ratio: lit(2.0),
             error_order: tableau.b_hat().and(tableau.embedded_order()),
             rows: a.chunks(s).map(|r| row(r.iter().copied())).collect(),
             a: a.iter().map(|&x| lit(x)).collect(),
@@ -406,14 +420,15 @@ impl<S: State> ImplicitRk<S> {
     fn start(&mut self, h: S::Scalar) {
         let s = self.z.len();
         for z in &mut self.z {
-            z.scale(S::Scalar::zero());
+            // Not `scale(0)`: a failed step may have left NaN behind.
+            z.as_mut_slice().fill(S::Scalar::zero());
         }
         let g = &mut self.guess;
         if !(g.enabled && g.valid && !g.nodes.is_empty()) {
             return;
         }
         let r = h / g.h_previous;
-        if !(r > S::Scalar::zero() && r <= lit(2.0)) {
+        if !(r > S::Scalar::zero() && r <= self.max_ratio) {
             return;
         }
         if g.ratio != Some(r) {
@@ -649,7 +664,7 @@ impl<P: Problem> Stepper<P> for ImplicitRk<P::State> {
     ) -> Result<Option<P::Scalar>, Error> {
         self.last_h = None;
         self.start(h);
-        let stop = Stop::new(self.tol, y.as_slice());
+        let stop = self.stop.for_step(y.as_slice());
         if self.rows.iter().all(Vec::is_empty) {
             // An explicit tableau with all rows zero (explicit Euler): nothing to solve.
             self.explicit_stages(p, t, y, None);
@@ -693,5 +708,126 @@ impl<P: Problem> Stepper<P> for ImplicitRk<P::State> {
 
     fn counters(&self) -> Counters {
         self.counters
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::catalog::*;
+    use crate::ButcherMethod;
+
+    fn stepper<M: ButcherMethod>(solver: ImplicitSolver) -> ImplicitRk<[f64; 1]> {
+        let options = ImplicitOptions {
+            solver,
+            ..ImplicitOptions::default()
+        };
+        ImplicitRk::new(&Tableau::from_data(&M::DATA).unwrap(), &[0.0], options)
+    }
+
+    fn update<M: ButcherMethod>(solver: ImplicitSolver) -> &'static str {
+        match stepper::<M>(solver).update {
+            Update::LastStage => "last stage",
+            Update::Weights => "weights",
+            Update::Inverse(_) => "inverse",
+        }
+    }
+
+    #[test]
+    fn the_final_update_follows_the_tableau() {
+        use ImplicitSolver::{FixedPoint, Newton};
+        for solver in [FixedPoint, Newton] {
+            assert_eq!(update::<BackwardEuler>(solver), "last stage");
+            assert_eq!(update::<Trapezoidal>(solver), "last stage");
+            assert_eq!(update::<RadauIia3>(solver), "last stage");
+            assert_eq!(update::<RadauIia5>(solver), "last stage");
+            assert_eq!(update::<LobattoIiia4>(solver), "last stage");
+            assert_eq!(update::<LobattoIiic4>(solver), "last stage");
+            // A singular (last column zero) and not stiffly accurate.
+            assert_eq!(update::<LobattoIiib4>(solver), "weights");
+        }
+        for gauss in [
+            update::<ImplicitMidpoint>,
+            update::<GaussLegendre4>,
+            update::<GaussLegendre6>,
+        ] {
+            assert_eq!(gauss(FixedPoint), "weights");
+            assert_eq!(gauss(Newton), "inverse");
+        }
+        // d = b^T A^-1 = [-sqrt 3, sqrt 3] for the two-stage Gauss method, 2 for the midpoint rule.
+        let Update::Inverse(d) = stepper::<GaussLegendre4>(Newton).update else {
+            unreachable!()
+        };
+        assert!(
+            (d[0] + 3f64.sqrt()).abs() < 1e-14 && (d[1] - 3f64.sqrt()).abs() < 1e-14,
+            "{d:?}"
+        );
+        let Update::Inverse(d) = stepper::<ImplicitMidpoint>(Newton).update else {
+            unreachable!()
+        };
+        assert!((d[0] - 2.0).abs() < 1e-15);
+    }
+
+    #[test]
+    fn the_extrapolated_guess_is_exact_on_polynomials_of_the_stage_degree() {
+        // Radau IIA5 (nodes 0, c1, c2, 1): if Z_j = p(c_j) for a cubic p with p(0) = 0,
+        // the guess for the next step is p(1 + c_i r) - p(1) exactly (up to rounding).
+        let mut st = stepper::<RadauIia5>(ImplicitSolver::FixedPoint);
+        let p = |x: f64| 0.3 * x - 0.2 * x * x + 0.05 * x * x * x;
+        let c = [st.c[0], st.c[1], st.c[2]];
+        for j in 0..3 {
+            st.guess.previous[j] = [p(c[j])];
+        }
+        st.guess.h_previous = 0.1;
+        st.guess.valid = true;
+        for h in [0.1, 0.05, 0.2] {
+            st.start(h);
+            let r = h / 0.1;
+            for i in 0..3 {
+                let expected = p(1.0 + c[i] * r) - p(1.0);
+                assert!(
+                    (st.z[i][0] - expected).abs() < 1e-14,
+                    "r = {r}, stage {i}: {} vs {expected}",
+                    st.z[i][0]
+                );
+            }
+        }
+        // Beyond the ratio limit, or after reset: zero.
+        st.start(0.5);
+        assert!(st.z.iter().all(|z| z[0] == 0.0));
+        Stepper::<Unit>::reset(&mut st);
+        st.start(0.1);
+        assert!(st.z.iter().all(|z| z[0] == 0.0));
+    }
+
+    struct Unit;
+    impl Problem for Unit {
+        type Scalar = f64;
+        type State = [f64; 1];
+        fn rhs(&self, _t: f64, _y: &[f64; 1], dy: &mut [f64; 1]) {
+            dy[0] = 1.0;
+        }
+    }
+
+    #[test]
+    fn the_stopping_rule() {
+        let factors = Stop::factors(0.0);
+        // A contracting iteration stops once the remaining error is below eps sigma / 100.
+        let mut stop = factors.for_step(&[1.0]);
+        assert!(!stop.converged(1e-3));
+        assert!(!stop.converged(1e-6)); // theta = 1e-3: remaining ~1e-9
+        assert!(stop.converged(1e-16)); // theta = 1e-10: remaining ~1e-26
+                                        // Noise: an update that stops decreasing at round-off level.
+        let mut stop = factors.for_step(&[1.0]);
+        assert!(!stop.converged(1e-15));
+        assert!(stop.converged(2e-15));
+        // ... but not far above it.
+        let mut stop = factors.for_step(&[1.0]);
+        assert!(!stop.converged(1e-6));
+        assert!(!stop.converged(2e-6));
+        // A tolerance is a plain threshold on the update, relative to 1 + max|y|.
+        let mut stop = Stop::factors(1e-8).for_step(&[-99.0]);
+        assert!(!stop.converged(2e-6));
+        assert!(stop.converged(1e-6));
     }
 }
