@@ -254,6 +254,23 @@ fn gauss_methods_keep_the_oscillator_invariant_f64() {
 }
 
 #[test]
+fn a_solver_stopped_early_drifts() {
+    // Why the default iterates to round-off: the midpoint rule with fixed-point iteration
+    // stopped at tol = 1e-12 leaves an error of the same sign every step, and the
+    // invariant drifts linearly, far above the round-off bound.
+    let y0 = [1.0, 0.0];
+    let early = ImplicitOptions {
+        tol: 1e-12,
+        ..ImplicitOptions::fixed_point()
+    };
+    let mut stepper = ImplicitRk::new(&tableau::<ImplicitMidpoint>(), &y0, early);
+    let states = trajectory(&Oscillator::<f64>(PhantomData), &mut stepper, &y0, 0.5, INVARIANT_STEPS);
+    let (drift, bound) = (invariant_drift(&states), invariant_bound::<f64>(INVARIANT_STEPS));
+    eprintln!("midpoint, fixed point, tol = 1e-12: drift {drift:.2e} (bound {bound:.2e})");
+    assert!(drift > 10.0 * bound, "drift {drift:e}");
+}
+
+#[test]
 fn gauss_methods_keep_the_oscillator_invariant_f32() {
     quadratic_invariant_of_oscillator::<f32>();
 }
