@@ -37,20 +37,29 @@ pub fn normalize(name: &str) -> String {
     name.trim().to_lowercase().replace(['-', ' '], "_")
 }
 
-/// Looks a method up by name (`-` and `_` both accepted); an unknown name is an error
-/// that suggests the nearest catalog names.
+/// Looks a method up by name (`-` and `_` both accepted, and separators optional when
+/// that names one method: `rk-4` is `rk4`); an unknown name is an error that suggests
+/// the nearest catalog names.
 ///
 /// ```
 /// let rk4 = stormer::registry::find("rk4").unwrap();
 /// assert_eq!(rk4.order, 4);
+/// assert_eq!(stormer::registry::find("rk-4").unwrap().name, "rk4");
 /// let err = stormer::registry::find("rk-5").unwrap_err();
 /// assert!(err.to_string().contains("did you mean"));
 /// ```
 pub fn find(name: &str) -> Result<&'static TableauData, Error> {
     let key = normalize(name);
+    let loose = |s: &str| s.replace('_', "");
+    let mut without_separators = BUTCHER.iter().filter(|d| loose(d.name) == loose(&key));
+    let unique_loose = match (without_separators.next(), without_separators.next()) {
+        (Some(data), None) => Some(data),
+        _ => None,
+    };
     BUTCHER
         .iter()
         .find(|d| d.name == key)
+        .or(unique_loose)
         .ok_or_else(|| Error::UnknownMethod {
             name: name.to_string(),
             suggestions: nearest(&key),

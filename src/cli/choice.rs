@@ -44,19 +44,7 @@ impl MethodChoice {
             let tableau = Tableau::from_file(&path)?;
             return Ok(MethodChoice::File { tableau, path });
         }
-        match registry::find(name) {
-            Ok(data) => Ok(MethodChoice::Catalog(data)),
-            // `rk-4` for `rk4`: separators are optional when that names one method.
-            Err(e) => {
-                let loose = |s: &str| s.replace(['-', '_', ' '], "");
-                let key = loose(&normalize(name));
-                let mut matches = registry::BUTCHER.iter().filter(|d| loose(d.name) == key);
-                match (matches.next(), matches.next()) {
-                    (Some(data), None) => Ok(MethodChoice::Catalog(data)),
-                    _ => Err(e),
-                }
-            }
-        }
+        Ok(MethodChoice::Catalog(registry::find(name)?))
     }
 
     /// The short name used in output file names and summaries.
