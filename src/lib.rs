@@ -7,6 +7,8 @@ extern crate self as stormer;
 pub mod catalog;
 pub mod driver;
 mod error;
+pub mod flows;
+pub mod hamiltonian;
 pub mod method;
 mod problem;
 mod real;
@@ -17,11 +19,18 @@ pub mod stepper;
 
 pub use driver::{Driver, Interrupted, Solution, Stats, StepControl, StopEvent};
 pub use error::Error;
-pub use method::{ButcherMethod, ExplicitMethod, Flags, MethodInfo, Tableau, TableauData};
+pub use flows::{QuadraticKinetic, Splittable};
+pub use hamiltonian::{Hamiltonian, SecondOrder};
+pub use method::{
+    ButcherMethod, ExplicitMethod, Flags, MethodInfo, Splitting, SplittingData, SplittingMethod, Tableau, TableauData,
+};
 pub use problem::Problem;
 pub use real::{lit, to_f64, Real};
 pub use state::State;
-pub use stepper::{ExplicitRk, ImplicitOptions, ImplicitRk, ImplicitSolver, RuntimeRk, Stepper, Tolerances};
+pub use stepper::{
+    ExplicitRk, ImplicitOptions, ImplicitRk, ImplicitSolver, RuntimeRk, RuntimeSplitting, SplittingStepper, Stepper,
+    Tolerances,
+};
 
 /// Declares a Butcher tableau, checks it at compile time and generates its stepper.
 ///

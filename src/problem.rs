@@ -40,15 +40,3 @@ pub trait Problem {
         None
     }
 }
-
-impl<P: Problem + ?Sized> Problem for &P {
-    type Scalar = P::Scalar;
-    type State = P::State;
-    #[inline(always)]
-    fn rhs(&self, t: Self::Scalar, y: &Self::State, dy: &mut Self::State) {
-        (**self).rhs(t, y, dy)
-    }
-    fn energy(&self, t: Self::Scalar, y: &Self::State) -> Option<Self::Scalar> {
-        (**self).energy(t, y)
-    }
-}

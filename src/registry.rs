@@ -2,8 +2,12 @@
 //! steppers chosen at run time (the CLI's `--method`).
 
 use crate::catalog;
-use crate::method::{ButcherMethod, TableauData};
-use crate::{Error, ImplicitOptions, ImplicitRk, Problem, RuntimeRk, Stepper, Tableau};
+use crate::flows::{QuadraticKinetic, Splittable};
+use crate::method::{ButcherMethod, SplittingData, SplittingMethod, TableauData};
+use crate::{
+    Error, ImplicitOptions, ImplicitRk, Problem, RuntimeRk, RuntimeSplitting, Splitting, SplittingStepper, Stepper,
+    Tableau,
+};
 
 macro_rules! data_list {
     ($($method:ident),* $(,)?) => {
@@ -27,10 +31,58 @@ macro_rules! dispatch {
     };
 }
 
+macro_rules! splitting_data_list {
+    (general: [$($g:ident),* $(,)?], quadratic: [$($r:ident),* $(,)?] $(,)?) => {
+        &[$(<catalog::$g as SplittingMethod>::DATA,)* $(<catalog::$r as SplittingMethod>::DATA,)*]
+    };
+}
+
+macro_rules! splitting_dispatch {
+    (general: [$($g:ident),* $(,)?], quadratic: [$($r:ident),* $(,)?] $(,)?) => {
+        /// The compiled stepper of the general splitting `name` (`None` when `name` is not
+        /// one: unknown, or a method that needs a quadratic kinetic energy).
+        #[allow(unused_variables)]
+        fn compiled_splitting<P>(name: &str, y0: &P::State) -> Option<Result<Box<dyn Stepper<P>>, Error>>
+        where
+            P: Splittable + 'static,
+        {
+            $(
+                if name == <catalog::$g as SplittingMethod>::DATA.name {
+                    return Some(SplittingStepper::<catalog::$g, P::State>::boxed::<P>(y0));
+                }
+            )*
+            None
+        }
+
+        /// The compiled stepper of any splitting `name`, for a quadratic-kinetic problem.
+        #[allow(unused_variables)]
+        fn compiled_splitting_quadratic<P>(name: &str, y0: &P::State) -> Option<Result<Box<dyn Stepper<P>>, Error>>
+        where
+            P: QuadraticKinetic + 'static,
+        {
+            $(
+                if name == <catalog::$g as SplittingMethod>::DATA.name {
+                    return Some(SplittingStepper::<catalog::$g, P::State>::boxed::<P>(y0));
+                }
+            )*
+            $(
+                if name == <catalog::$r as SplittingMethod>::DATA.name {
+                    return Some(SplittingStepper::<catalog::$r, P::State>::boxed::<P>(y0));
+                }
+            )*
+            None
+        }
+    };
+}
+
 /// Every Butcher method compiled into the crate, in catalog order.
 pub const BUTCHER: &[TableauData] = catalog::for_each_butcher_method!(data_list);
 
+/// Every splitting and composition compiled into the crate, in catalog order.
+pub const SPLITTING: &[SplittingData] = catalog::for_each_splitting_method!(splitting_data_list);
+
 catalog::for_each_butcher_method!(dispatch);
+catalog::for_each_splitting_method!(splitting_dispatch);
 
 /// The catalog spelling of a user's method name: lower case, `-` and spaces read as `_`.
 pub fn normalize(name: &str) -> String {
@@ -66,14 +118,114 @@ pub fn find(name: &str) -> Result<&'static TableauData, Error> {
         })
 }
 
+/// A catalog method of any family.
+#[derive(Debug, Clone, Copy)]
+pub enum MethodRef {
+    /// A Butcher tableau.
+    Butcher(&'static TableauData),
+    /// A splitting or composition.
+    Splitting(&'static SplittingData),
+}
+
+impl MethodRef {
+    /// The catalog name.
+    pub fn name(&self) -> &'static str {
+        match self {
+            MethodRef::Butcher(d) => d.name,
+            MethodRef::Splitting(d) => d.name,
+        }
+    }
+}
+
+/// Every catalog name, Butcher tableaus first.
+pub fn names() -> impl Iterator<Item = &'static str> {
+    BUTCHER.iter().map(|d| d.name).chain(SPLITTING.iter().map(|d| d.name))
+}
+
+/// Looks a method of any family up by name, with the spelling rules and suggestions of
+/// [`find`].
+pub fn lookup(name: &str) -> Result<MethodRef, Error> {
+    let key = normalize(name);
+    let loose = |s: &str| s.replace('_', "");
+    let exact = names().find(|n| *n == key);
+    let mut without_separators = names().filter(|n| loose(n) == loose(&key));
+    let unique_loose = match (without_separators.next(), without_separators.next()) {
+        (Some(n), None) => Some(n),
+        _ => None,
+    };
+    let Some(found) = exact.or(unique_loose) else {
+        return Err(Error::UnknownMethod {
+            name: name.to_string(),
+            suggestions: nearest(&key),
+        });
+    };
+    Ok(match BUTCHER.iter().find(|d| d.name == found) {
+        Some(d) => MethodRef::Butcher(d),
+        None => MethodRef::Splitting(SPLITTING.iter().find(|d| d.name == found).expect("listed by names()")),
+    })
+}
+
+/// Looks a splitting or composition up by name (see [`lookup`]); a Butcher method's name
+/// is an error that says so.
+pub fn find_splitting(name: &str) -> Result<&'static SplittingData, Error> {
+    match lookup(name)? {
+        MethodRef::Splitting(d) => Ok(d),
+        MethodRef::Butcher(d) => Err(Error::Unsupported {
+            name: d.name.to_string(),
+            reason: "it is a Runge-Kutta tableau, not a splitting or composition".into(),
+        }),
+    }
+}
+
+/// The compiled stepper of a catalog splitting or composition for a general splittable
+/// problem. A method that needs a quadratic kinetic energy is refused with a sentence
+/// saying so (the typed [`crate::SplittingStepper`] refuses it at compile time).
+pub fn splitting_stepper<P>(name: &str, y0: &P::State) -> Result<Box<dyn Stepper<P>>, Error>
+where
+    P: Splittable + 'static,
+{
+    let data = find_splitting(name)?;
+    match compiled_splitting::<P>(data.name, y0) {
+        Some(stepper) => stepper,
+        None => Err(Error::Unsupported {
+            name: data.name.to_string(),
+            reason: "it reaches its order only when the kinetic energy is quadratic in p (a Runge-Kutta-Nystrom \
+                     method), which this problem does not declare; use a general splitting or composition"
+                .into(),
+        }),
+    }
+}
+
+/// The compiled stepper of any catalog splitting or composition, for a problem whose
+/// kinetic energy is quadratic.
+pub fn splitting_stepper_quadratic<P>(name: &str, y0: &P::State) -> Result<Box<dyn Stepper<P>>, Error>
+where
+    P: QuadraticKinetic + 'static,
+{
+    let data = find_splitting(name)?;
+    compiled_splitting_quadratic::<P>(data.name, y0).unwrap_or_else(|| {
+        Err(Error::UnknownMethod {
+            name: name.to_string(),
+            suggestions: Vec::new(),
+        })
+    })
+}
+
+/// A stepper for a splitting or composition built at run time (e.g. read from a file).
+pub fn runtime_splitting_stepper<P>(method: &Splitting, y0: &P::State) -> Result<Box<dyn Stepper<P>>, Error>
+where
+    P: Splittable + 'static,
+{
+    Ok(Box::new(RuntimeSplitting::new(method, y0)?))
+}
+
 /// Up to three catalog names closest to `key` (edit distance, prefix matches first).
 fn nearest(key: &str) -> Vec<String> {
-    let mut scored: Vec<(usize, &str)> = BUTCHER
-        .iter()
-        .map(|d| {
-            let distance = strsim::damerau_levenshtein(key, d.name);
-            let prefix = d.name.starts_with(key) || key.starts_with(d.name);
-            (if prefix { distance.min(1) } else { distance }, d.name)
+    let mut scored: Vec<(usize, &str)> = names()
+        .map(|name| {
+            let distance = strsim::damerau_levenshtein(key, name);
+            let prefix = name.starts_with(key) || key.starts_with(name);
+            (if prefix { distance.min(1) } else { distance }, name)
         })
         .collect();
     scored.sort();

@@ -224,3 +224,147 @@ fn negative_control_a_perturbed_tableau_measures_lower() {
     .unwrap();
     assert!((order - 1.0).abs() <= TOLERANCE, "perturbed Heun measured {order}");
 }
+
+/// EXPLORATION
+fn explore_one<T: Real>(cand: common::Cand, t_end: f64, name: &str, embedded: bool, out: &mut String) {
+    use std::fmt::Write;
+    let data = registry::find(name).unwrap();
+    let opts = implicit_options::<T>();
+    let p = Generic::<common::Cand, T>(cand, core::marker::PhantomData);
+    let y0: [T; 4] = cand.initial().map(lit::<T>);
+    let tableau = Tableau::from_data(data).unwrap();
+    let emb = if embedded {
+        Some(tableau.embedded_as_main().unwrap().unwrap())
+    } else {
+        None
+    };
+    let declared = emb.as_ref().map_or(data.order, |t| t.order());
+    let eps = to_f64(T::default_epsilon());
+    let maxnorm = std::env::var_os("MAXNORM").is_some();
+    let st = data.stages;
+    let amp = (0..st)
+        .map(|i| (0..st).map(|j| data.a[i * st + j].abs()).sum::<f64>())
+        .fold(data.b.iter().map(|x| x.abs()).sum::<f64>(), f64::max);
+    write!(
+        out,
+        "{name} {} {} {declared} {amp}",
+        if embedded { "emb" } else { "main" },
+        if eps > 1e-10 { "f32" } else { "f64" }
+    )
+    .unwrap();
+    let mut k = 0;
+    loop {
+        let n = (4.0 * 2f64.powf(k as f64 / 4.0)).round() as usize;
+        k += 1;
+        if n > 100_000 {
+            break;
+        }
+        let mut s = match &emb {
+            Some(t) => registry::tableau_stepper::<Generic<common::Cand, T>>(t, &y0, &opts).unwrap(),
+            None => registry::stepper::<Generic<common::Cand, T>>(name, &y0, &opts).unwrap(),
+        };
+        let h = lit::<T>(t_end / n as f64);
+        let hf = to_f64(h);
+        let te = lit::<T>(hf * n as f64);
+        let e = match Driver::fixed(h)
+            .every(if maxnorm { 1 } else { 1 << 40 })
+            .run(&p, &mut *s, T::zero(), &y0, te)
+        {
+            Ok(sol) => {
+                if sol.stats.steps as usize != n {
+                    eprintln!("{name} n={n} steps={}", sol.stats.steps);
+                }
+                let mut m = 0f64;
+                let recs: Vec<usize> = if maxnorm {
+                    (0..sol.y.len()).collect()
+                } else {
+                    vec![sol.y.len() - 1]
+                };
+                for j in recs {
+                    let i = if j + 1 == sol.y.len() { n } else { j };
+                    let ex = cand.exact(i as f64 * hf);
+                    let y = &sol.y[j];
+                    for c in 0..4 {
+                        m = m.max((to_f64(y[c]) - ex[c]).abs() / ex[c].abs().max(1.0));
+                    }
+                }
+                m
+            }
+            Err(_) => f64::NAN,
+        };
+        write!(out, " {n}:{e:e}").unwrap();
+        if e < 10.0 * eps * n as f64 || (eps > 1e-10 && e < 1e-6) {
+            break;
+        }
+    }
+    out.push('\n');
+}
+
+#[test]
+#[ignore]
+fn explore() {
+    let v: Vec<f64> = std::env::var("CAND")
+        .unwrap()
+        .split(',')
+        .map(|x| x.parse().unwrap())
+        .collect();
+    let mut cand = common::Cand {
+        kind: v[0] as u8,
+        p: [0.0; 8],
+    };
+    let t_end = v[1];
+    for (i, x) in v[2..].iter().enumerate() {
+        cand.p[i] = *x;
+    }
+    let only = std::env::var("ONLY").ok();
+    let mut out = String::new();
+    for data in registry::BUTCHER {
+        if let Some(o) = &only {
+            if !o.split(',').any(|x| x == data.name) {
+                continue;
+            }
+        }
+        for emb in [false, true] {
+            if emb && data.b_hat.is_none() {
+                continue;
+            }
+            explore_one::<f64>(cand, t_end, data.name, emb, &mut out);
+            let ord = if emb { data.embedded_order.unwrap() } else { data.order };
+            if ord <= 4 && std::env::var_os("NOF32").is_none() {
+                explore_one::<f32>(cand, t_end, data.name, emb, &mut out);
+            }
+        }
+    }
+    std::fs::write(std::env::var("OUT").unwrap_or("/tmp/explore.txt".into()), out).unwrap();
+}
+
+#[test]
+#[ignore]
+fn diag_conditions() {
+    for data in registry::BUTCHER {
+        let t = Tableau::from_data(data).unwrap();
+        let worst = t
+            .conditions()
+            .iter()
+            .filter(|c| c.order <= 2)
+            .map(|c| c.residual)
+            .fold(0.0, f64::max);
+        let worst_all = t
+            .conditions()
+            .iter()
+            .map(|c| (c.residual, c.order))
+            .fold((0.0, 0), |m, x| if x.0 > m.0 { x } else { m });
+        let rowsum = (0..data.stages)
+            .map(|i| ((0..data.stages).map(|j| data.a[i * data.stages + j]).sum::<f64>() - data.c[i]).abs())
+            .fold(0.0, f64::max);
+        let sb = (data.b.iter().sum::<f64>() - 1.0).abs();
+        let sbh = data.b_hat.map_or(0.0, |b| (b.iter().sum::<f64>() - 1.0).abs());
+        let amax = (0..data.stages)
+            .map(|i| (0..data.stages).map(|j| data.a[i * data.stages + j].abs()).sum::<f64>())
+            .fold(data.b.iter().map(|x| x.abs()).sum::<f64>(), f64::max);
+        eprintln!(
+            "{:20} ord<=2 {:.1e} worst {:.1e}@{} rowsum {:.1e} sumb {:.1e} sumbhat {:.1e} A {:.1}",
+            data.name, worst, worst_all.0, worst_all.1, rowsum, sb, sbh, amax
+        );
+    }
+}

@@ -15,6 +15,7 @@
 //! * [`tree`]: rooted trees, the index set of the order conditions;
 //! * [`conditions`]: order conditions `sum_i w_i Phi_i(t) = 1/gamma(t)` and their residuals;
 //! * [`tableau`]: a Butcher tableau as plain data, its validation and derived flags;
+//! * [`splitting`]: splitting sequences and composition weights, their checks and merged words;
 //! * [`number`]: how numbers are printed in messages.
 //!
 //! ```
@@ -45,10 +46,15 @@ pub mod conditions;
 pub mod expr;
 mod forest;
 pub mod number;
+pub mod splitting;
 pub mod tableau;
 pub mod tree;
 
 pub use conditions::{achieved_order, order_conditions, Condition, DEFAULT_TOLERANCE, MAX_ORDER};
 pub use expr::{eval_coefficient, ExprError};
+pub use splitting::{
+    validate_composition, validate_splitting, CompositionSpec, Flow, Op, SplitCondition, SplittingError, SplittingSpec,
+    ValidSplitting,
+};
 pub use tableau::{validate, Flags, TableauError, TableauSpec, ValidTableau};
 pub use tree::{trees_of_order, RootedTree, MAX_TREE_ORDER};

@@ -26,3 +26,16 @@ macro_rules! for_each_butcher_method {
     };
 }
 pub(crate) use for_each_butcher_method;
+
+/// Invokes `$callback! { general: [..], quadratic: [..] }` with the type names of every
+/// splitting and composition, in catalog order: `general` methods are valid for every
+/// splittable problem, `quadratic` ones need a quadratic kinetic energy.
+macro_rules! for_each_splitting_method {
+    ($callback:ident) => {
+        $callback! {
+            general: [],
+            quadratic: [],
+        }
+    };
+}
+pub(crate) use for_each_splitting_method;

@@ -1,9 +1,11 @@
-//! Methods as data: the Butcher-tableau family (splittings and compositions come later).
+//! Methods as data: Butcher tableaus, splittings and compositions.
 
 mod butcher;
 mod info;
+mod splitting;
 mod tableau;
 
 pub use butcher::{ButcherMethod, ExplicitMethod};
 pub use info::{Flags, MethodInfo, TableauData};
+pub use splitting::{Splitting, SplittingData, SplittingMethod};
 pub use tableau::Tableau;

@@ -2,15 +2,21 @@
 //!
 //! A stepper owns its stage buffers, so stepping never allocates for static states.
 
+mod composed;
 mod error_norm;
 mod explicit;
 mod implicit;
 mod runtime;
+mod runtime_splitting;
+mod splitting;
 
+pub use composed::Composed;
 pub use error_norm::Tolerances;
 pub use explicit::ExplicitRk;
 pub use implicit::{ImplicitOptions, ImplicitRk, ImplicitSolver};
 pub use runtime::RuntimeRk;
+pub use runtime_splitting::RuntimeSplitting;
+pub use splitting::SplittingStepper;
 
 use crate::{Error, MethodInfo, Problem};
 

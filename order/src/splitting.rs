@@ -1,0 +1,506 @@
+//! Splitting sequences and composition weights as plain data: their validation, the
+//! merged word of sub-flows a step applies, and the flags derived from it.
+//!
+//! A splitting is written drift-first, as in the method catalog: one step of size `h` is
+//! `D(drift_1 h) K(kick_1 h) D(drift_2 h) K(kick_2 h) ... D(drift_n h) K(kick_n h)`, zero
+//! entries are no-ops. A composition `S(gamma_s h) o ... o S(gamma_1 h)` of a symmetric
+//! second-order base `S` is expanded over drift-kick-drift Stormer-Verlet into the splitting
+//! `drift = [g1/2, (g1+g2)/2, ..., g_s/2]`, `kick = [g1, ..., g_s, 0]`.
+//!
+//! ```
+//! use stormer_order::splitting::{validate_composition, validate_splitting, CompositionSpec, Flow, SplittingSpec};
+//!
+//! // velocity Verlet: K(1/2) D(1) K(1/2), one force evaluation per step (FSAL)
+//! let kdk = SplittingSpec { drift: vec![0.0, 1.0], kick: vec![0.5, 0.5], order: 2, tolerance: None };
+//! let v = validate_splitting(&kdk).unwrap();
+//! assert_eq!(v.word.iter().map(|op| op.flow).collect::<Vec<_>>(), [Flow::Kick, Flow::Drift, Flow::Kick]);
+//! assert!(v.fsal && v.symmetric);
+//! assert_eq!(v.stages, 1);
+//!
+//! // the triple jump needs sum gamma^3 = 0 for order 4; a typo is caught
+//! let w1 = 1.0 / (2.0 - 2f64.cbrt());
+//! let jump = CompositionSpec { gamma: vec![w1, 1.0 - 2.0 * w1, w1], order: 4, tolerance: None };
+//! assert_eq!(validate_composition(&jump).unwrap().stages, 3);
+//! let typo = CompositionSpec { gamma: vec![1.35, 1.0 - 2.0 * 1.35, 1.35], ..jump };
+//! let message = validate_composition(&typo).unwrap_err().to_string();
+//! assert!(message.starts_with("order 4 condition sum gamma_i^3 = 0 fails"), "{message}");
+//! ```
+
+use std::fmt;
+
+use crate::conditions::DEFAULT_TOLERANCE;
+use crate::number::format_significant;
+
+/// The highest order whose conditions a composition declaration may claim.
+pub const MAX_COMPOSITION_ORDER: usize = 10;
+
+/// One of the two sub-flows a splitting composes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Flow {
+    /// The flow of the first part `A` (for `H = T(p) + V(q)`: `q += tau dT/dp`). Advances time.
+    Drift,
+    /// The flow of the second part `B` (`p += tau F(t, q)`), evaluated at the current time.
+    Kick,
+}
+
+impl Flow {
+    /// `"drift"` or `"kick"`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Flow::Drift => "drift",
+            Flow::Kick => "kick",
+        }
+    }
+}
+
+/// One sub-flow of a step: `flow(coef * h)` starting at time `t + node * h`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Op {
+    /// Which flow.
+    pub flow: Flow,
+    /// Its fraction of the step.
+    pub coef: f64,
+    /// The time fraction at which it starts: the sum of the drifts before it.
+    pub node: f64,
+}
+
+/// A splitting as declared (drift-first arrays), before validation.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct SplittingSpec {
+    /// Drift fractions, applied first in each pair.
+    pub drift: Vec<f64>,
+    /// Kick fractions, same length as `drift`.
+    pub kick: Vec<f64>,
+    /// Declared order.
+    pub order: usize,
+    /// Tolerance of the consistency checks; `None` means [`DEFAULT_TOLERANCE`].
+    pub tolerance: Option<f64>,
+}
+
+impl SplittingSpec {
+    /// The drift-first arrays of any word of sub-flows, e.g. `K(1/2) D(1) K(1/2)` gives
+    /// `drift = [0, 1]`, `kick = [1/2, 1/2]`. Adjacent flows of the same kind are added.
+    pub fn arrays_of_word(word: &[(Flow, f64)]) -> (Vec<f64>, Vec<f64>) {
+        let (mut drift, mut kick): (Vec<f64>, Vec<f64>) = (Vec::new(), Vec::new());
+        // whether the last pair already has its kick (a drift after it opens a new pair)
+        let mut pair_has_kick = true;
+        for &(flow, coef) in word {
+            match flow {
+                Flow::Drift if pair_has_kick => {
+                    drift.push(coef);
+                    kick.push(0.0);
+                    pair_has_kick = false;
+                }
+                Flow::Drift => *drift.last_mut().expect("a pair is open") += coef,
+                Flow::Kick => {
+                    if kick.is_empty() {
+                        drift.push(0.0);
+                        kick.push(0.0);
+                    }
+                    *kick.last_mut().expect("a pair is open") += coef;
+                    pair_has_kick = true;
+                }
+            }
+        }
+        (drift, kick)
+    }
+}
+
+/// Composition weights as declared, before validation.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct CompositionSpec {
+    /// The weights `gamma_1 .. gamma_s` (`S(gamma_1 h)` is applied first).
+    pub gamma: Vec<f64>,
+    /// Declared order (for a second-order base).
+    pub order: usize,
+    /// Tolerance of the checks; `None` means [`DEFAULT_TOLERANCE`].
+    pub tolerance: Option<f64>,
+}
+
+/// A checked condition: its text, the value found and whether it holds.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SplitCondition {
+    /// The order the condition belongs to.
+    pub order: usize,
+    /// E.g. `"sum kick_i = 1"` or `"sum gamma_i^3 = 0"`.
+    pub text: String,
+    /// The required value.
+    pub expected: f64,
+    /// The value computed from the coefficients.
+    pub value: f64,
+    /// The allowed deviation.
+    pub bound: f64,
+}
+
+impl SplitCondition {
+    /// True when `|value - expected| <= bound`.
+    pub fn holds(&self) -> bool {
+        (self.value - self.expected).abs() <= self.bound
+    }
+}
+
+impl fmt::Display for SplitCondition {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "order {} condition {} {}: got {}",
+            self.order,
+            self.text,
+            if self.holds() { "holds" } else { "fails" },
+            format_significant(self.value, 4)
+        )
+    }
+}
+
+/// A splitting or composition that passed validation.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ValidSplitting {
+    /// Drift-first arrays (for a composition: its expansion over drift-kick-drift Verlet).
+    pub drift: Vec<f64>,
+    /// Kick fractions.
+    pub kick: Vec<f64>,
+    /// The composition weights, for a composition.
+    pub gamma: Option<Vec<f64>>,
+    /// The step as a word of sub-flows: zeros dropped, adjacent flows of one kind merged.
+    pub word: Vec<Op>,
+    /// Declared (and consistent) order.
+    pub order: usize,
+    /// Force evaluations per step once the first-same-as-last saving applies.
+    pub stages: usize,
+    /// The step starts and ends with a kick: the force at the end of a step is the first
+    /// force of the next.
+    pub fsal: bool,
+    /// The word is a palindrome (for a composition: so are the weights): the method is its
+    /// own adjoint.
+    pub symmetric: bool,
+    /// Every condition checked, all holding.
+    pub conditions: Vec<SplitCondition>,
+}
+
+/// Why a splitting or composition is invalid. Indices are 0-based; messages count from 1.
+#[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
+pub enum SplittingError {
+    /// No coefficients at all.
+    Empty,
+    /// `drift` and `kick` have different lengths.
+    LengthMismatch {
+        /// Length of `drift`.
+        drift: usize,
+        /// Length of `kick`.
+        kick: usize,
+    },
+    /// A coefficient is infinite or NaN.
+    NonFinite {
+        /// `"drift"`, `"kick"` or `"gamma"`.
+        what: &'static str,
+        /// Position.
+        index: usize,
+    },
+    /// A consistency or order condition fails.
+    Condition(SplitCondition),
+    /// The declared order is 0.
+    ZeroOrder,
+    /// The declared order is above what is checked.
+    OrderTooHigh {
+        /// Declared.
+        order: usize,
+        /// Highest checked.
+        max: usize,
+    },
+    /// The tolerance is negative, infinite or NaN.
+    InvalidTolerance {
+        /// Declared.
+        tolerance: f64,
+    },
+}
+
+impl fmt::Display for SplittingError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            SplittingError::Empty => f.write_str("the method has no coefficients"),
+            SplittingError::LengthMismatch { drift, kick } => write!(
+                f,
+                "drift has {drift} entries but kick has {kick} (drift-first pairs need equal lengths)"
+            ),
+            SplittingError::NonFinite { what, index } => write!(f, "{what}_{} is not a finite number", index + 1),
+            SplittingError::Condition(c) => write!(f, "{c}"),
+            SplittingError::ZeroOrder => f.write_str("an order must be at least 1"),
+            SplittingError::OrderTooHigh { order, max } => write!(
+                f,
+                "order {order} is above {max}, the highest order whose conditions are checked"
+            ),
+            SplittingError::InvalidTolerance { tolerance } => {
+                write!(f, "tolerance {tolerance} is not a finite non-negative number")
+            }
+        }
+    }
+}
+
+impl std::error::Error for SplittingError {}
+
+fn tolerance_of(t: Option<f64>) -> Result<f64, SplittingError> {
+    match t {
+        None => Ok(DEFAULT_TOLERANCE),
+        Some(t) if t.is_finite() && t >= 0.0 => Ok(t),
+        Some(t) => Err(SplittingError::InvalidTolerance { tolerance: t }),
+    }
+}
+
+fn check_finite(what: &'static str, v: &[f64]) -> Result<(), SplittingError> {
+    match v.iter().position(|x| !x.is_finite()) {
+        Some(index) => Err(SplittingError::NonFinite { what, index }),
+        None => Ok(()),
+    }
+}
+
+/// The step as a word: `D(d_1) K(k_1) ... D(d_n) K(k_n)` with zero entries dropped and
+/// adjacent flows of the same kind merged (their fractions added), each op with the time
+/// fraction at which it starts.
+pub fn word(drift: &[f64], kick: &[f64]) -> Vec<Op> {
+    let mut ops: Vec<Op> = Vec::with_capacity(2 * drift.len());
+    let mut node = 0.0;
+    for (&d, &k) in drift.iter().zip(kick) {
+        for (flow, coef) in [(Flow::Drift, d), (Flow::Kick, k)] {
+            if coef == 0.0 {
+                continue;
+            }
+            match ops.last_mut() {
+                Some(last) if last.flow == flow => last.coef += coef,
+                _ => ops.push(Op { flow, coef, node }),
+            }
+            if flow == Flow::Drift {
+                node += coef;
+            }
+        }
+    }
+    // a node is the sum of the drifts before the op, recomputed after merging so that a
+    // merged drift and the kick after it see the same sums as the declared sequence
+    let mut node = 0.0;
+    for op in &mut ops {
+        op.node = node;
+        if op.flow == Flow::Drift {
+            node += op.coef;
+        }
+    }
+    ops
+}
+
+fn is_palindrome(ops: &[Op], tol: f64) -> bool {
+    let n = ops.len();
+    (0..n / 2).all(|i| {
+        let (a, b) = (ops[i], ops[n - 1 - i]);
+        a.flow == b.flow && (a.coef - b.coef).abs() <= tol * a.coef.abs().max(b.coef.abs()).max(1.0)
+    })
+}
+
+fn sum_condition(order: usize, what: &str, v: &[f64], tol: f64) -> SplitCondition {
+    let value: f64 = v.iter().sum();
+    let scale: f64 = v.iter().map(|x| x.abs()).sum::<f64>().max(1.0);
+    SplitCondition {
+        order,
+        text: format!("sum {what}_i = 1"),
+        expected: 1.0,
+        value,
+        bound: tol * scale,
+    }
+}
+
+/// The conditions and derived data of a drift-first sequence (shared by both families).
+fn finish(
+    drift: Vec<f64>,
+    kick: Vec<f64>,
+    gamma: Option<Vec<f64>>,
+    order: usize,
+    tol: f64,
+    mut conditions: Vec<SplitCondition>,
+) -> Result<ValidSplitting, SplittingError> {
+    conditions.push(sum_condition(1, "drift", &drift, tol));
+    conditions.push(sum_condition(1, "kick", &kick, tol));
+    let ops = word(&drift, &kick);
+    if order >= 2 {
+        // second order: sum_i kick_i c_i = 1/2, c_i = the drifts before kick i (with the
+        // first-order sums this also gives the mirrored condition on the drifts)
+        let (mut value, mut scale) = (0.0, 0.0);
+        for op in ops.iter().filter(|op| op.flow == Flow::Kick) {
+            value += op.coef * op.node;
+            scale += (op.coef * op.node).abs();
+        }
+        conditions.push(SplitCondition {
+            order: 2,
+            text: "sum kick_i c_i = 1/2 (c_i = drifts before kick i)".into(),
+            expected: 0.5,
+            value,
+            bound: tol * f64::max(scale, 1.0),
+        });
+    }
+    if let Some(failed) = conditions.iter().find(|c| !c.holds()) {
+        return Err(SplittingError::Condition(failed.clone()));
+    }
+    let kicks = ops.iter().filter(|op| op.flow == Flow::Kick).count();
+    let fsal = ops.len() > 1 && ops[0].flow == Flow::Kick && ops[ops.len() - 1].flow == Flow::Kick;
+    let symmetric = is_palindrome(&ops, tol)
+        && match gamma.as_deref() {
+            Some(g) => palindromic(g, tol),
+            None => true,
+        };
+    Ok(ValidSplitting {
+        drift,
+        kick,
+        gamma,
+        stages: kicks - usize::from(fsal),
+        word: ops,
+        order,
+        fsal,
+        symmetric,
+        conditions,
+    })
+}
+
+fn palindromic(v: &[f64], tol: f64) -> bool {
+    let n = v.len();
+    (0..n / 2).all(|i| (v[i] - v[n - 1 - i]).abs() <= tol * v[i].abs().max(1.0))
+}
+
+/// Checks a drift-first splitting: equal lengths, finite entries, `sum drift = sum kick = 1`
+/// (relative to the sum of magnitudes), the second-order condition when `order >= 2`;
+/// derives the merged word, the stage count and the flags.
+///
+/// Conditions beyond order 2 depend on the problem class (general or quadratic kinetic
+/// energy) and are checked by measuring the order, not here.
+///
+/// # Errors
+///
+/// The first problem found.
+pub fn validate_splitting(spec: &SplittingSpec) -> Result<ValidSplitting, SplittingError> {
+    let tol = tolerance_of(spec.tolerance)?;
+    if spec.order == 0 {
+        return Err(SplittingError::ZeroOrder);
+    }
+    if spec.drift.len() != spec.kick.len() {
+        return Err(SplittingError::LengthMismatch {
+            drift: spec.drift.len(),
+            kick: spec.kick.len(),
+        });
+    }
+    if spec.drift.is_empty() {
+        return Err(SplittingError::Empty);
+    }
+    check_finite("drift", &spec.drift)?;
+    check_finite("kick", &spec.kick)?;
+    finish(spec.drift.clone(), spec.kick.clone(), None, spec.order, tol, Vec::new())
+}
+
+/// Checks composition weights: finite, `sum gamma = 1`, and `sum gamma^k = 0` for
+/// `k = 3, 5, ..` up to `order - 1` (necessary conditions of order `order`; the remaining
+/// ones from order 6 on are checked by measuring the order), each relative to
+/// `sum |gamma|^k`; derives the expansion over drift-kick-drift Verlet.
+///
+/// # Errors
+///
+/// The first problem found.
+pub fn validate_composition(spec: &CompositionSpec) -> Result<ValidSplitting, SplittingError> {
+    let tol = tolerance_of(spec.tolerance)?;
+    if spec.order == 0 {
+        return Err(SplittingError::ZeroOrder);
+    }
+    if spec.order > MAX_COMPOSITION_ORDER {
+        return Err(SplittingError::OrderTooHigh {
+            order: spec.order,
+            max: MAX_COMPOSITION_ORDER,
+        });
+    }
+    let g = &spec.gamma;
+    if g.is_empty() {
+        return Err(SplittingError::Empty);
+    }
+    check_finite("gamma", g)?;
+    let mut conditions = vec![sum_condition(1, "gamma", g, tol)];
+    for power in (3..spec.order).step_by(2) {
+        let exponent = power as i32;
+        conditions.push(SplitCondition {
+            order: power + 1,
+            text: format!("sum gamma_i^{power} = 0"),
+            expected: 0.0,
+            value: g.iter().map(|x| x.powi(exponent)).sum(),
+            bound: tol * g.iter().map(|x| x.abs().powi(exponent)).sum::<f64>().max(1.0),
+        });
+    }
+    let s = g.len();
+    let mut drift = Vec::with_capacity(s + 1);
+    let mut kick = Vec::with_capacity(s + 1);
+    drift.push(g[0] / 2.0);
+    for i in 0..s {
+        kick.push(g[i]);
+        drift.push(if i + 1 < s { (g[i] + g[i + 1]) / 2.0 } else { g[i] / 2.0 });
+    }
+    kick.push(0.0);
+    finish(drift, kick, Some(g.clone()), spec.order, tol, conditions)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn words_merge_and_drop_zeros() {
+        let ops = word(&[0.5, 0.0, 0.5], &[0.0, 1.0, 0.0]);
+        let flows: Vec<_> = ops.iter().map(|o| (o.flow, o.coef, o.node)).collect();
+        assert_eq!(
+            flows,
+            [(Flow::Drift, 0.5, 0.0), (Flow::Kick, 1.0, 0.5), (Flow::Drift, 0.5, 0.5)]
+        );
+    }
+
+    #[test]
+    fn a_word_round_trips_to_arrays() {
+        let (d, k) = SplittingSpec::arrays_of_word(&[(Flow::Kick, 0.5), (Flow::Drift, 1.0), (Flow::Kick, 0.5)]);
+        assert_eq!((d, k), (vec![0.0, 1.0], vec![0.5, 0.5]));
+        let (d, k) = SplittingSpec::arrays_of_word(&[(Flow::Drift, 0.5), (Flow::Kick, 1.0), (Flow::Drift, 0.5)]);
+        assert_eq!((d, k), (vec![0.5, 0.5], vec![1.0, 0.0]));
+    }
+
+    #[test]
+    fn symplectic_euler_is_first_order_only() {
+        let spec = SplittingSpec {
+            drift: vec![1.0],
+            kick: vec![1.0],
+            order: 2,
+            tolerance: None,
+        };
+        let e = validate_splitting(&spec).unwrap_err().to_string();
+        assert!(e.starts_with("order 2 condition sum kick_i c_i = 1/2"), "{e}");
+        let v = validate_splitting(&SplittingSpec { order: 1, ..spec }).unwrap();
+        assert!(!v.symmetric && !v.fsal);
+        assert_eq!(v.stages, 1);
+    }
+
+    #[test]
+    fn composition_expands_over_dkd_verlet() {
+        let v = validate_composition(&CompositionSpec {
+            gamma: vec![1.0],
+            order: 2,
+            tolerance: None,
+        })
+        .unwrap();
+        assert_eq!(v.drift, [0.5, 0.5]);
+        assert_eq!(v.kick, [1.0, 0.0]);
+        assert!(v.symmetric);
+    }
+
+    #[test]
+    fn bad_sums_are_reported() {
+        let e = validate_splitting(&SplittingSpec {
+            drift: vec![0.5, 0.4],
+            kick: vec![1.0, 0.0],
+            order: 1,
+            tolerance: None,
+        })
+        .unwrap_err();
+        assert!(
+            e.to_string()
+                .starts_with("order 1 condition sum drift_i = 1 fails: got 0.9"),
+            "{e}"
+        );
+    }
+}

@@ -1,0 +1,81 @@
+//! Sub-flows: the exact flows a splitting method composes.
+//!
+//! A problem that can be split provides two flows on its phase-space state `(q, p)`:
+//! the **drift** (the flow of the first part, `A`; for `H = T(p) + V(q)` it is
+//! `q += tau dT/dp`) and the **kick** (the flow of the second part, `B`: `p += tau F(t, q)`).
+//! Splitting and composition steppers only call these two flows; they never assume what
+//! "drift" means, so a problem whose drift is another exactly solvable flow (the rotation
+//! of a charged particle in a magnetic field, Kepler motion) gets every method of the
+//! catalog without new code.
+//!
+//! The kick is split into the force evaluation and its application, so that a stepper can
+//! reuse the force at the end of one step for the first kick of the next (FSAL).
+
+use crate::{Problem, Real};
+
+/// A problem with exact drift and kick sub-flows on a state `(q, p)` of length `2n`.
+///
+/// Implemented for every [`crate::Hamiltonian`] (and so every [`crate::SecondOrder`]
+/// problem); implement it directly for a problem whose drift is not `q += tau dT/dp`.
+pub trait Splittable: Problem {
+    /// The exact flow of the first part for time `tau` (possibly negative), starting at
+    /// time `t`, in place on the halves `q` and `p` (each of length `n`). `scratch` is `n`
+    /// values of workspace, with no meaning before or after the call.
+    fn drift(
+        &self,
+        t: Self::Scalar,
+        tau: Self::Scalar,
+        q: &mut [Self::Scalar],
+        p: &mut [Self::Scalar],
+        scratch: &mut [Self::Scalar],
+    );
+
+    /// The force (the rate of `p` under the kick) at `(t, q)`, written into `f`.
+    fn force(&self, t: Self::Scalar, q: &[Self::Scalar], f: &mut [Self::Scalar]);
+
+    /// The exact flow of the second part: `p += tau f`, `f` being [`Splittable::force`] at
+    /// the current `(t, q)`.
+    #[inline(always)]
+    fn kick(&self, tau: Self::Scalar, f: &[Self::Scalar], p: &mut [Self::Scalar]) {
+        kick(tau, f, p)
+    }
+}
+
+/// `p += tau f`, component by component.
+#[inline(always)]
+pub fn kick<T: Real>(tau: T, f: &[T], p: &mut [T]) {
+    for (p, &f) in p.iter_mut().zip(f) {
+        *p += tau * f;
+    }
+}
+
+/// A splittable problem whose kinetic energy is quadratic in `p` (more precisely: whose
+/// flows satisfy `[B, [B, [B, A]]] = 0`), the condition under which the methods built for
+/// Runge-Kutta-Nystrom problems reach their order.
+///
+/// Implemented for every [`crate::SecondOrder`] problem; a [`crate::Hamiltonian`] with
+/// `T = |p|^2 / (2m)` (or any `p^T M^-1 p / 2`) opts in with an empty impl. A method
+/// with `requires_quadratic_kinetic` only accepts problems with this trait.
+pub trait QuadraticKinetic: Splittable {}
+
+/// The class of problems a splitting method is valid for (a type-level flag of
+/// [`crate::SplittingMethod`]).
+pub trait ProblemClass: Copy + Default + core::fmt::Debug + Send + Sync + 'static {}
+
+/// Valid for every splittable problem.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct General;
+
+/// Valid only for problems with quadratic kinetic energy (Runge-Kutta-Nystrom methods).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct QuadraticOnly;
+
+impl ProblemClass for General {}
+impl ProblemClass for QuadraticOnly {}
+
+/// `P: Admits<C>` when problem `P` belongs to class `C`: every splittable problem admits
+/// [`General`] methods, only [`QuadraticKinetic`] ones admit [`QuadraticOnly`] methods.
+pub trait Admits<C: ProblemClass>: Splittable {}
+
+impl<P: Splittable> Admits<General> for P {}
+impl<P: QuadraticKinetic> Admits<QuadraticOnly> for P {}

@@ -1,0 +1,267 @@
+//! The splitting and composition families: compiled data, the trait a declared method
+//! implements, and the run-time form validated by the same code.
+
+use super::{Flags, MethodInfo};
+use crate::flows::{ProblemClass, Splittable};
+use crate::{Error, Real};
+use stormer_order::splitting::{
+    validate_composition, validate_splitting, CompositionSpec, Op, SplitCondition, SplittingSpec, ValidSplitting,
+};
+
+/// The coefficients of a splitting or composition as compiled into the binary.
+///
+/// A composition is stored with its weights and its expansion over drift-kick-drift
+/// Stormer-Verlet (`drift`, `kick`), which is what its generated step applies.
+#[derive(Debug, Clone, Copy)]
+pub struct SplittingData {
+    /// Catalog name, e.g. `"stormer_verlet_dkd"`.
+    pub name: &'static str,
+    /// `"splitting"` or `"composition"`.
+    pub family: &'static str,
+    /// Declared order (for a composition: with a second-order base).
+    pub order: usize,
+    /// Drift fractions, drift-first convention.
+    pub drift: &'static [f64],
+    /// Kick fractions.
+    pub kick: &'static [f64],
+    /// Composition weights.
+    pub gamma: Option<&'static [f64]>,
+    /// The order needs a quadratic kinetic energy (Runge-Kutta-Nystrom methods).
+    pub requires_quadratic_kinetic: bool,
+    /// Force evaluations per step, after FSAL reuse.
+    pub stages: usize,
+    /// The tolerance factor of the checks, when the declaration set one.
+    pub tolerance: Option<f64>,
+    /// Derived flags (`explicit` and `symplectic` always hold for this family).
+    pub flags: Flags,
+}
+
+impl SplittingData {
+    /// The table row of this method.
+    pub fn info(&self) -> MethodInfo {
+        MethodInfo {
+            name: self.name.to_string(),
+            family: self.family,
+            order: self.order,
+            stages: self.stages,
+            embedded_order: None,
+            flags: self.flags,
+        }
+    }
+
+    /// The step as a word of sub-flows (zeros dropped, adjacent flows merged).
+    pub fn word(&self) -> Vec<Op> {
+        stormer_order::splitting::word(self.drift, self.kick)
+    }
+}
+
+/// A splitting or composition known at compile time: a zero-sized type carrying its
+/// data and an unrolled step. Implemented by the `splitting!` and `composition!` macros.
+pub trait SplittingMethod: Copy + Default + Send + Sync + core::fmt::Debug + 'static {
+    /// The verified coefficients and derived flags.
+    const DATA: SplittingData;
+
+    /// The problems the method is valid for: [`crate::flows::General`] or
+    /// [`crate::flows::QuadraticOnly`] (Runge-Kutta-Nystrom methods).
+    type Class: ProblemClass;
+
+    /// The coefficients of the word (fractions and time nodes), converted to `T`.
+    type Coeffs<T: Real>: Copy + Send + Sync + core::fmt::Debug;
+
+    /// Converts the coefficients to `T` (called once per stepper).
+    fn coeffs<T: Real>() -> Self::Coeffs<T>;
+
+    /// Applies one step of size `h` from time `t` in place on the halves `q`, `p`, op by
+    /// op in the order of [`SplittingData::word`]: a drift `D(c)` starting at node `s` is
+    /// `problem.drift(t + s h, c h, q, p, v)`, a kick `K(c)` at node `s` evaluates
+    /// `problem.force(t + s h, q, f)` (except for a first kick when `cached`: `f` already
+    /// holds the force at `(t, q)`) and applies `problem.kick(c h, f, p)`. `v` is scratch.
+    /// On return `f` holds the last force evaluated. Returns the number of force
+    /// evaluations.
+    fn flows<P: Splittable>(
+        co: &Self::Coeffs<P::Scalar>,
+        problem: &P,
+        t: P::Scalar,
+        h: P::Scalar,
+        q: &mut [P::Scalar],
+        p: &mut [P::Scalar],
+        v: &mut [P::Scalar],
+        f: &mut [P::Scalar],
+        cached: bool,
+    ) -> u64;
+}
+
+/// A validated splitting or composition held in memory: built from arrays or weights at
+/// run time (or read from a file) and run by [`crate::stepper::RuntimeSplitting`].
+///
+/// ```
+/// use stormer::Splitting;
+/// // velocity Verlet, declared at run time
+/// let kdk = Splitting::splitting("my_verlet", &[0.0, 1.0], &[0.5, 0.5], 2, false).unwrap();
+/// assert!(kdk.flags().symmetric && kdk.flags().fsal);
+/// assert_eq!(kdk.stages(), 1);
+/// // a wrong weight is an error naming the condition
+/// let err = Splitting::composition("jump", &[1.35, -1.7, 1.35], 4).unwrap_err();
+/// assert!(err.to_string().contains("order 1 condition sum gamma_i = 1 fails"), "{err}");
+/// ```
+#[derive(Debug, Clone)]
+pub struct Splitting {
+    name: String,
+    valid: ValidSplitting,
+    requires_quadratic_kinetic: bool,
+    tolerance: Option<f64>,
+}
+
+impl Splitting {
+    /// A drift-first splitting from its arrays.
+    pub fn splitting(
+        name: impl Into<String>,
+        drift: &[f64],
+        kick: &[f64],
+        order: usize,
+        requires_quadratic_kinetic: bool,
+    ) -> Result<Self, Error> {
+        let spec = SplittingSpec {
+            drift: drift.to_vec(),
+            kick: kick.to_vec(),
+            order,
+            tolerance: None,
+        };
+        Self::from_spec(name.into(), &spec, requires_quadratic_kinetic)
+    }
+
+    /// A splitting from its specification (with a tolerance, if any).
+    pub fn from_spec(name: String, spec: &SplittingSpec, requires_quadratic_kinetic: bool) -> Result<Self, Error> {
+        match validate_splitting(spec) {
+            Ok(valid) => Ok(Splitting {
+                name,
+                valid,
+                requires_quadratic_kinetic,
+                tolerance: spec.tolerance,
+            }),
+            Err(e) => Err(Error::InvalidMethod {
+                name,
+                reason: e.to_string(),
+            }),
+        }
+    }
+
+    /// A composition of a symmetric second-order base from its weights.
+    pub fn composition(name: impl Into<String>, gamma: &[f64], order: usize) -> Result<Self, Error> {
+        let spec = CompositionSpec {
+            gamma: gamma.to_vec(),
+            order,
+            tolerance: None,
+        };
+        Self::from_composition_spec(name.into(), &spec)
+    }
+
+    /// A composition from its specification.
+    pub fn from_composition_spec(name: String, spec: &CompositionSpec) -> Result<Self, Error> {
+        match validate_composition(spec) {
+            Ok(valid) => Ok(Splitting {
+                name,
+                valid,
+                requires_quadratic_kinetic: false,
+                tolerance: spec.tolerance,
+            }),
+            Err(e) => Err(Error::InvalidMethod {
+                name,
+                reason: e.to_string(),
+            }),
+        }
+    }
+
+    /// The run-time copy of a compiled method's data.
+    pub fn from_data(data: &SplittingData) -> Result<Self, Error> {
+        match data.gamma {
+            Some(gamma) => Self::from_composition_spec(
+                data.name.to_string(),
+                &CompositionSpec {
+                    gamma: gamma.to_vec(),
+                    order: data.order,
+                    tolerance: data.tolerance,
+                },
+            ),
+            None => Self::from_spec(
+                data.name.to_string(),
+                &SplittingSpec {
+                    drift: data.drift.to_vec(),
+                    kick: data.kick.to_vec(),
+                    order: data.order,
+                    tolerance: data.tolerance,
+                },
+                data.requires_quadratic_kinetic,
+            ),
+        }
+    }
+
+    /// The method's name.
+    pub fn name(&self) -> &str {
+        &self.name
+    }
+    /// `"splitting"` or `"composition"`.
+    pub fn family(&self) -> &'static str {
+        if self.valid.gamma.is_some() {
+            "composition"
+        } else {
+            "splitting"
+        }
+    }
+    /// Declared order.
+    pub fn order(&self) -> usize {
+        self.valid.order
+    }
+    /// Force evaluations per step after FSAL reuse.
+    pub fn stages(&self) -> usize {
+        self.valid.stages
+    }
+    /// Drift fractions (drift-first).
+    pub fn drift(&self) -> &[f64] {
+        &self.valid.drift
+    }
+    /// Kick fractions.
+    pub fn kick(&self) -> &[f64] {
+        &self.valid.kick
+    }
+    /// Composition weights, for a composition.
+    pub fn gamma(&self) -> Option<&[f64]> {
+        self.valid.gamma.as_deref()
+    }
+    /// The merged word of sub-flows one step applies.
+    pub fn word(&self) -> &[Op] {
+        &self.valid.word
+    }
+    /// The order needs a quadratic kinetic energy.
+    pub fn requires_quadratic_kinetic(&self) -> bool {
+        self.requires_quadratic_kinetic
+    }
+    /// The tolerance factor of the checks, if one was set.
+    pub fn tolerance(&self) -> Option<f64> {
+        self.tolerance
+    }
+    /// Every consistency condition checked, with its value.
+    pub fn conditions(&self) -> &[SplitCondition] {
+        &self.valid.conditions
+    }
+    /// Derived flags: explicit and symplectic always; FSAL and symmetric from the word.
+    pub fn flags(&self) -> Flags {
+        Flags {
+            explicit: true,
+            fsal: self.valid.fsal,
+            symplectic: true,
+            symmetric: self.valid.symmetric,
+        }
+    }
+    /// The table row of this method.
+    pub fn info(&self) -> MethodInfo {
+        MethodInfo {
+            name: self.name.clone(),
+            family: self.family(),
+            order: self.order(),
+            stages: self.stages(),
+            embedded_order: None,
+            flags: self.flags(),
+        }
+    }
+}

@@ -1,0 +1,126 @@
+//! The stepper of a splitting or composition built at run time: the same word of
+//! sub-flows as a generated stepper, read from a list (same operation order, so the
+//! trajectories are bitwise equal).
+
+use super::splitting::check_phase_space;
+use super::{Counters, Stepper, Tolerances};
+use crate::flows::Splittable;
+use crate::hamiltonian::halves_mut;
+use crate::{lit, Error, MethodInfo, Splitting, State};
+use stormer_order::splitting::Flow;
+
+/// Stepper for a [`Splitting`] held in memory, on phase-space states `S = (q, p)`.
+///
+/// ```
+/// use stormer::{RuntimeSplitting, SecondOrder, Splitting, Stepper};
+/// struct Oscillator;
+/// impl SecondOrder for Oscillator {
+///     type Scalar = f64;
+///     type State = [f64; 2];
+///     fn acceleration(&self, _t: f64, q: &[f64], a: &mut [f64]) { a[0] = -q[0]; }
+/// }
+/// let kdk = Splitting::splitting("my_verlet", &[0.0, 1.0], &[0.5, 0.5], 2, false).unwrap();
+/// let mut s = RuntimeSplitting::new(&kdk, &[1.0, 0.0]).unwrap();
+/// let mut y = [0.0; 2];
+/// s.step(&Oscillator, 0.0, 0.1, &[1.0, 0.0], &mut y, None).unwrap();
+/// assert!((y[0] - 0.995).abs() < 1e-15);
+/// ```
+#[derive(Debug, Clone)]
+pub struct RuntimeSplitting<S: State> {
+    info: MethodInfo,
+    /// `(flow, fraction, node)` per op of the word.
+    ops: Vec<(Flow, S::Scalar, S::Scalar)>,
+    fsal: bool,
+    work: S,
+    cached: bool,
+    fresh: bool,
+    counters: Counters,
+}
+
+impl<S: State> RuntimeSplitting<S> {
+    /// A stepper for a general method (valid for every splittable problem). A method that
+    /// needs a quadratic kinetic energy is refused: use [`RuntimeSplitting::new_quadratic`]
+    /// for a [`crate::QuadraticKinetic`] problem.
+    pub fn new(method: &Splitting, y0: &S) -> Result<Self, Error> {
+        if method.requires_quadratic_kinetic() {
+            return Err(Error::Unsupported {
+                name: method.name().to_string(),
+                reason: "it reaches its order only when the kinetic energy is quadratic in p \
+                         (a Runge-Kutta-Nystrom method); use a general splitting or composition instead"
+                    .into(),
+            });
+        }
+        Self::new_quadratic(method, y0)
+    }
+
+    /// A stepper for any method, for a problem whose kinetic energy is quadratic.
+    pub fn new_quadratic(method: &Splitting, y0: &S) -> Result<Self, Error> {
+        check_phase_space(method.name(), y0)?;
+        Ok(RuntimeSplitting {
+            info: method.info(),
+            ops: method
+                .word()
+                .iter()
+                .map(|op| (op.flow, lit(op.coef), lit(op.node)))
+                .collect(),
+            fsal: method.flags().fsal,
+            work: y0.zeros_like(),
+            cached: false,
+            fresh: false,
+            counters: Counters::default(),
+        })
+    }
+}
+
+impl<P: Splittable> Stepper<P> for RuntimeSplitting<P::State> {
+    fn info(&self) -> MethodInfo {
+        self.info.clone()
+    }
+
+    fn error_order(&self) -> Option<usize> {
+        None
+    }
+
+    fn step(
+        &mut self,
+        p: &P,
+        t: P::Scalar,
+        h: P::Scalar,
+        y: &P::State,
+        y_new: &mut P::State,
+        _tol: Option<&Tolerances<P::Scalar>>,
+    ) -> Result<Option<P::Scalar>, Error> {
+        let cached = self.cached && self.fsal;
+        self.cached = false;
+        y_new.copy_from(y);
+        let (q, mom) = halves_mut(y_new.as_mut_slice());
+        let (v, f) = halves_mut(self.work.as_mut_slice());
+        for (i, &(flow, coef, node)) in self.ops.iter().enumerate() {
+            match flow {
+                Flow::Drift => p.drift(t + node * h, coef * h, q, mom, v),
+                Flow::Kick => {
+                    if !(i == 0 && cached) {
+                        p.force(t + node * h, q, f);
+                        self.counters.evaluations += 1;
+                    }
+                    p.kick(coef * h, f, mom);
+                }
+            }
+        }
+        self.fresh = self.fsal;
+        Ok(None)
+    }
+
+    fn accept(&mut self) {
+        self.cached = self.fresh;
+    }
+
+    fn reset(&mut self) {
+        self.cached = false;
+        self.fresh = false;
+    }
+
+    fn counters(&self) -> Counters {
+        self.counters
+    }
+}

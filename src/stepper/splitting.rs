@@ -1,0 +1,126 @@
+//! The stepper of a compiled splitting or composition: the macro's unrolled word of
+//! sub-flows, plus the reuse of the last force of a step by the next (FSAL).
+
+use super::{Counters, Stepper, Tolerances};
+use crate::flows::Admits;
+use crate::hamiltonian::halves_mut;
+use crate::method::SplittingMethod;
+use crate::{Error, MethodInfo, State};
+
+/// Stepper for a splitting or composition `M` (declared with `splitting!` or
+/// `composition!`) on phase-space states `S = (q, p)`.
+///
+/// Only problems of the method's class are accepted, by the type system: a method built
+/// for quadratic kinetic energies ([`crate::flows::QuadraticOnly`]) does not implement
+/// [`Stepper`] for a problem that is not [`crate::QuadraticKinetic`].
+///
+/// ```
+/// use stormer::{catalog::VelocityVerletKdk, SecondOrder, SplittingStepper, Stepper};
+/// struct Oscillator;
+/// impl SecondOrder for Oscillator {
+///     type Scalar = f64;
+///     type State = [f64; 2];
+///     fn acceleration(&self, _t: f64, q: &[f64], a: &mut [f64]) { a[0] = -q[0]; }
+/// }
+/// let mut verlet = SplittingStepper::<VelocityVerletKdk, [f64; 2]>::new(&[1.0, 0.0]).unwrap();
+/// let mut y = [0.0; 2];
+/// verlet.step(&Oscillator, 0.0, 0.1, &[1.0, 0.0], &mut y, None).unwrap();
+/// assert_eq!(y, [1.0 - 0.1 * 0.1 / 2.0, -0.1 * (1.0 + (1.0 - 0.005)) / 2.0]);
+/// ```
+#[derive(Debug, Clone)]
+pub struct SplittingStepper<M: SplittingMethod, S: State> {
+    co: M::Coeffs<S::Scalar>,
+    /// `(v, f)`: drift scratch and the force of the last kick.
+    work: S,
+    /// `f` holds the force at the current `(t, y)`.
+    cached: bool,
+    /// The last step left the force at its `y_new` in `f`.
+    fresh: bool,
+    counters: Counters,
+}
+
+impl<M: SplittingMethod, S: State> SplittingStepper<M, S> {
+    /// A stepper with buffers shaped like `y0`, which must have even length `(q, p)`.
+    pub fn new(y0: &S) -> Result<Self, Error> {
+        check_phase_space(M::DATA.name, y0)?;
+        Ok(SplittingStepper {
+            co: M::coeffs(),
+            work: y0.zeros_like(),
+            cached: false,
+            fresh: false,
+            counters: Counters::default(),
+        })
+    }
+
+    /// Boxed for run-time method choice.
+    pub fn boxed<P>(y0: &S) -> Result<Box<dyn Stepper<P>>, Error>
+    where
+        P: Admits<M::Class> + crate::Problem<Scalar = S::Scalar, State = S> + 'static,
+        S: 'static,
+    {
+        Ok(Box::new(Self::new(y0)?))
+    }
+}
+
+/// The error for a state that is not a phase-space `(q, p)` of even length.
+pub(crate) fn check_phase_space<S: State>(method: &str, y0: &S) -> Result<(), Error> {
+    if y0.dim() % 2 == 0 && y0.dim() > 0 {
+        Ok(())
+    } else {
+        Err(Error::Unsupported {
+            name: method.to_string(),
+            reason: format!(
+                "it needs a phase-space state (q, p) of even length, but the state has {} components",
+                y0.dim()
+            ),
+        })
+    }
+}
+
+impl<M, P> Stepper<P> for SplittingStepper<M, P::State>
+where
+    M: SplittingMethod,
+    P: Admits<M::Class>,
+{
+    fn info(&self) -> MethodInfo {
+        M::DATA.info()
+    }
+
+    fn error_order(&self) -> Option<usize> {
+        None
+    }
+
+    #[inline]
+    fn step(
+        &mut self,
+        p: &P,
+        t: P::Scalar,
+        h: P::Scalar,
+        y: &P::State,
+        y_new: &mut P::State,
+        _tol: Option<&Tolerances<P::Scalar>>,
+    ) -> Result<Option<P::Scalar>, Error> {
+        // the cached force is valid for this step only if nothing ran since `accept`
+        let cached = self.cached && M::DATA.flags.fsal;
+        self.cached = false;
+        y_new.copy_from(y);
+        let (q, mom) = halves_mut(y_new.as_mut_slice());
+        let (v, f) = halves_mut(self.work.as_mut_slice());
+        self.counters.evaluations += M::flows(&self.co, p, t, h, q, mom, v, f, cached);
+        self.fresh = M::DATA.flags.fsal;
+        Ok(None)
+    }
+
+    fn accept(&mut self) {
+        self.cached = self.fresh;
+    }
+
+    fn reset(&mut self) {
+        self.cached = false;
+        self.fresh = false;
+    }
+
+    fn counters(&self) -> Counters {
+        self.counters
+    }
+}

@@ -1,0 +1,134 @@
+//! The splitting machinery without the macros: a hand-written `SplittingMethod` (the
+//! expansion the `splitting!` macro must produce for velocity Verlet) against the run-time
+//! stepper of the same word, FSAL counting, and the type-level problem classes.
+
+use stormer::flows::{General, QuadraticKinetic};
+use stormer::method::SplittingData;
+use stormer::{
+    Driver, Flags, Hamiltonian, Real, RuntimeSplitting, SecondOrder, Splittable, Splitting, SplittingMethod,
+};
+use stormer::{SplittingStepper, Stepper};
+
+/// Velocity Verlet written out as the macro expands it: K(1/2) D(1) K(1/2).
+#[derive(Clone, Copy, Debug, Default)]
+struct HandKdk;
+
+impl SplittingMethod for HandKdk {
+    const DATA: SplittingData = SplittingData {
+        name: "hand_kdk",
+        family: "splitting",
+        order: 2,
+        drift: &[0.0, 1.0],
+        kick: &[0.5, 0.5],
+        gamma: None,
+        requires_quadratic_kinetic: false,
+        stages: 1,
+        tolerance: None,
+        flags: Flags {
+            explicit: true,
+            fsal: true,
+            symplectic: true,
+            symmetric: true,
+        },
+    };
+    type Class = General;
+    type Coeffs<T: Real> = [T; 3];
+    fn coeffs<T: Real>() -> [T; 3] {
+        [stormer::lit(0.5), stormer::lit(1.0), stormer::lit(1.0)]
+    }
+    #[inline(always)]
+    fn flows<P: Splittable>(
+        co: &[P::Scalar; 3],
+        problem: &P,
+        t: P::Scalar,
+        h: P::Scalar,
+        q: &mut [P::Scalar],
+        p: &mut [P::Scalar],
+        v: &mut [P::Scalar],
+        f: &mut [P::Scalar],
+        cached: bool,
+    ) -> u64 {
+        let mut evaluations = 0;
+        if !cached {
+            problem.force(t, q, f);
+            evaluations += 1;
+        }
+        problem.kick(co[0] * h, f, p);
+        problem.drift(t, co[1] * h, q, p, v);
+        problem.force(t + co[2] * h, q, f);
+        evaluations += 1;
+        problem.kick(co[0] * h, f, p);
+        evaluations
+    }
+}
+
+/// H = p^2/2 + p^4/4 + V(q) with V the pendulum's: a non-quadratic kinetic energy.
+struct Quartic;
+impl Hamiltonian for Quartic {
+    type Scalar = f64;
+    type State = [f64; 2];
+    fn kinetic_gradient(&self, p: &[f64], v: &mut [f64]) {
+        v[0] = p[0] + p[0] * p[0] * p[0];
+    }
+    fn force(&self, _t: f64, q: &[f64], f: &mut [f64]) {
+        f[0] = -q[0].sin();
+    }
+}
+
+struct Pendulum;
+impl SecondOrder for Pendulum {
+    type Scalar = f64;
+    type State = [f64; 2];
+    fn acceleration(&self, _t: f64, q: &[f64], a: &mut [f64]) {
+        a[0] = -q[0].sin();
+    }
+}
+
+fn assert_quadratic<P: QuadraticKinetic>(_: &P) {}
+
+#[test]
+fn generated_and_runtime_words_agree_bitwise_and_reuse_the_force() {
+    let y0 = [1.0, 0.3];
+    let kdk = Splitting::from_data(&HandKdk::DATA).unwrap();
+    let mut hand = SplittingStepper::<HandKdk, [f64; 2]>::new(&y0).unwrap();
+    let mut runtime = RuntimeSplitting::new(&kdk, &y0).unwrap();
+    let a = Driver::fixed(0.01).run(&Quartic, &mut hand, 0.0, &y0, 10.0).unwrap();
+    let b = Driver::fixed(0.01).run(&Quartic, &mut runtime, 0.0, &y0, 10.0).unwrap();
+    assert_eq!(a.y, b.y);
+    let steps = a.stats.steps;
+    assert_eq!(steps, 1000);
+    // one force evaluation per step, plus the very first
+    assert_eq!(Stepper::<Quartic>::counters(&hand).evaluations, steps + 1);
+    assert_eq!(Stepper::<Quartic>::counters(&runtime).evaluations, steps + 1);
+    assert_quadratic(&Pendulum);
+}
+
+#[test]
+fn odd_states_and_rkn_methods_on_general_problems_are_refused() {
+    let err = SplittingStepper::<HandKdk, [f64; 3]>::new(&[0.0; 3]).unwrap_err();
+    assert!(err.to_string().contains("even length"), "{err}");
+    let rkn = Splitting::splitting("rkn_like", &[0.0, 1.0], &[0.5, 0.5], 2, true).unwrap();
+    let err = RuntimeSplitting::<[f64; 2]>::new(&rkn, &[0.0; 2]).unwrap_err();
+    assert!(err.to_string().contains("quadratic"), "{err}");
+    assert!(RuntimeSplitting::<[f64; 2]>::new_quadratic(&rkn, &[0.0; 2]).is_ok());
+}
+
+#[test]
+fn verlet_is_second_order_on_a_non_quadratic_kinetic_energy() {
+    let y0 = [1.0, 0.3];
+    let reference = {
+        let mut s = SplittingStepper::<HandKdk, [f64; 2]>::new(&y0).unwrap();
+        Driver::fixed(1e-4).run(&Quartic, &mut s, 0.0, &y0, 1.0).unwrap()
+    };
+    let exact = *reference.y.last().unwrap();
+    let error = |n: usize| {
+        let mut s = SplittingStepper::<HandKdk, [f64; 2]>::new(&y0).unwrap();
+        let sol = Driver::fixed(1.0 / n as f64)
+            .run(&Quartic, &mut s, 0.0, &y0, 1.0)
+            .unwrap();
+        let y = sol.y.last().unwrap();
+        ((y[0] - exact[0]).powi(2) + (y[1] - exact[1]).powi(2)).sqrt()
+    };
+    let order = (error(50) / error(100)).log2();
+    assert!((order - 2.0).abs() < 0.05, "{order}");
+}
