@@ -1,14 +1,17 @@
 //! What `--method` names: a catalog method, a method file, or the theta method.
 
 use std::path::{Path, PathBuf};
-use stormer::registry::{self, normalize};
-use stormer::scenes::Scene;
+use stormer::method::SplittingData;
+use stormer::registry::{self, normalize, MethodRef};
+use stormer::scenes::{Scene, SplittingChoice};
 use stormer::{Error, ImplicitOptions, Stepper, Tableau, TableauData};
 
 /// A method chosen on the command line.
 pub enum MethodChoice {
-    /// A compiled catalog method.
+    /// A compiled catalog tableau.
     Catalog(&'static TableauData),
+    /// A compiled catalog splitting or composition.
+    Splitting(&'static SplittingData),
     /// A tableau read from a TOML method file.
     File {
         /// The validated tableau.
@@ -44,13 +47,17 @@ impl MethodChoice {
             let tableau = Tableau::from_file(&path)?;
             return Ok(MethodChoice::File { tableau, path });
         }
-        Ok(MethodChoice::Catalog(registry::find(name)?))
+        Ok(match registry::lookup(name)? {
+            MethodRef::Butcher(d) => MethodChoice::Catalog(d),
+            MethodRef::Splitting(d) => MethodChoice::Splitting(d),
+        })
     }
 
     /// The short name used in output file names and summaries.
     pub fn label(&self) -> String {
         match self {
             MethodChoice::Catalog(d) => d.name.to_string(),
+            MethodChoice::Splitting(d) => d.name.to_string(),
             MethodChoice::File { tableau, .. } => tableau.name().to_string(),
             MethodChoice::Theta(t) => t.name().to_string(),
         }
@@ -60,15 +67,27 @@ impl MethodChoice {
     pub fn tableau(&self) -> Result<Tableau, Error> {
         match self {
             MethodChoice::Catalog(d) => Tableau::from_data(d),
+            MethodChoice::Splitting(d) => Err(Error::Unsupported {
+                name: d.name.to_string(),
+                reason: "it is a splitting or composition, not a Butcher tableau".into(),
+            }),
             MethodChoice::File { tableau, .. } | MethodChoice::Theta(tableau) => Ok(tableau.clone()),
         }
     }
 
     /// A stepper for the scene's model: the compiled stepper of a catalog method, the
-    /// run-time one of a file or theta tableau.
-    pub fn stepper<S: Scene>(&self, y0: &S::State, implicit: &ImplicitOptions) -> Result<Box<dyn Stepper<S>>, Error> {
+    /// run-time one of a file or theta tableau. A splitting goes through the model
+    /// ([`Scene::splitting_stepper`]), which refuses it with the reason when the model is
+    /// not a Hamiltonian of the kind the method needs.
+    pub fn stepper<S: Scene>(
+        &self,
+        model: &S,
+        y0: &S::State,
+        implicit: &ImplicitOptions,
+    ) -> Result<Box<dyn Stepper<S>>, Error> {
         match self {
             MethodChoice::Catalog(d) => registry::stepper::<S>(d.name, y0, implicit),
+            MethodChoice::Splitting(d) => model.splitting_stepper(SplittingChoice::Compiled(d), y0),
             MethodChoice::File { tableau, .. } | MethodChoice::Theta(tableau) => {
                 registry::tableau_stepper::<S>(tableau, y0, implicit)
             }

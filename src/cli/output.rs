@@ -104,9 +104,9 @@ impl<'a, S: Scene> CsvRecorder<'a, S> {
             line: String::new(),
         };
         let mut header = String::from("t");
-        for c in S::COMPONENTS {
+        for c in setup.model.components(&setup.y0) {
             header.push(',');
-            header.push_str(c);
+            header.push_str(&c);
         }
         if setup.initial_energy().is_some() {
             header.push_str(",energy");

@@ -119,7 +119,7 @@ impl SceneVisitor for Runner<'_> {
         if let Some(n) = args.max_iterations {
             implicit.max_iterations = n;
         }
-        let mut stepper = method.stepper::<S>(&setup.y0, &implicit)?;
+        let mut stepper = method.stepper::<S>(&setup.model, &setup.y0, &implicit)?;
         let (t0, t_end) = (setup.run.t0, args.t_end.unwrap_or(setup.run.t_end));
         let every = args.every.unwrap_or(setup.run.every);
         let adaptive = args.rtol.is_some() || args.atol.is_some();

@@ -196,7 +196,7 @@ pub fn run(method: &str, format: TextFormat) -> anyhow::Result<()> {
     let source = match &choice {
         MethodChoice::File { path, .. } => path.display().to_string(),
         MethodChoice::Theta(_) => "the theta method (alpha = 1/2)".to_string(),
-        MethodChoice::Catalog(_) => "catalog".to_string(),
+        MethodChoice::Catalog(_) | MethodChoice::Splitting(_) => "catalog".to_string(),
     };
     let report = Report::new(choice.tableau()?, source);
     let text = match format {

@@ -2,8 +2,9 @@
 //! scene by name or from a file.
 
 use super::file::{model_name, parse_as, Source};
-use super::{AnyScene, DampedOscillator, Harmonic, Pendulum, Scene, MODELS};
+use super::{AnyScene, CentralForce, DampedOscillator, Harmonic, NBody, Pendulum, Scene, MODELS};
 use crate::Error;
+use nalgebra::DVector;
 use std::path::Path;
 
 /// A scene file compiled into the crate.
@@ -29,6 +30,18 @@ pub const BUILTIN: &[BuiltinScene] = &[
         name: "damped-oscillator",
         text: include_str!("../../scenes/damped-oscillator.toml"),
     },
+    BuiltinScene {
+        name: "kepler",
+        text: include_str!("../../scenes/kepler.toml"),
+    },
+    BuiltinScene {
+        name: "kepler-e06",
+        text: include_str!("../../scenes/kepler-e06.toml"),
+    },
+    BuiltinScene {
+        name: "outer-solar-system",
+        text: include_str!("../../scenes/outer-solar-system.toml"),
+    },
 ];
 
 /// The built-in scene called `name` (`-` and `_` both accepted).
@@ -36,7 +49,8 @@ pub const BUILTIN: &[BuiltinScene] = &[
 /// ```
 /// let scene = stormer::scenes::builtin("damped_oscillator").unwrap();
 /// assert_eq!(scene.name, "damped-oscillator");
-/// assert!(stormer::scenes::builtin("kepler").is_none());
+/// assert!(stormer::scenes::builtin("kepler-e06").is_some());
+/// assert!(stormer::scenes::builtin("inner-solar-system").is_none());
 /// ```
 pub fn builtin(name: &str) -> Option<&'static BuiltinScene> {
     let key = name.trim().to_lowercase().replace('_', "-");
@@ -100,6 +114,8 @@ pub fn parse(text: &str, origin: &str, name: &str) -> Result<AnyScene, Error> {
         Harmonic::MODEL => AnyScene::Harmonic(parse_as(&src, name)?),
         DampedOscillator::MODEL => AnyScene::DampedOscillator(parse_as(&src, name)?),
         Pendulum::MODEL => AnyScene::Pendulum(parse_as(&src, name)?),
+        CentralForce::<f64, DVector<f64>>::MODEL => AnyScene::CentralForce(parse_as(&src, name)?),
+        NBody::<f64, DVector<f64>>::MODEL => AnyScene::NBody(parse_as(&src, name)?),
         other => {
             return Err(src.error_at(
                 model.span(),
@@ -116,10 +132,18 @@ mod tests {
 
     #[test]
     fn every_builtin_scene_loads_with_the_users_values() {
-        for s in BUILTIN {
+        let models = [
+            ("pendulum", "pendulum"),
+            ("harmonic", "harmonic"),
+            ("damped-oscillator", "damped-oscillator"),
+            ("kepler", "n-body"),
+            ("kepler-e06", "central-force"),
+            ("outer-solar-system", "n-body"),
+        ];
+        assert_eq!(BUILTIN.len(), models.len());
+        for (s, (name, model)) in BUILTIN.iter().zip(models) {
             let scene = load(s.name).unwrap();
-            assert_eq!(scene.name(), s.name);
-            assert_eq!(scene.model(), s.name, "each built-in is its model's scene");
+            assert_eq!((scene.name(), scene.model()), (name, model));
         }
         let AnyScene::DampedOscillator(d) = load("damped-oscillator").unwrap() else {
             panic!("model")

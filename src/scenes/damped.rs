@@ -1,8 +1,8 @@
 //! The damped oscillator `x'' = -w0^2 x - (w0/Q) x'` (SCENES.md 2).
 
 use super::file::{Number, Source};
-use super::{OscillatorInitial, Scene};
-use crate::{Error, Problem};
+use super::{not_splittable, OscillatorInitial, Scene, SplittingChoice};
+use crate::{Error, Problem, Stepper};
 use serde::Deserialize;
 
 /// The damped oscillator `x'' = -w0^2 x - (w0/Q) x'`, state `[x, v]`.
@@ -76,20 +76,33 @@ pub struct DampedParameters {
 
 impl Scene for DampedOscillator {
     const MODEL: &'static str = "damped-oscillator";
-    const COMPONENTS: &'static [&'static str] = &["x", "v"];
     type Parameters = DampedParameters;
     type Initial = OscillatorInitial;
 
-    fn from_parameters(parameters: Option<DampedParameters>, src: &Source<'_>) -> Result<Self, Error> {
+    fn build(
+        parameters: Option<DampedParameters>,
+        initial: OscillatorInitial,
+        src: &Source<'_>,
+    ) -> Result<(Self, [f64; 2]), Error> {
         let p = parameters.ok_or_else(|| src.missing("parameters", "w0 and Q"))?;
-        Ok(DampedOscillator::new(
+        let model = DampedOscillator::new(
             src.positive("parameters.w0", &p.w0)?,
             src.positive("parameters.Q", &p.q)?,
-        ))
+        );
+        Ok((model, initial.state(src)?))
     }
 
-    fn initial_state(&self, initial: OscillatorInitial, src: &Source<'_>) -> Result<[f64; 2], Error> {
-        initial.state(src)
+    fn components(&self, _y0: &Self::State) -> Vec<String> {
+        vec!["x".into(), "v".into()]
+    }
+
+    /// Refused: friction makes the oscillator non-Hamiltonian.
+    fn splitting_stepper(&self, method: SplittingChoice<'_>, _y0: &[f64; 2]) -> Result<Box<dyn Stepper<Self>>, Error> {
+        Err(not_splittable(
+            method.name(),
+            "the damped oscillator is not a Hamiltonian system: it has friction (the -(w0/Q) v term), so there \
+             are no drift and kick flows to split it into and a symplectic method's guarantees do not apply",
+        ))
     }
 
     fn exact(&self, t0: f64, y0: &[f64; 2], t: f64) -> Option<[f64; 2]> {

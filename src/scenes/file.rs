@@ -92,7 +92,9 @@ struct SceneFile<P, I> {
     description: Option<String>,
     #[serde(default = "none")]
     parameters: Option<P>,
-    initial: I,
+    // the N-body model writes its initial state as a list of `[[bodies]]`
+    #[serde(default = "none", alias = "bodies")]
+    initial: Option<I>,
     run: RunTable,
 }
 
@@ -150,8 +152,10 @@ pub(super) fn model_name(src: &Source<'_>) -> Result<Spanned<String>, Error> {
 /// Second pass: the whole file read as a scene of model `S`.
 pub(super) fn parse_as<S: Scene>(src: &Source<'_>, name: &str) -> Result<Setup<S>, Error> {
     let file: SceneFile<S::Parameters, S::Initial> = toml::from_str(src.text).map_err(|e| src.toml_error(&e))?;
-    let model = S::from_parameters(file.parameters, src)?;
-    let y0 = model.initial_state(file.initial, src)?;
+    let initial = file
+        .initial
+        .ok_or_else(|| src.error(format!("missing {} (the initial state)", S::INITIAL)))?;
+    let (model, y0) = S::build(file.parameters, initial, src)?;
     let run = file.run.check(src)?;
     Ok(Setup {
         name: name.to_string(),

@@ -1,8 +1,8 @@
 //! The harmonic oscillator `x'' = -w0^2 x` (SCENES.md 2).
 
 use super::file::{Number, Source};
-use super::Scene;
-use crate::{Error, Problem};
+use super::{quadratic_splitting, Scene, SplittingChoice};
+use crate::{Error, SecondOrder, Stepper};
 use serde::Deserialize;
 
 /// The harmonic oscillator `x'' = -w0^2 x`, state `[x, v]`.
@@ -10,6 +10,7 @@ use serde::Deserialize;
 /// Energy `v^2/2 + w0^2 x^2/2`; exact solution
 /// `x(t) = x0 cos(w0 t) + (v0/w0) sin(w0 t)`, `v(t) = v0 cos(w0 t) - w0 x0 sin(w0 t)`.
 /// It is the model problem of linear stability (Stormer-Verlet is stable for `h w0 < 2`).
+/// A [`SecondOrder`] problem: Runge-Kutta methods and splittings both apply.
 ///
 /// ```
 /// use stormer::scenes::{Harmonic, Scene};
@@ -37,17 +38,17 @@ impl Harmonic {
     }
 }
 
-impl Problem for Harmonic {
+impl SecondOrder for Harmonic {
     type Scalar = f64;
     type State = [f64; 2];
 
     #[inline]
-    fn rhs(&self, _t: f64, y: &[f64; 2], dy: &mut [f64; 2]) {
-        *dy = [y[1], -self.w0_squared * y[0]];
+    fn acceleration(&self, _t: f64, q: &[f64], a: &mut [f64]) {
+        a[0] = -self.w0_squared * q[0];
     }
 
-    fn energy(&self, _t: f64, y: &[f64; 2]) -> Option<f64> {
-        Some(0.5 * y[1] * y[1] + 0.5 * self.w0_squared * y[0] * y[0])
+    fn energy(&self, _t: f64, q: &[f64], v: &[f64]) -> Option<f64> {
+        Some(0.5 * v[0] * v[0] + 0.5 * self.w0_squared * q[0] * q[0])
     }
 }
 
@@ -78,17 +79,25 @@ impl OscillatorInitial {
 
 impl Scene for Harmonic {
     const MODEL: &'static str = "harmonic";
-    const COMPONENTS: &'static [&'static str] = &["x", "v"];
     type Parameters = HarmonicParameters;
     type Initial = OscillatorInitial;
 
-    fn from_parameters(parameters: Option<HarmonicParameters>, src: &Source<'_>) -> Result<Self, Error> {
+    fn build(
+        parameters: Option<HarmonicParameters>,
+        initial: OscillatorInitial,
+        src: &Source<'_>,
+    ) -> Result<(Self, [f64; 2]), Error> {
         let p = parameters.ok_or_else(|| src.missing("parameters", "w0"))?;
-        Ok(Harmonic::new(src.positive("parameters.w0", &p.w0)?))
+        let model = Harmonic::new(src.positive("parameters.w0", &p.w0)?);
+        Ok((model, initial.state(src)?))
     }
 
-    fn initial_state(&self, initial: OscillatorInitial, src: &Source<'_>) -> Result<[f64; 2], Error> {
-        initial.state(src)
+    fn components(&self, _y0: &Self::State) -> Vec<String> {
+        vec!["x".into(), "v".into()]
+    }
+
+    fn splitting_stepper(&self, method: SplittingChoice<'_>, y0: &[f64; 2]) -> Result<Box<dyn Stepper<Self>>, Error> {
+        quadratic_splitting(method, y0)
     }
 
     fn exact(&self, t0: f64, y0: &[f64; 2], t: f64) -> Option<[f64; 2]> {

@@ -22,7 +22,8 @@
 //! naming the file, the line and the field, never a panic.
 //!
 //! Each model is a [`Problem`] that also implements [`Scene`] (the names of its
-//! components, how its tables are read, its exact solution when there is one). A loaded
+//! components, how its tables are read, its exact solution when there is one, and the
+//! splitting methods it admits). A loaded
 //! file is a [`Setup`]: the model, its initial state and its [`RunSettings`]. Since the
 //! model is only known at run time, [`AnyScene`] holds one of them and hands it to a
 //! [`SceneVisitor`], whose code is generic over the model:
@@ -31,9 +32,9 @@
 //! use stormer::scenes::{self, Scene, SceneVisitor, Setup};
 //! struct Components;
 //! impl SceneVisitor for Components {
-//!     type Output = Vec<&'static str>;
-//!     fn visit<S: Scene>(self, _setup: Setup<S>) -> Self::Output {
-//!         S::COMPONENTS.to_vec()
+//!     type Output = Vec<String>;
+//!     fn visit<S: Scene>(self, setup: Setup<S>) -> Self::Output {
+//!         setup.model.components(&setup.y0)
 //!     }
 //! }
 //! let pendulum = scenes::load("pendulum").unwrap();
@@ -41,32 +42,45 @@
 //! ```
 
 mod builtin;
+mod central_force;
 mod damped;
 mod file;
 mod harmonic;
+mod nbody;
+mod nbody_file;
+mod orbit;
 mod pendulum;
+mod splitting;
 
 pub use builtin::{builtin, load, parse, BuiltinScene, BUILTIN};
+pub use central_force::{CentralForce, CentralForceInitial, CentralForceParameters};
 pub use damped::{DampedOscillator, DampedParameters};
 pub use file::{Number, RunSettings, Source};
 pub use harmonic::{Harmonic, HarmonicParameters, OscillatorInitial};
+pub use nbody::NBody;
+pub use nbody_file::{BodyEntry, GravityParameters};
+pub use orbit::{eccentric_anomaly, Orbit};
 pub use pendulum::{NoParameters, Pendulum, PendulumInitial, PENDULUM_PERIOD_45_DEGREES};
+pub use splitting::{general_splitting, not_splittable, quadratic_splitting, SplittingChoice};
 
-use crate::{Error, Problem};
+use crate::{Error, Problem, Stepper};
+use nalgebra::DVector;
 use serde::de::DeserializeOwned;
 
 /// A model of a scene: a problem in `f64` that knows how a scene file describes it.
 ///
 /// The trait gives what the tools around a run need and the [`Problem`] does not: the
 /// names of the state's components (the CSV header), how the file's `[parameters]` and
-/// `[initial]` tables are read and checked, and the exact solution where there is one.
-/// Whether the scene has an energy is [`Problem::energy`]'s answer.
+/// `[initial]` tables are read and checked, the exact solution where there is one, and
+/// the splitting methods the model admits. Whether the scene has an energy is
+/// [`Problem::energy`]'s answer.
 pub trait Scene: Problem<Scalar = f64> + Sized + 'static {
     /// The `model = "..."` name in scene files.
     const MODEL: &'static str;
 
-    /// Names of the state's components, in order (`["x", "v"]`).
-    const COMPONENTS: &'static [&'static str];
+    /// What the file gives the initial state in, for the error when it is missing
+    /// (`"table [initial]"`; the N-body model reads a list of `[[bodies]]`).
+    const INITIAL: &'static str = "table [initial]";
 
     /// The `[parameters]` table as written.
     type Parameters: DeserializeOwned;
@@ -74,16 +88,41 @@ pub trait Scene: Problem<Scalar = f64> + Sized + 'static {
     /// The `[initial]` table as written.
     type Initial: DeserializeOwned;
 
-    /// The model from its `[parameters]` table (`None` when the file has none).
-    fn from_parameters(parameters: Option<Self::Parameters>, src: &Source<'_>) -> Result<Self, Error>;
+    /// The model and its initial state from the file's `[parameters]` (`None` when the
+    /// file has none) and `[initial]` tables, every value checked.
+    fn build(
+        parameters: Option<Self::Parameters>,
+        initial: Self::Initial,
+        src: &Source<'_>,
+    ) -> Result<(Self, Self::State), Error>;
 
-    /// The initial state from the `[initial]` table.
-    fn initial_state(&self, initial: Self::Initial, src: &Source<'_>) -> Result<Self::State, Error>;
+    /// Names of the components of the model's states (shaped like `y0`), in order
+    /// (`["x", "v"]`): the CSV header.
+    fn components(&self, y0: &Self::State) -> Vec<String>;
 
     /// The exact state at `t` of the solution through `(t0, y0)`, when it is known in
     /// closed form.
     fn exact(&self, _t0: f64, _y0: &Self::State, _t: f64) -> Option<Self::State> {
         None
+    }
+
+    /// A stepper for the splitting or composition `method` on this model, or the sentence
+    /// saying why the model does not admit one and what to use instead.
+    ///
+    /// The default refuses ([`not_splittable`]): a model that is a Hamiltonian returns
+    /// [`quadratic_splitting`] or [`general_splitting`], according to its kinetic energy.
+    fn splitting_stepper(
+        &self,
+        method: SplittingChoice<'_>,
+        _y0: &Self::State,
+    ) -> Result<Box<dyn Stepper<Self>>, Error> {
+        Err(not_splittable(
+            method.name(),
+            &format!(
+                "the {} model does not declare drift and kick sub-flows (it is not set up as a Hamiltonian)",
+                Self::MODEL
+            ),
+        ))
     }
 }
 
@@ -134,54 +173,62 @@ pub enum AnyScene {
     DampedOscillator(Setup<DampedOscillator>),
     /// `model = "pendulum"`.
     Pendulum(Setup<Pendulum>),
+    /// `model = "central-force"`: one body around a fixed centre, `H = |p|^2/2 - mu/|q|`.
+    CentralForce(Setup<CentralForce<f64, DVector<f64>>>),
+    /// `model = "n-body"`: gravitating bodies read from the file.
+    NBody(Setup<NBody<f64, DVector<f64>>>),
 }
 
 /// The model names a scene file can give, in the order of [`AnyScene`].
-pub const MODELS: &[&str] = &[Harmonic::MODEL, DampedOscillator::MODEL, Pendulum::MODEL];
+pub const MODELS: &[&str] = &[
+    Harmonic::MODEL,
+    DampedOscillator::MODEL,
+    Pendulum::MODEL,
+    CentralForce::<f64, DVector<f64>>::MODEL,
+    NBody::<f64, DVector<f64>>::MODEL,
+];
+
+/// `$body` with `$s` bound to the setup of whichever model `$scene` holds.
+macro_rules! each {
+    ($scene:expr, $s:ident => $body:expr) => {
+        match $scene {
+            AnyScene::Harmonic($s) => $body,
+            AnyScene::DampedOscillator($s) => $body,
+            AnyScene::Pendulum($s) => $body,
+            AnyScene::CentralForce($s) => $body,
+            AnyScene::NBody($s) => $body,
+        }
+    };
+}
+
+/// `S::MODEL` for the setup `_s`, whatever its model (used through [`each!`]).
+fn model_of<S: Scene>(_s: &Setup<S>) -> &'static str {
+    S::MODEL
+}
 
 impl AnyScene {
     /// Runs `visitor` on the scene's setup.
     pub fn visit<V: SceneVisitor>(self, visitor: V) -> V::Output {
-        match self {
-            AnyScene::Harmonic(s) => visitor.visit(s),
-            AnyScene::DampedOscillator(s) => visitor.visit(s),
-            AnyScene::Pendulum(s) => visitor.visit(s),
-        }
+        each!(self, s => visitor.visit(s))
     }
 
     /// The scene's name.
     pub fn name(&self) -> &str {
-        match self {
-            AnyScene::Harmonic(s) => &s.name,
-            AnyScene::DampedOscillator(s) => &s.name,
-            AnyScene::Pendulum(s) => &s.name,
-        }
+        each!(self, s => &s.name)
     }
 
     /// The scene's run settings.
     pub fn run(&self) -> &RunSettings {
-        match self {
-            AnyScene::Harmonic(s) => &s.run,
-            AnyScene::DampedOscillator(s) => &s.run,
-            AnyScene::Pendulum(s) => &s.run,
-        }
+        each!(self, s => &s.run)
     }
 
     /// The file's `description`, if any.
     pub fn description(&self) -> Option<&str> {
-        match self {
-            AnyScene::Harmonic(s) => s.description.as_deref(),
-            AnyScene::DampedOscillator(s) => s.description.as_deref(),
-            AnyScene::Pendulum(s) => s.description.as_deref(),
-        }
+        each!(self, s => s.description.as_deref())
     }
 
     /// The model name.
     pub fn model(&self) -> &'static str {
-        match self {
-            AnyScene::Harmonic(_) => Harmonic::MODEL,
-            AnyScene::DampedOscillator(_) => DampedOscillator::MODEL,
-            AnyScene::Pendulum(_) => Pendulum::MODEL,
-        }
+        each!(self, s => model_of(s))
     }
 }

@@ -1,8 +1,8 @@
 //! The simple pendulum `theta'' = -sin(theta)` (SCENES.md 1).
 
 use super::file::{Number, Source};
-use super::Scene;
-use crate::{Error, Problem};
+use super::{quadratic_splitting, Scene, SplittingChoice};
+use crate::{Error, SecondOrder, Stepper};
 use serde::Deserialize;
 
 /// The exact period of the pendulum released at rest from `theta0 = pi/4`, in units of
@@ -13,8 +13,11 @@ pub const PENDULUM_PERIOD_45_DEGREES: f64 = 6.534345229832591;
 /// The simple pendulum in the time unit `sqrt(l/g)`: `theta'' = -sin(theta)`, state
 /// `[theta, omega]`, energy `H = omega^2/2 - cos(theta)`.
 ///
-/// There is no closed-form trajectory to compare with ([`Scene::exact`] is `None`); the
-/// checkable fact is the period, [`PENDULUM_PERIOD_45_DEGREES`] for `theta0 = pi/4`.
+/// A [`SecondOrder`] problem (`q = theta`, `p = omega`, unit mass), so every Runge-Kutta
+/// method runs on its first-order form and every splitting and composition on its drift
+/// and kick. There is no closed-form trajectory to compare with ([`Scene::exact`] is
+/// `None`); the checkable fact is the period, [`PENDULUM_PERIOD_45_DEGREES`] for
+/// `theta0 = pi/4`.
 ///
 /// ```
 /// use stormer::scenes::Pendulum;
@@ -27,17 +30,17 @@ pub const PENDULUM_PERIOD_45_DEGREES: f64 = 6.534345229832591;
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub struct Pendulum;
 
-impl Problem for Pendulum {
+impl SecondOrder for Pendulum {
     type Scalar = f64;
     type State = [f64; 2];
 
     #[inline]
-    fn rhs(&self, _t: f64, y: &[f64; 2], dy: &mut [f64; 2]) {
-        *dy = [y[1], -y[0].sin()];
+    fn acceleration(&self, _t: f64, q: &[f64], a: &mut [f64]) {
+        a[0] = -q[0].sin();
     }
 
-    fn energy(&self, _t: f64, y: &[f64; 2]) -> Option<f64> {
-        Some(0.5 * y[1] * y[1] - y[0].cos())
+    fn energy(&self, _t: f64, q: &[f64], omega: &[f64]) -> Option<f64> {
+        Some(0.5 * omega[0] * omega[0] - q[0].cos())
     }
 }
 
@@ -59,19 +62,27 @@ pub struct PendulumInitial {
 
 impl Scene for Pendulum {
     const MODEL: &'static str = "pendulum";
-    const COMPONENTS: &'static [&'static str] = &["theta", "omega"];
     type Parameters = NoParameters;
     type Initial = PendulumInitial;
 
-    fn from_parameters(_parameters: Option<NoParameters>, _src: &Source<'_>) -> Result<Self, Error> {
-        Ok(Pendulum)
-    }
-
-    fn initial_state(&self, initial: PendulumInitial, src: &Source<'_>) -> Result<[f64; 2], Error> {
-        Ok([
+    fn build(
+        _parameters: Option<NoParameters>,
+        initial: PendulumInitial,
+        src: &Source<'_>,
+    ) -> Result<(Self, [f64; 2]), Error> {
+        let y0 = [
             src.finite("initial.theta", &initial.theta)?,
             src.finite("initial.omega", &initial.omega)?,
-        ])
+        ];
+        Ok((Pendulum, y0))
+    }
+
+    fn components(&self, _y0: &Self::State) -> Vec<String> {
+        vec!["theta".into(), "omega".into()]
+    }
+
+    fn splitting_stepper(&self, method: SplittingChoice<'_>, y0: &[f64; 2]) -> Result<Box<dyn Stepper<Self>>, Error> {
+        quadratic_splitting(method, y0)
     }
 }
 
