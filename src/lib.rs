@@ -38,6 +38,16 @@ pub use stepper::{
 #[cfg(feature = "macros")]
 pub use stormer_macros::tableau;
 
+/// Declares a splitting method (drift/kick sub-flows), checks it at compile time and
+/// generates its unrolled step. See `docs/define-your-own-scheme.md`.
+#[cfg(feature = "macros")]
+pub use stormer_macros::splitting;
+
+/// Declares a composition of a symmetric second-order base, checks it at compile time and
+/// generates its unrolled step. See `docs/define-your-own-scheme.md`.
+#[cfg(feature = "macros")]
+pub use stormer_macros::composition;
+
 /// The order-condition algebra shared with the macros (re-exported for `verify`-style use).
 pub use stormer_order as order;
 
@@ -52,7 +62,8 @@ pub mod prelude {
 /// Items the macros' expansions use; not part of the public API.
 #[doc(hidden)]
 pub mod __private {
-    pub use crate::method::{ButcherMethod, ExplicitMethod, Flags, TableauData};
+    pub use crate::flows::{General, QuadraticOnly, Splittable};
+    pub use crate::method::{ButcherMethod, ExplicitMethod, Flags, SplittingData, SplittingMethod, TableauData};
     pub use crate::real::lit;
     pub use crate::stepper::{ExplicitRk, ImplicitOptions, ImplicitRk, Stepper};
     pub use crate::{Problem, Real, State, Tableau};

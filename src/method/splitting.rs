@@ -102,7 +102,7 @@ pub trait SplittingMethod: Copy + Default + Send + Sync + core::fmt::Debug + 'st
 /// assert_eq!(kdk.stages(), 1);
 /// // a wrong weight is an error naming the condition
 /// let err = Splitting::composition("jump", &[1.35, -1.7, 1.35], 4).unwrap_err();
-/// assert!(err.to_string().contains("order 1 condition sum gamma_i = 1 fails"), "{err}");
+/// assert!(err.to_string().contains("order 4 condition sum gamma_i^3 = 0 fails"), "{err}");
 /// ```
 #[derive(Debug, Clone)]
 pub struct Splitting {
@@ -114,6 +114,7 @@ pub struct Splitting {
 
 impl Splitting {
     /// A drift-first splitting from its arrays.
+    #[allow(clippy::self_named_constructors)] // reads as `Splitting::splitting` vs `::composition`
     pub fn splitting(
         name: impl Into<String>,
         drift: &[f64],
