@@ -56,6 +56,11 @@ pub fn kick<T: Real>(tau: T, f: &[T], p: &mut [T]) {
 /// Implemented for every [`crate::SecondOrder`] problem; a [`crate::Hamiltonian`] with
 /// `T = |p|^2 / (2m)` (or any `p^T M^-1 p / 2`) opts in with an empty impl. A method
 /// with `requires_quadratic_kinetic` only accepts problems with this trait.
+#[diagnostic::on_unimplemented(
+    message = "`{Self}` is not declared `QuadraticKinetic`, which this method needs",
+    label = "a method built for quadratic kinetic energies (Runge-Kutta-Nystrom) cannot step this problem",
+    note = "use a general splitting or composition, or add `impl QuadraticKinetic for {Self} {{}}` if its kinetic energy is quadratic in p"
+)]
 pub trait QuadraticKinetic: Splittable {}
 
 /// The class of problems a splitting method is valid for (a type-level flag of
@@ -75,6 +80,10 @@ impl ProblemClass for QuadraticOnly {}
 
 /// `P: Admits<C>` when problem `P` belongs to class `C`: every splittable problem admits
 /// [`General`] methods, only [`QuadraticKinetic`] ones admit [`QuadraticOnly`] methods.
+#[diagnostic::on_unimplemented(
+    message = "`{Self}` does not admit methods of class `{C}`",
+    note = "a method of class `QuadraticOnly` (Runge-Kutta-Nystrom) needs a `QuadraticKinetic` problem"
+)]
 pub trait Admits<C: ProblemClass>: Splittable {}
 
 impl<P: Splittable> Admits<General> for P {}

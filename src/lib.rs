@@ -51,6 +51,14 @@ pub use stormer_macros::composition;
 /// The order-condition algebra shared with the macros (re-exported for `verify`-style use).
 pub use stormer_order as order;
 
+/// The user guide (the pages of `docs/`), compiled here so that its examples run as tests.
+pub mod guide {
+    #[doc = include_str!("../docs/define-your-own-scheme.md")]
+    pub mod define_your_own_scheme {}
+    #[doc = include_str!("../docs/declaring-a-method.md")]
+    pub mod declaring_a_method {}
+}
+
 /// The everyday items in one import.
 pub mod prelude {
     pub use crate::{
