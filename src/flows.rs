@@ -18,9 +18,15 @@ use crate::{Problem, Real};
 /// Implemented for every [`crate::Hamiltonian`] (and so every [`crate::SecondOrder`]
 /// problem); implement it directly for a problem whose drift is not `q += tau dT/dp`.
 pub trait Splittable: Problem {
+    /// Memory a stepper keeps for the sub-flows between calls, e.g. the rotation of a
+    /// uniform magnetic field for the step sizes in use (computed once, not per step);
+    /// `()` for most problems. Each stepper owns one, created with `Default`.
+    type FlowCache: Default + Clone + core::fmt::Debug;
+
     /// The exact flow of the first part for time `tau` (possibly negative), starting at
     /// time `t`, in place on the halves `q` and `p` (each of length `n`). `scratch` is `n`
-    /// values of workspace, with no meaning before or after the call.
+    /// values of workspace, with no meaning before or after the call; `cache` is the
+    /// calling stepper's [`Splittable::FlowCache`].
     fn drift(
         &self,
         t: Self::Scalar,
@@ -28,6 +34,7 @@ pub trait Splittable: Problem {
         q: &mut [Self::Scalar],
         p: &mut [Self::Scalar],
         scratch: &mut [Self::Scalar],
+        cache: &mut Self::FlowCache,
     );
 
     /// The force (the rate of `p` under the kick) at `(t, q)`, written into `f`.

@@ -46,6 +46,7 @@ impl SplittingMethod for HandKdk {
         p: &mut [P::Scalar],
         v: &mut [P::Scalar],
         f: &mut [P::Scalar],
+        cache: &mut P::FlowCache,
         cached: bool,
     ) -> u64 {
         let mut evaluations = 0;
@@ -54,7 +55,7 @@ impl SplittingMethod for HandKdk {
             evaluations += 1;
         }
         problem.kick(co[0] * h, f, p);
-        problem.drift(t, co[1] * h, q, p, v);
+        problem.drift(t, co[1] * h, q, p, v, cache);
         problem.force(t + co[2] * h, q, f);
         evaluations += 1;
         problem.kick(co[0] * h, f, p);

@@ -73,7 +73,7 @@ pub trait SplittingMethod: Copy + Default + Send + Sync + core::fmt::Debug + 'st
 
     /// Applies one step of size `h` from time `t` in place on the halves `q`, `p`, op by
     /// op in the order of [`SplittingData::word`]: a drift `D(c)` starting at node `s` is
-    /// `problem.drift(t + s h, c h, q, p, v)`, a kick `K(c)` at node `s` evaluates
+    /// `problem.drift(t + s h, c h, q, p, v, cache)`, a kick `K(c)` at node `s` evaluates
     /// `problem.force(t + s h, q, f)` (except for a first kick when `cached`: `f` already
     /// holds the force at `(t, q)`) and applies `problem.kick(c h, f, p)`. `v` is scratch.
     /// On return `f` holds the last force evaluated. Returns the number of force
@@ -87,6 +87,7 @@ pub trait SplittingMethod: Copy + Default + Send + Sync + core::fmt::Debug + 'st
         p: &mut [P::Scalar],
         v: &mut [P::Scalar],
         f: &mut [P::Scalar],
+        cache: &mut P::FlowCache,
         cached: bool,
     ) -> u64;
 }

@@ -13,7 +13,7 @@
 //!     __evaluations += 1;
 //! }
 //! Splittable::kick(__problem, __co[0] * __h, &*__f, &mut *__p);
-//! Splittable::drift(__problem, __t, __co[1] * __h, &mut *__q, &mut *__p, &mut *__v);
+//! Splittable::drift(__problem, __t, __co[1] * __h, &mut *__q, &mut *__p, &mut *__v, &mut *__cache);
 //! Splittable::force(__problem, __t + __co[1] * __h, &*__q, &mut *__f);
 //! __evaluations += 1;
 //! Splittable::kick(__problem, __co[0] * __h, &*__f, &mut *__p);
@@ -43,7 +43,7 @@ fn step_body(method: &Method) -> (TokenStream, Vec<f64>) {
         body.extend(match op.flow {
             Flow::Drift => quote! {
                 ::stormer::__private::Splittable::drift(
-                    __problem, #time, __co[#c] * __h, &mut *__q, &mut *__p, &mut *__v,
+                    __problem, #time, __co[#c] * __h, &mut *__q, &mut *__p, &mut *__v, &mut *__cache,
                 );
             },
             Flow::Kick => {
@@ -148,6 +148,7 @@ pub fn expand(method: &Method) -> TokenStream {
                 __p: &mut [P::Scalar],
                 __v: &mut [P::Scalar],
                 __f: &mut [P::Scalar],
+                __cache: &mut <P as ::stormer::__private::Splittable>::FlowCache,
                 __cached: bool,
             ) -> u64 {
                 #cached_unused
