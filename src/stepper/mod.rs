@@ -9,6 +9,7 @@ mod implicit;
 mod runtime;
 mod runtime_splitting;
 mod splitting;
+mod two_step;
 
 pub use composed::Composed;
 pub use error_norm::Tolerances;
@@ -17,6 +18,7 @@ pub use implicit::{ImplicitOptions, ImplicitRk, ImplicitSolver};
 pub use runtime::RuntimeRk;
 pub use runtime_splitting::RuntimeSplitting;
 pub use splitting::SplittingStepper;
+pub use two_step::StormerTwoStep;
 
 use crate::{Error, MethodInfo, Problem};
 
