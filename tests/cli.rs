@@ -414,7 +414,10 @@ fn malformed_scene_files() {
     }
     assert_error(&stormer(&dir, &["run", "no-such-scene"]), "not a built-in scene");
     assert_error(&stormer(&dir, &["run", "missing.toml"]), "cannot read");
-    assert_error(&stormer(&dir, &["scene", "show", "kepler"]), "not a built-in scene");
+    assert_error(
+        &stormer(&dir, &["scene", "show", "inner-solar-system"]),
+        "not a built-in scene",
+    );
 }
 
 #[test]
@@ -469,4 +472,215 @@ fn a_failing_run_keeps_its_records() {
         ],
     );
     assert_error(&out, "did not converge");
+}
+
+/// The summary's number after `label` (e.g. `max |dE/E0| 1.2e-5`).
+fn summary_number(summary: &str, label: &str) -> f64 {
+    let rest = summary
+        .split(label)
+        .nth(1)
+        .unwrap_or_else(|| panic!("{label} in {summary}"));
+    rest.trim_start()
+        .split([',', ' '])
+        .next()
+        .unwrap()
+        .parse()
+        .unwrap_or_else(|e| panic!("{label} in {summary}: {e}"))
+}
+
+#[test]
+fn splittings_run_on_every_hamiltonian_scene() {
+    let dir = workdir("splittings");
+    // (scene, method, t_end, force evaluations for 100 steps)
+    let runs = [
+        ("pendulum", "velocity-verlet-kdk", "1", 101), // FSAL: one per step, plus the first
+        ("pendulum", "stormer_verlet_dkd", "1", 100),
+        ("harmonic", "blanes_moan_srkn11b", "0.1", 1101), // an RKN-only method, 11 stages
+        ("kepler", "triple_jump4", "1", 300),
+        ("kepler-e06", "kahan_li6", "0.6283185307179587", 900),
+        ("outer-solar-system", "velocity_verlet_kdk", "1000", 101),
+    ];
+    for (scene, method, t_end, evaluations) in runs {
+        let out = stormer(&dir, &["run", scene, "--method", method, "--t-end", t_end]);
+        assert_ok(&out);
+        let summary = stderr(&out);
+        assert!(summary.contains("100 steps"), "{summary}");
+        assert_eq!(summary_number(&summary, "steps,") as u64, evaluations, "{summary}");
+        assert!(summary_number(&summary, "max |dE/E0|") < 1e-3, "{summary}");
+    }
+    // The pendulum keeps its columns; Verlet's energy error stays small where explicit
+    // Euler's drifts up by a third over the minute (SCENES.md 1).
+    let out = stormer(
+        &dir,
+        &["run", "pendulum", "--method", "velocity_verlet_kdk", "--every", "100"],
+    );
+    assert_ok(&out);
+    let (header, rows) = read_csv(&dir.join("out/pendulum-velocity_verlet_kdk.csv"));
+    assert_eq!(header, ["t", "theta", "omega", "energy"]);
+    assert_eq!(rows.len(), 61);
+    let verlet = summary_number(&stderr(&out), "max |dE/E0|");
+    let euler = summary_number(
+        &stderr(&stormer(
+            &dir,
+            &["run", "pendulum", "--method", "euler", "--every", "100"],
+        )),
+        "max |dE/E0|",
+    );
+    assert!(verlet < 1e-4 && euler > 0.1, "verlet {verlet}, euler {euler}");
+}
+
+#[test]
+fn a_splitting_method_file_runs_on_a_scene() {
+    let dir = workdir("splitting-file");
+    let leapfrog = "name = \"my_leapfrog\"\norder = 2\ndrift = [\"1/2\", \"1/2\"]\nkick = [\"1\", \"0\"]\n";
+    std::fs::write(dir.join("leapfrog.toml"), leapfrog).unwrap();
+    let out = stormer(
+        &dir,
+        &[
+            "run",
+            "kepler-e06",
+            "--method",
+            "leapfrog.toml",
+            "--t-end",
+            "6.283185307179586",
+        ],
+    );
+    assert_ok(&out);
+    assert!(
+        stderr(&out).starts_with("my_leapfrog on kepler-e06: 1000 steps"),
+        "{}",
+        stderr(&out)
+    );
+    // the same coefficients as the catalog's stormer_verlet_dkd: the same numbers, bit for bit
+    let catalog = stormer(
+        &dir,
+        &[
+            "run",
+            "kepler-e06",
+            "--method",
+            "stormer_verlet_dkd",
+            "--t-end",
+            "6.283185307179586",
+        ],
+    );
+    assert_ok(&catalog);
+    let a = std::fs::read_to_string(dir.join("out/kepler-e06-my_leapfrog.csv")).unwrap();
+    let b = std::fs::read_to_string(dir.join("out/kepler-e06-stormer_verlet_dkd.csv")).unwrap();
+    assert_eq!(a, b);
+}
+
+#[test]
+fn incompatible_method_and_scene_pairs_are_refused_with_the_reason() {
+    let dir = workdir("refusals");
+    for method in ["velocity_verlet_kdk", "triple-jump4", "blanes_moan_srkn11b"] {
+        let out = stormer(&dir, &["run", "damped-oscillator", "--method", method]);
+        assert_error(&out, "not a Hamiltonian system: it has friction");
+        assert_error(&out, "use a Runge-Kutta method instead, such as rk4 or dop853");
+    }
+    std::fs::write(
+        dir.join("leapfrog.toml"),
+        "name = \"leap\"\norder = 2\ndrift = [\"1/2\", \"1/2\"]\nkick = [\"1\", \"0\"]\n",
+    )
+    .unwrap();
+    assert_error(
+        &stormer(&dir, &["run", "damped-oscillator", "--method", "leapfrog.toml"]),
+        "it has friction",
+    );
+    // a splitting has no error estimate for adaptive steps
+    assert_error(
+        &stormer(
+            &dir,
+            &["run", "pendulum", "--method", "velocity_verlet_kdk", "--rtol", "1e-6"],
+        ),
+        "embedded error estimate",
+    );
+    assert!(!dir.join("out").exists(), "nothing is written for a refused run");
+    // while Runge-Kutta methods run on every scene, Hamiltonian or not
+    for scene in ["damped-oscillator", "kepler", "kepler-e06", "outer-solar-system"] {
+        assert_ok(&stormer(
+            &dir,
+            &["run", scene, "--method", "rk4", "--t-end", "0.1", "--dt", "0.01"],
+        ));
+    }
+}
+
+#[test]
+fn the_kepler_scene_has_the_users_period() {
+    // SCENES.md 3: the relative orbit's period is 2.34246 years. The planet starts at
+    // apocentre with the relative y-coordinate rising through 0; it does so again one
+    // period later, located by interpolating between DOP853 records 1e-3 years apart.
+    let dir = workdir("kepler-period");
+    let out = stormer(
+        &dir,
+        &[
+            "run", "kepler", "--method", "dop853", "--dt", "0.001", "--t-end", "3", "--every", "1",
+        ],
+    );
+    assert_ok(&out);
+    assert!(
+        summary_number(&stderr(&out), "max error vs exact") < 1e-9,
+        "{}",
+        stderr(&out)
+    );
+    let (header, rows) = read_csv(&dir.join("out/kepler-dop853.csv"));
+    assert_eq!(
+        header,
+        [
+            "t",
+            "star_x",
+            "star_y",
+            "planet_x",
+            "planet_y",
+            "star_px",
+            "star_py",
+            "planet_px",
+            "planet_py",
+            "energy"
+        ]
+    );
+    let rel_y = |r: &Vec<f64>| r[4] - r[2];
+    let (before, after) = rows
+        .windows(2)
+        .skip(1)
+        .map(|w| (&w[0], &w[1]))
+        .find(|(a, b)| rel_y(a) < 0.0 && rel_y(b) >= 0.0)
+        .expect("one full orbit in 3 years");
+    let period = before[0] + (after[0] - before[0]) * (-rel_y(before)) / (rel_y(after) - rel_y(before));
+    assert!((period - 2.34246).abs() < 5e-6, "period {period}");
+}
+
+#[test]
+fn neptune_and_pluto_are_added_by_editing_the_scene_file() {
+    let dir = workdir("neptune-pluto");
+    let show = stormer(&dir, &["scene", "show", "outer-solar-system"]);
+    assert_ok(&show);
+    // values of Hairer, Lubich, Wanner, GNI I.2.4, as SCENES.md 4 suggests
+    let added = "[[bodies]]\nname = \"Neptune\"\nmass = 0.0000517759138449\n\
+                 position = [11.4707666, -25.7294829, -10.8169456]\n\
+                 velocity = [0.00288930, 0.00114527, 0.00039677]\n\n\
+                 [[bodies]]\nname = \"Pluto\"\nmass = 7.692307692307693e-9\n\
+                 position = [-15.5387357, -25.2225594, -3.1902382]\n\
+                 velocity = [0.00276725, -0.00170702, -0.00136504]\n\n[run]";
+    let text = stdout(&show).replacen("[run]", added, 1);
+    std::fs::write(dir.join("six-bodies.toml"), text).unwrap();
+    let out = stormer(
+        &dir,
+        &["run", "six-bodies.toml", "--method", "triple_jump4", "--t-end", "10000"],
+    );
+    assert_ok(&out);
+    assert!(summary_number(&stderr(&out), "max |dE/E0|") < 1e-7, "{}", stderr(&out));
+    let (header, rows) = read_csv(&dir.join("out/six-bodies-triple_jump4.csv"));
+    assert_eq!(header.len(), 1 + 36 + 1);
+    assert_eq!(&header[13..16], ["neptune_x", "neptune_y", "neptune_z"]);
+    assert_eq!(header[36], "pluto_pz");
+    assert_eq!(rows[0][16], -15.5387357, "Pluto's x, as written");
+    // and a mistake in the added lines is an error naming the line and the body
+    let broken = std::fs::read_to_string(dir.join("six-bodies.toml"))
+        .unwrap()
+        .replace("mass = 7.692307692307693e-9", "mass = -7.692307692307693e-9");
+    std::fs::write(dir.join("broken.toml"), broken).unwrap();
+    assert_error(
+        &stormer(&dir, &["run", "broken.toml"]),
+        "bodies[5].mass (Pluto) must be > 0",
+    );
 }

@@ -114,7 +114,7 @@ fn splittings_conserve_momentum_and_angular_momentum_in_the_outer_solar_system()
         "velocity_verlet_kdk",
         "stormer_verlet_dkd",
         "triple_jump4",
-        "blanes_moan_srkn6b",
+        "blanes_moan_srkn11b",
     ] {
         let drift = run(&scene, method, 10_000);
         assert!(drift.momentum <= 1.0 && drift.angular <= 1.0, "{method}");

@@ -4,7 +4,7 @@ use std::path::{Path, PathBuf};
 use stormer::method::SplittingData;
 use stormer::registry::{self, normalize, MethodRef};
 use stormer::scenes::{Scene, SplittingChoice};
-use stormer::{Error, ImplicitOptions, Stepper, Tableau, TableauData};
+use stormer::{Error, ImplicitOptions, Splitting, Stepper, Tableau, TableauData};
 
 /// A method chosen on the command line.
 pub enum MethodChoice {
@@ -19,8 +19,30 @@ pub enum MethodChoice {
         /// Where it was read from.
         path: PathBuf,
     },
+    /// A splitting or composition read from a TOML method file.
+    SplittingFile {
+        /// The validated method.
+        method: Splitting,
+        /// Where it was read from.
+        path: PathBuf,
+    },
     /// The theta method with weight `alpha` (`registry::theta`).
     Theta(Tableau),
+}
+
+/// True when the method file at `path` describes a splitting or composition (it has
+/// `drift`, `kick` or `gamma`, or says so in `family`); it is read as a tableau otherwise,
+/// and that reading reports any problem with the file.
+fn is_splitting_file(path: &Path) -> bool {
+    let Some(table) = std::fs::read_to_string(path)
+        .ok()
+        .and_then(|text| text.parse::<toml::Table>().ok())
+    else {
+        return false;
+    };
+    let family = table.get("family").and_then(|f| f.as_str());
+    ["drift", "kick", "gamma"].iter().any(|k| table.contains_key(*k))
+        || matches!(family, Some("splitting" | "composition"))
 }
 
 /// True when `arg` is meant as a file: it ends in `.toml`, has a path separator, or names
@@ -44,6 +66,10 @@ impl MethodChoice {
         }
         if looks_like_path(name) {
             let path = PathBuf::from(name);
+            if is_splitting_file(&path) {
+                let method = Splitting::from_file(&path)?;
+                return Ok(MethodChoice::SplittingFile { method, path });
+            }
             let tableau = Tableau::from_file(&path)?;
             return Ok(MethodChoice::File { tableau, path });
         }
@@ -59,6 +85,7 @@ impl MethodChoice {
             MethodChoice::Catalog(d) => d.name.to_string(),
             MethodChoice::Splitting(d) => d.name.to_string(),
             MethodChoice::File { tableau, .. } => tableau.name().to_string(),
+            MethodChoice::SplittingFile { method, .. } => method.name().to_string(),
             MethodChoice::Theta(t) => t.name().to_string(),
         }
     }
@@ -67,8 +94,8 @@ impl MethodChoice {
     pub fn tableau(&self) -> Result<Tableau, Error> {
         match self {
             MethodChoice::Catalog(d) => Tableau::from_data(d),
-            MethodChoice::Splitting(d) => Err(Error::Unsupported {
-                name: d.name.to_string(),
+            MethodChoice::Splitting(_) | MethodChoice::SplittingFile { .. } => Err(Error::Unsupported {
+                name: self.label(),
                 reason: "it is a splitting or composition, not a Butcher tableau".into(),
             }),
             MethodChoice::File { tableau, .. } | MethodChoice::Theta(tableau) => Ok(tableau.clone()),
@@ -88,6 +115,7 @@ impl MethodChoice {
         match self {
             MethodChoice::Catalog(d) => registry::stepper::<S>(d.name, y0, implicit),
             MethodChoice::Splitting(d) => model.splitting_stepper(SplittingChoice::Compiled(d), y0),
+            MethodChoice::SplittingFile { method, .. } => model.splitting_stepper(SplittingChoice::Runtime(method), y0),
             MethodChoice::File { tableau, .. } | MethodChoice::Theta(tableau) => {
                 registry::tableau_stepper::<S>(tableau, y0, implicit)
             }

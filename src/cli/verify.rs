@@ -194,7 +194,7 @@ struct JsonCondition<'a> {
 pub fn run(method: &str, format: TextFormat) -> anyhow::Result<()> {
     let choice = MethodChoice::resolve(method, None)?;
     let source = match &choice {
-        MethodChoice::File { path, .. } => path.display().to_string(),
+        MethodChoice::File { path, .. } | MethodChoice::SplittingFile { path, .. } => path.display().to_string(),
         MethodChoice::Theta(_) => "the theta method (alpha = 1/2)".to_string(),
         MethodChoice::Catalog(_) | MethodChoice::Splitting(_) => "catalog".to_string(),
     };

@@ -73,3 +73,113 @@ where
         SplittingChoice::Runtime(s) => Ok(Box::new(RuntimeSplitting::new(s, y0)?)),
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scenes::{Number, Scene, Source};
+    use crate::Hamiltonian;
+    use serde::Deserialize;
+
+    /// H = p^2/2 + p^4/4 - cos q: a Hamiltonian whose kinetic energy is not quadratic.
+    #[derive(Debug, Clone)]
+    struct Quartic;
+    impl Hamiltonian for Quartic {
+        type Scalar = f64;
+        type State = [f64; 2];
+        fn kinetic_gradient(&self, p: &[f64], v: &mut [f64]) {
+            v[0] = p[0] + p[0] * p[0] * p[0];
+        }
+        fn force(&self, _t: f64, q: &[f64], f: &mut [f64]) {
+            f[0] = -q[0].sin();
+        }
+    }
+
+    #[derive(Debug, Deserialize)]
+    struct Initial {
+        q: Number,
+    }
+
+    impl Scene for Quartic {
+        const MODEL: &'static str = "quartic";
+        type Parameters = ();
+        type Initial = Initial;
+        fn build(_: Option<()>, initial: Initial, src: &Source<'_>) -> Result<(Self, [f64; 2]), Error> {
+            Ok((Quartic, [src.finite("initial.q", &initial.q)?, 0.0]))
+        }
+        fn components(&self, _y0: &[f64; 2]) -> Vec<String> {
+            vec!["q".into(), "p".into()]
+        }
+        fn splitting_stepper(
+            &self,
+            method: SplittingChoice<'_>,
+            y0: &[f64; 2],
+        ) -> Result<Box<dyn Stepper<Self>>, Error> {
+            general_splitting(method, y0)
+        }
+    }
+
+    /// A model that keeps the default: no splittings at all.
+    #[derive(Debug, Clone)]
+    struct Opaque;
+    impl Problem for Opaque {
+        type Scalar = f64;
+        type State = [f64; 2];
+        fn rhs(&self, _t: f64, y: &[f64; 2], dy: &mut [f64; 2]) {
+            *dy = [y[1], -y[0]];
+        }
+    }
+    impl Scene for Opaque {
+        const MODEL: &'static str = "opaque";
+        type Parameters = ();
+        type Initial = ();
+        fn build(_: Option<()>, _: (), _: &Source<'_>) -> Result<(Self, [f64; 2]), Error> {
+            Ok((Opaque, [1.0, 0.0]))
+        }
+        fn components(&self, _y0: &[f64; 2]) -> Vec<String> {
+            vec!["x".into(), "v".into()]
+        }
+    }
+
+    fn compiled(name: &str) -> SplittingChoice<'static> {
+        SplittingChoice::Compiled(registry::find_splitting(name).unwrap())
+    }
+
+    #[test]
+    fn an_rkn_method_is_refused_without_a_quadratic_kinetic_energy() {
+        let y0 = [0.5, 0.0];
+        let message = Quartic
+            .splitting_stepper(compiled("blanes_moan_srkn11b"), &y0)
+            .err()
+            .unwrap()
+            .to_string();
+        assert!(message.contains("kinetic energy is quadratic in p"), "{message}");
+        assert!(message.contains("use a general splitting or composition"), "{message}");
+        let rkn = Splitting::splitting("my_rkn", &[0.5, 0.5], &[1.0, 0.0], 2, true).unwrap();
+        let message = Quartic
+            .splitting_stepper(SplittingChoice::Runtime(&rkn), &y0)
+            .err()
+            .unwrap()
+            .to_string();
+        assert!(message.contains("quadratic"), "{message}");
+        // general methods run, and RKN methods run on a quadratic kinetic energy
+        assert!(Quartic.splitting_stepper(compiled("blanes_moan_s6"), &y0).is_ok());
+        assert!(quadratic_splitting::<crate::scenes::Pendulum>(compiled("blanes_moan_srkn11b"), &y0).is_ok());
+        assert!(quadratic_splitting::<crate::scenes::Pendulum>(SplittingChoice::Runtime(&rkn), &y0).is_ok());
+    }
+
+    #[test]
+    fn a_model_without_sub_flows_refuses_every_splitting() {
+        let message = Opaque
+            .splitting_stepper(compiled("velocity_verlet_kdk"), &[1.0, 0.0])
+            .err()
+            .unwrap()
+            .to_string();
+        assert!(
+            message.contains("the opaque model does not declare drift and kick sub-flows"),
+            "{message}"
+        );
+        assert!(message.ends_with("use a Runge-Kutta method instead, such as rk4 or dop853 (`stormer methods`)"));
+        assert_eq!(compiled("triple_jump4").name(), "triple_jump4");
+    }
+}
