@@ -21,6 +21,11 @@ pub trait State: Clone + core::fmt::Debug {
     /// The scalar type of the components.
     type Scalar: Real;
 
+    /// The number of components when the type fixes it (`[T; N]`, `SVector<T, N>`), `None`
+    /// when it is chosen at run time (`DVector`). A constant, so that a problem can select
+    /// code for a static size when the code is compiled.
+    const LEN: Option<usize> = None;
+
     /// The components, contiguous.
     fn as_slice(&self) -> &[Self::Scalar];
 
@@ -67,6 +72,7 @@ pub trait State: Clone + core::fmt::Debug {
 
 impl<T: Real, const N: usize> State for [T; N] {
     type Scalar = T;
+    const LEN: Option<usize> = Some(N);
     #[inline(always)]
     fn as_slice(&self) -> &[T] {
         self
@@ -83,6 +89,7 @@ impl<T: Real, const N: usize> State for [T; N] {
 
 impl<T: Real, const N: usize> State for SVector<T, N> {
     type Scalar = T;
+    const LEN: Option<usize> = Some(N);
     #[inline(always)]
     fn as_slice(&self) -> &[T] {
         nalgebra::Matrix::as_slice(self)
@@ -130,6 +137,13 @@ mod tests {
         z.as_mut_slice()[1] = f64::NAN;
         assert!(!z.is_finite());
         assert_eq!(z.dim(), 3);
+    }
+
+    #[test]
+    fn static_lengths_are_known() {
+        assert_eq!(<[f64; 3] as State>::LEN, Some(3));
+        assert_eq!(<SVector<f32, 4> as State>::LEN, Some(4));
+        assert_eq!(<DVector<f64> as State>::LEN, None);
     }
 
     #[test]
