@@ -10,7 +10,8 @@
 //!   generated code (same coefficients, same pair order, same sums);
 //! - **generated**: `SplittingStepper<M, [f64; 24]>` on `NBody<f64, [f64; 24]>` through the
 //!   `Stepper` interface (what the driver calls);
-//! - **driver_swap**: the same stepper in the driver's loop (step into `y_new`, then swap);
+//! - **driver**: the same stepper run by the library's `Driver` (fixed steps, a record at
+//!   the start and at the end), the path of the CLI;
 //! - **generated_flows_copy**: the macro's unrolled word (`M::flows`) without the
 //!   `Stepper` trait but with its data flow: `y_new <- y`, then the word on `y_new`;
 //! - **generated_flows_local**: the same on a local copy of `y`, written to `y_new` at the
@@ -40,7 +41,8 @@ use nalgebra::DVector;
 use stormer::catalog::{TripleJump4, VelocityVerletKdk};
 use stormer::order::splitting::Flow;
 use stormer::scenes::{self, AnyScene, NBody};
-use stormer::{registry, Hamiltonian, SplittingMethod, SplittingStepper, Stepper};
+use stormer::driver::Recorder;
+use stormer::{registry, Driver, Hamiltonian, SplittingMethod, SplittingStepper, Stepper};
 
 const STEPS: usize = 1000;
 const H: f64 = 10.0;
@@ -325,19 +327,29 @@ fn generated_flows_local<M: SplittingMethod>(s: &Setup, steps: usize, h: f64, y0
     }
 }
 
-/// The driver's loop: step into `y_new`, then swap.
-fn driver_swap<M: SplittingMethod>(s: &Setup, steps: usize, h: f64, y0: &[f64; 24]) -> [f64; 24]
+/// Keeps the last record only.
+struct Last([f64; 24]);
+
+impl Recorder<f64, [f64; 24]> for Last {
+    fn record(&mut self, _t: f64, y: &[f64; 24], _energy: Option<f64>) -> Result<(), stormer::Error> {
+        self.0 = *y;
+        Ok(())
+    }
+}
+
+/// The library's driver (fixed steps, records only at the start and the end): the path of
+/// every `Driver::run` and of the CLI.
+fn driver<M: SplittingMethod>(s: &Setup, steps: usize, h: f64, y0: &[f64; 24]) -> [f64; 24]
 where
     SplittingStepper<M, [f64; 24]>: Stepper<Problem>,
 {
     let mut st = SplittingStepper::<M, [f64; 24]>::new(y0).unwrap();
-    let (mut y, mut y_new) = (*y0, *y0);
-    for i in 0..steps {
-        let _ = st.step(&s.nbody, i as f64 * h, h, &y, &mut y_new, None);
-        st.accept();
-        core::mem::swap(&mut y, &mut y_new);
-    }
-    y
+    let mut last = Last(*y0);
+    let outcome = Driver::fixed(h)
+        .every(steps as u64)
+        .run_into(&s.nbody, &mut st, 0.0, y0, h * steps as f64, &mut last);
+    assert!(outcome.is_ok());
+    last.0
 }
 
 fn file_scene<M: SplittingMethod>(s: &Setup, steps: usize, h: f64) -> DVector<f64>
@@ -406,8 +418,8 @@ fn assert_bitwise_equal(s: &Setup) {
         &verlet,
     );
     check(
-        "verlet, driver swap",
-        bits(&driver_swap::<VelocityVerletKdk>(s, n, H, &s.y0)),
+        "verlet, driver",
+        bits(&driver::<VelocityVerletKdk>(s, n, H, &s.y0)),
         &verlet,
     );
     check("verlet, NBody force", bits(&hand_verlet_nbody(s, n, H, &s.y0)), &verlet);
@@ -433,8 +445,8 @@ fn assert_bitwise_equal(s: &Setup) {
         &jump,
     );
     check(
-        "jump, driver swap",
-        bits(&driver_swap::<TripleJump4>(s, n, H, &s.y0)),
+        "jump, driver",
+        bits(&driver::<TripleJump4>(s, n, H, &s.y0)),
         &jump,
     );
     check("jump, NBody force", bits(&hand_jump_nbody(s, &c, n, H, &s.y0)), &jump);
@@ -524,9 +536,9 @@ fn interleaved_ratios() {
                     Box::new(|| first(generated::<$m>(&s, STEPS, black_box(H), &s.y0))),
                 ),
                 (
-                    "driver_swap",
+                    "driver",
                     $evaluations,
-                    Box::new(|| first(driver_swap::<$m>(&s, STEPS, black_box(H), &s.y0))),
+                    Box::new(|| first(driver::<$m>(&s, STEPS, black_box(H), &s.y0))),
                 ),
                 (
                     "generated_flows_copy",
