@@ -16,6 +16,8 @@
 //!   `Stepper` trait but with its data flow: `y_new <- y`, then the word on `y_new`;
 //! - **generated_flows_local**: the same on a local copy of `y`, written to `y_new` at the
 //!   end;
+//! - **generated_in_place**: the word in place on one `[f64; 24]` state and its halves (what
+//!   an in-place step, without a second state, would do);
 //! - **generated_flows**: the word in place on local `q` and `p` arrays, as the
 //!   hand-written loop does (the code the macro generates, without the `Stepper` data flow);
 //! - **hand_loop_nbody_force**: the hand-written step calling `NBody`'s force and velocity
@@ -39,9 +41,9 @@ use std::time::Instant;
 use criterion::{criterion_group, Criterion};
 use nalgebra::DVector;
 use stormer::catalog::{TripleJump4, VelocityVerletKdk};
+use stormer::driver::Recorder;
 use stormer::order::splitting::Flow;
 use stormer::scenes::{self, AnyScene, NBody};
-use stormer::driver::Recorder;
 use stormer::{registry, Driver, Hamiltonian, SplittingMethod, SplittingStepper, Stepper};
 
 const STEPS: usize = 1000;
@@ -283,6 +285,22 @@ fn generated_flows<M: SplittingMethod>(s: &Setup, steps: usize, h: f64, y0: &[f6
     join(&q, &p)
 }
 
+/// The generated word in place on one `[f64; 24]` state (its two halves), no second
+/// state: what an in-place step of a stepper would do.
+fn generated_in_place<M: SplittingMethod>(s: &Setup, steps: usize, h: f64, y0: &[f64; 24]) -> [f64; 24] {
+    let co = M::coeffs::<f64>();
+    let mut y = *y0;
+    let mut work = [0.0; 24];
+    let mut cached = false;
+    for i in 0..steps {
+        let (q, p) = y.split_at_mut(12);
+        let (v, f) = work.split_at_mut(12);
+        M::flows(&co, &s.nbody, i as f64 * h, h, q, p, v, f, &mut (), cached);
+        cached = M::DATA.flags.fsal;
+    }
+    y
+}
+
 /// The generated word on a copy of the state, as the `Stepper` interface does it
 /// (`y_new <- y`, then the word in place on `y_new`), ping-ponging between two states.
 fn generated_flows_copy<M: SplittingMethod>(s: &Setup, steps: usize, h: f64, y0: &[f64; 24]) -> [f64; 24] {
@@ -345,9 +363,10 @@ where
 {
     let mut st = SplittingStepper::<M, [f64; 24]>::new(y0).unwrap();
     let mut last = Last(*y0);
-    let outcome = Driver::fixed(h)
-        .every(steps as u64)
-        .run_into(&s.nbody, &mut st, 0.0, y0, h * steps as f64, &mut last);
+    let outcome =
+        Driver::fixed(h)
+            .every(steps as u64)
+            .run_into(&s.nbody, &mut st, 0.0, y0, h * steps as f64, &mut last);
     assert!(outcome.is_ok());
     last.0
 }
@@ -444,11 +463,7 @@ fn assert_bitwise_equal(s: &Setup) {
         bits(&generated_flows_local::<TripleJump4>(s, n, H, &s.y0)),
         &jump,
     );
-    check(
-        "jump, driver",
-        bits(&driver::<TripleJump4>(s, n, H, &s.y0)),
-        &jump,
-    );
+    check("jump, driver", bits(&driver::<TripleJump4>(s, n, H, &s.y0)), &jump);
     check("jump, NBody force", bits(&hand_jump_nbody(s, &c, n, H, &s.y0)), &jump);
     check(
         "jump, file scene",
@@ -549,6 +564,11 @@ fn interleaved_ratios() {
                     "generated_flows_local",
                     $evaluations,
                     Box::new(|| first(generated_flows_local::<$m>(&s, STEPS, black_box(H), &s.y0))),
+                ),
+                (
+                    "generated_in_place",
+                    $evaluations,
+                    Box::new(|| first(generated_in_place::<$m>(&s, STEPS, black_box(H), &s.y0))),
                 ),
                 (
                     "generated_flows",
