@@ -9,6 +9,7 @@ pub mod driver;
 mod error;
 pub mod flows;
 pub mod hamiltonian;
+pub mod magnetic;
 pub mod method;
 mod problem;
 mod real;
