@@ -133,19 +133,28 @@ pub fn cross<T: Real>(u: &[T], v: &[T]) -> [T; 3] {
 /// trigonometric functions run once per step size and particle, not once per step.
 ///
 /// Holds up to [`GyrationCache::SLOTS`] step sizes (a composition uses several), replaced
-/// in turn; the first steps fill it, later steps only read it.
+/// in turn; the first steps fill it, later steps only read it. The step sizes sit inline
+/// and the gyrations in one flat buffer, so a hit costs a comparison and an index.
 #[derive(Debug, Clone)]
 pub struct GyrationCache<T> {
-    /// `(tau, one gyration per particle)`.
-    entries: Vec<(T, Vec<Gyration<T>>)>,
+    /// The step size of each slot (NaN: empty).
+    taus: [T; 8],
+    /// `particles` gyrations per slot, slot after slot.
+    gyrations: Vec<Gyration<T>>,
+    particles: usize,
     next: usize,
+    last: usize,
 }
 
-impl<T> Default for GyrationCache<T> {
+impl<T: Real> Default for GyrationCache<T> {
     fn default() -> Self {
+        let empty = T::zero() / T::zero();
         GyrationCache {
-            entries: Vec::new(),
+            taus: [empty; 8],
+            gyrations: Vec::new(),
+            particles: 0,
             next: 0,
+            last: 0,
         }
     }
 }
@@ -154,24 +163,38 @@ impl<T: Real> GyrationCache<T> {
     /// Step sizes remembered.
     pub const SLOTS: usize = 8;
 
-    /// The gyrations for `tau`, computed by `make` (one per particle) on a miss.
-    #[inline]
-    pub fn get(&mut self, tau: T, make: impl FnOnce() -> Vec<Gyration<T>>) -> &[Gyration<T>] {
+    /// The gyrations of `particles` particles for `tau`; `make(k)` builds particle `k`'s
+    /// on a miss.
+    #[inline(always)]
+    pub fn get(&mut self, tau: T, particles: usize, make: impl Fn(usize) -> Gyration<T>) -> &[Gyration<T>] {
+        // fixed steps hit the slot of the previous call (velocity Verlet has one)
         #[allow(clippy::float_cmp)] // the same step size, bit for bit, reuses its rotation
-        let hit = self.entries.iter().position(|(t, _)| *t == tau);
-        let index = match hit {
-            Some(i) => i,
-            None if self.entries.len() < Self::SLOTS => {
-                self.entries.push((tau, make()));
-                self.entries.len() - 1
-            }
-            None => {
-                let i = self.next;
-                self.next = (i + 1) % Self::SLOTS;
-                self.entries[i] = (tau, make());
-                i
-            }
+        let slot = if self.taus[self.last] == tau && self.particles == particles {
+            self.last
+        } else {
+            self.find_or_insert(tau, particles, make)
         };
-        &self.entries[index].1
+        self.last = slot;
+        &self.gyrations[slot * particles..(slot + 1) * particles]
+    }
+
+    #[inline(never)]
+    fn find_or_insert(&mut self, tau: T, particles: usize, make: impl Fn(usize) -> Gyration<T>) -> usize {
+        if self.particles != particles {
+            *self = Self::default();
+            self.particles = particles;
+            self.gyrations = vec![Gyration::new([T::zero(); 3], T::zero()); Self::SLOTS * particles];
+        }
+        #[allow(clippy::float_cmp)]
+        if let Some(slot) = self.taus.iter().position(|t| *t == tau) {
+            return slot;
+        }
+        let slot = self.next;
+        self.next = (slot + 1) % Self::SLOTS;
+        self.taus[slot] = tau;
+        for k in 0..particles {
+            self.gyrations[slot * particles + k] = make(k);
+        }
+        slot
     }
 }

@@ -96,7 +96,7 @@ impl<L: Lorentz> Splittable for Charged<L> {
 
     /// The exact gyration of every particle for time `tau` (a non-uniform field is
     /// evaluated at the positions at the start of the drift).
-    #[inline]
+    #[inline(always)]
     fn drift(
         &self,
         _t: Self::Scalar,
@@ -107,12 +107,7 @@ impl<L: Lorentz> Splittable for Charged<L> {
         cache: &mut Self::FlowCache,
     ) {
         if self.0.uniform() {
-            let particles = q.len() / 3;
-            let gyrations = cache.get(tau, || {
-                (0..particles)
-                    .map(|k| Gyration::new(self.0.omega(k, &*q), tau))
-                    .collect()
-            });
+            let gyrations = cache.get(tau, q.len() / 3, |k| Gyration::new(self.0.omega(k, &*q), tau));
             for ((g, q), v) in gyrations.iter().zip(q.chunks_exact_mut(3)).zip(v.chunks_exact_mut(3)) {
                 g.apply(q, v);
             }
@@ -124,7 +119,7 @@ impl<L: Lorentz> Splittable for Charged<L> {
         }
     }
 
-    #[inline]
+    #[inline(always)]
     fn force(&self, t: Self::Scalar, q: &[Self::Scalar], f: &mut [Self::Scalar]) {
         self.0.acceleration(t, q, f)
     }
