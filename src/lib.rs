@@ -16,6 +16,7 @@ pub mod registry;
 pub mod scenes;
 mod state;
 pub mod stepper;
+pub mod verify;
 
 pub use driver::{Driver, Interrupted, Solution, Stats, StepControl, StopEvent};
 pub use error::Error;

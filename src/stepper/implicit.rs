@@ -18,6 +18,7 @@ mod newton;
 use super::{Counters, Stepper, Tolerances};
 #[allow(unused_imports)]
 use crate::real::ops::*;
+use crate::real::magnitude;
 use crate::{lit, to_f64, Error, MethodInfo, Problem, Real, State, Tableau};
 use newton::Newton;
 
@@ -533,7 +534,7 @@ impl<S: State> ImplicitRk<S> {
                         sum += a * self.f[j].as_slice()[m];
                     }
                     let new = h * sum;
-                    let d = (new - zi[m]).abs();
+                    let d = magnitude(new - zi[m]);
                     if !d.is_finite() {
                         bad = Some(d);
                     }

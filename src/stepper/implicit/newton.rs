@@ -3,6 +3,7 @@
 
 #[allow(unused_imports)]
 use crate::real::ops::*;
+use crate::real::magnitude;
 use crate::{lit, Problem, Real, State};
 use nalgebra::{DMatrix, DVector, Dyn, LU};
 
@@ -137,7 +138,7 @@ impl<S: State> Newton<S> {
             for m in 0..n {
                 let d = self.rhs[i * n + m];
                 zi[m] += d;
-                let d = d.abs();
+                let d = magnitude(d);
                 if !d.is_finite() {
                     bad = Some(d);
                 }
