@@ -8,18 +8,21 @@
 //! - [`symplectic_defect`]: `max |J^T S J - S|` for the canonical [`Structure`] or one the
 //!   problem supplies, with [`defect_bound`] separating round-off from a real defect;
 //! - [`reversibility_defect`]: a step of `h` then `-h`;
+//! - [`measure_order`]: the slope of the (centred) local error against the step size;
 //!
 //! The nonlinear test problems are in [`problems`]. `docs/verification.md` explains the
 //! checks, their bounds and the measurements behind them.
 
 mod dual;
 mod jacobian;
+mod order;
 pub mod problems;
 mod reversibility;
 mod structure;
 
 pub use dual::{jacobian_dual, DualScalar};
 pub use jacobian::{increment, jacobian_fd};
+pub use order::{measure_order, reference_flow, OrderMeasurement, OrderOptions, Sample};
 pub use reversibility::reversibility_defect;
 pub use structure::{defect_bound, symplectic_defect, Canonical, Structure};
 
