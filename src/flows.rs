@@ -18,9 +18,15 @@ use crate::{Problem, Real};
 /// Implemented for every [`crate::Hamiltonian`] (and so every [`crate::SecondOrder`]
 /// problem); implement it directly for a problem whose drift is not `q += tau dT/dp`.
 pub trait Splittable: Problem {
+    /// Memory a stepper keeps for the sub-flows between calls, e.g. the rotation of a
+    /// uniform magnetic field for the step sizes in use (computed once, not per step);
+    /// `()` for most problems. Each stepper owns one, created with `Default`.
+    type FlowCache: Default + Clone + core::fmt::Debug;
+
     /// The exact flow of the first part for time `tau` (possibly negative), starting at
     /// time `t`, in place on the halves `q` and `p` (each of length `n`). `scratch` is `n`
-    /// values of workspace, with no meaning before or after the call.
+    /// values of workspace, with no meaning before or after the call; `cache` is the
+    /// calling stepper's [`Splittable::FlowCache`].
     fn drift(
         &self,
         t: Self::Scalar,
@@ -28,6 +34,7 @@ pub trait Splittable: Problem {
         q: &mut [Self::Scalar],
         p: &mut [Self::Scalar],
         scratch: &mut [Self::Scalar],
+        cache: &mut Self::FlowCache,
     );
 
     /// The force (the rate of `p` under the kick) at `(t, q)`, written into `f`.
@@ -56,6 +63,11 @@ pub fn kick<T: Real>(tau: T, f: &[T], p: &mut [T]) {
 /// Implemented for every [`crate::SecondOrder`] problem; a [`crate::Hamiltonian`] with
 /// `T = |p|^2 / (2m)` (or any `p^T M^-1 p / 2`) opts in with an empty impl. A method
 /// with `requires_quadratic_kinetic` only accepts problems with this trait.
+#[diagnostic::on_unimplemented(
+    message = "`{Self}` is not declared `QuadraticKinetic`, which this method needs",
+    label = "a method built for quadratic kinetic energies (Runge-Kutta-Nystrom) cannot step this problem",
+    note = "use a general splitting or composition, or add `impl QuadraticKinetic for {Self} {{}}` if its kinetic energy is quadratic in p"
+)]
 pub trait QuadraticKinetic: Splittable {}
 
 /// The class of problems a splitting method is valid for (a type-level flag of
@@ -75,6 +87,10 @@ impl ProblemClass for QuadraticOnly {}
 
 /// `P: Admits<C>` when problem `P` belongs to class `C`: every splittable problem admits
 /// [`General`] methods, only [`QuadraticKinetic`] ones admit [`QuadraticOnly`] methods.
+#[diagnostic::on_unimplemented(
+    message = "`{Self}` does not admit methods of class `{C}`",
+    note = "a method of class `QuadraticOnly` (Runge-Kutta-Nystrom) needs a `QuadraticKinetic` problem"
+)]
 pub trait Admits<C: ProblemClass>: Splittable {}
 
 impl<P: Splittable> Admits<General> for P {}

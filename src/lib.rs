@@ -9,6 +9,7 @@ pub mod driver;
 mod error;
 pub mod flows;
 pub mod hamiltonian;
+pub mod magnetic;
 pub mod method;
 mod problem;
 mod real;
@@ -39,8 +40,26 @@ pub use stepper::{
 #[cfg(feature = "macros")]
 pub use stormer_macros::tableau;
 
+/// Declares a splitting method (drift/kick sub-flows), checks it at compile time and
+/// generates its unrolled step. See `docs/define-your-own-scheme.md`.
+#[cfg(feature = "macros")]
+pub use stormer_macros::splitting;
+
+/// Declares a composition of a symmetric second-order base, checks it at compile time and
+/// generates its unrolled step. See `docs/define-your-own-scheme.md`.
+#[cfg(feature = "macros")]
+pub use stormer_macros::composition;
+
 /// The order-condition algebra shared with the macros (re-exported for `verify`-style use).
 pub use stormer_order as order;
+
+/// The user guide (the pages of `docs/`), compiled here so that its examples run as tests.
+pub mod guide {
+    #[doc = include_str!("../docs/define-your-own-scheme.md")]
+    pub mod define_your_own_scheme {}
+    #[doc = include_str!("../docs/declaring-a-method.md")]
+    pub mod declaring_a_method {}
+}
 
 /// The everyday items in one import.
 pub mod prelude {
@@ -53,7 +72,8 @@ pub mod prelude {
 /// Items the macros' expansions use; not part of the public API.
 #[doc(hidden)]
 pub mod __private {
-    pub use crate::method::{ButcherMethod, ExplicitMethod, Flags, TableauData};
+    pub use crate::flows::{General, QuadraticOnly, Splittable};
+    pub use crate::method::{ButcherMethod, ExplicitMethod, Flags, SplittingData, SplittingMethod, TableauData};
     pub use crate::real::lit;
     pub use crate::stepper::{ExplicitRk, ImplicitOptions, ImplicitRk, Stepper};
     pub use crate::{Problem, Real, State, Tableau};

@@ -48,7 +48,7 @@ macro_rules! splitting_dispatch {
         {
             $(
                 if name == <catalog::$g as SplittingMethod>::DATA.name {
-                    return Some(SplittingStepper::<catalog::$g, P::State>::boxed::<P>(y0));
+                    return Some(SplittingStepper::<catalog::$g, P::State, P::FlowCache>::boxed::<P>(y0));
                 }
             )*
             None
@@ -62,12 +62,12 @@ macro_rules! splitting_dispatch {
         {
             $(
                 if name == <catalog::$g as SplittingMethod>::DATA.name {
-                    return Some(SplittingStepper::<catalog::$g, P::State>::boxed::<P>(y0));
+                    return Some(SplittingStepper::<catalog::$g, P::State, P::FlowCache>::boxed::<P>(y0));
                 }
             )*
             $(
                 if name == <catalog::$r as SplittingMethod>::DATA.name {
-                    return Some(SplittingStepper::<catalog::$r, P::State>::boxed::<P>(y0));
+                    return Some(SplittingStepper::<catalog::$r, P::State, P::FlowCache>::boxed::<P>(y0));
                 }
             )*
             None
@@ -216,7 +216,7 @@ pub fn runtime_splitting_stepper<P>(method: &Splitting, y0: &P::State) -> Result
 where
     P: Splittable + 'static,
 {
-    Ok(Box::new(RuntimeSplitting::new(method, y0)?))
+    Ok(Box::new(RuntimeSplitting::<P::State, P::FlowCache>::new(method, y0)?))
 }
 
 /// Up to three catalog names closest to `key` (edit distance, prefix matches first).

@@ -75,3 +75,36 @@ fn flags_declared_in_a_file_must_agree_with_the_data() {
     let err = Tableau::from_toml_str(text, "inline").unwrap_err().to_string();
     assert!(err.contains("declares symplectic = true"), "{err}");
 }
+
+/// Every `splitting!` / `composition!` declaration equals its entry of
+/// `data/splitting.toml`, bitwise; the file's declared stages (force evaluations per step
+/// after FSAL, from the catalog), FSAL and symmetry agree with what the macros derived
+/// (the file loader rejects a disagreement).
+#[test]
+fn every_compiled_splitting_matches_the_data_file() {
+    use stormer::Splitting;
+    let text = include_str!("../data/splitting.toml");
+    let file = Splitting::all_from_toml_str(text, "data/splitting.toml").expect("the data file is valid");
+    assert_eq!(file.len(), 58);
+    assert_eq!(registry::SPLITTING.len(), file.len());
+    let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+    for entry in &file {
+        let data = registry::SPLITTING
+            .iter()
+            .find(|d| d.name == entry.name())
+            .unwrap_or_else(|| panic!("{} is not compiled", entry.name()));
+        assert_eq!(data.family, entry.family(), "{}: family", data.name);
+        assert_eq!(bits(data.drift), bits(entry.drift()), "{}: drift", data.name);
+        assert_eq!(bits(data.kick), bits(entry.kick()), "{}: kick", data.name);
+        assert_eq!(data.gamma.map(bits), entry.gamma().map(bits), "{}: gamma", data.name);
+        assert_eq!(data.order, entry.order(), "{}: order", data.name);
+        assert_eq!(data.stages, entry.stages(), "{}: stages", data.name);
+        assert_eq!(data.flags, entry.flags(), "{}: flags", data.name);
+        assert_eq!(
+            data.requires_quadratic_kinetic,
+            entry.requires_quadratic_kinetic(),
+            "{}: quadratic kinetic",
+            data.name
+        );
+    }
+}

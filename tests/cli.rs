@@ -176,7 +176,7 @@ fn methods_json_lists_the_catalog() {
     assert_ok(&out);
     let list: serde_json::Value = serde_json::from_str(&stdout(&out)).unwrap();
     let list = list.as_array().unwrap();
-    assert_eq!(list.len(), 31);
+    assert_eq!(list.len(), 31 + 37 + 21);
     for m in list {
         for key in [
             "name",
@@ -200,11 +200,25 @@ fn methods_json_lists_the_catalog() {
         (dop853["embedded_order"].as_u64(), dop853["fsal"].as_bool()),
         (Some(5), Some(true))
     );
+    let kahan_li6 = list.iter().find(|m| m["name"] == "kahan_li6").unwrap();
+    assert_eq!(
+        (
+            kahan_li6["family"].as_str(),
+            kahan_li6["order"].as_u64(),
+            kahan_li6["stages"].as_u64()
+        ),
+        (Some("composition"), Some(6), Some(9))
+    );
+    let verlet = list.iter().find(|m| m["name"] == "velocity_verlet_kdk").unwrap();
+    assert_eq!(
+        (verlet["fsal"].as_bool(), verlet["symplectic"].as_bool()),
+        (Some(true), Some(true))
+    );
     let table = stormer(&dir, &["methods"]);
     assert_ok(&table);
     let text = stdout(&table);
     assert!(text.lines().next().unwrap().starts_with("name"));
-    assert_eq!(text.lines().count(), 32);
+    assert_eq!(text.lines().count(), 1 + 31 + 37 + 21);
 }
 
 #[test]

@@ -1,4 +1,6 @@
-//! Every diagnostic of the `tableau!` macro, with its message and span (trybuild).
+//! Every diagnostic of the `tableau!`, `splitting!` and `composition!` macros, with its
+//! message and span, and the type-level refusal of an RKN method on a general problem
+//! (trybuild).
 
 #[test]
 fn ui() {

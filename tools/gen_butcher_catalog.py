@@ -267,13 +267,19 @@ MOD_RS = """\
 //! The Butcher tableaus of the method catalog, one type per method.
 //!
 {transcribed}
+mod composition;
 mod explicit;
 mod embedded;
 mod implicit;
+mod splitting;
+mod splitting_list;
 
+pub use composition::*;
 pub use explicit::*;
 pub use embedded::*;
 pub use implicit::*;
+pub use splitting::*;
+pub(crate) use splitting_list::for_each_splitting_method;
 
 /// Invokes `$callback! {{ Euler, Midpoint, ... }}` with the type names of all {count} Butcher
 /// tableaus above, in catalog order (used to build the method registry).

@@ -5,11 +5,10 @@
 //! `::stormer::__private`. Each macro works in three steps, one file each: `parse` (the
 //! syntax, with spans), `valid` (evaluation of the coefficients and validation by
 //! `stormer_order`, the code the library also uses at run time) and `expand` (the
-//! generated types and their unrolled steps).
+//! generated types and their unrolled steps), in one folder per macro family.
 
-mod expand;
-mod parse;
-mod valid;
+mod splitting;
+mod tableau;
 
 use proc_macro::TokenStream;
 
@@ -49,9 +48,68 @@ use proc_macro::TokenStream;
 /// step unrolled over the nonzero coefficients only.
 #[proc_macro]
 pub fn tableau(input: TokenStream) -> TokenStream {
-    let input = syn::parse_macro_input!(input as parse::Input);
-    match valid::validate(input) {
-        Ok(method) => expand::expand(&method).into(),
+    let input = syn::parse_macro_input!(input as tableau::parse::Input);
+    match tableau::valid::validate(input) {
+        Ok(method) => tableau::expand::expand(&method).into(),
+        Err(e) => e.into_compile_error().into(),
+    }
+}
+
+/// Declares a splitting method (a sequence of drift and kick sub-flows), checks it at
+/// compile time and generates its unrolled step.
+///
+/// ```text
+/// stormer::splitting! {
+///     /// Velocity Verlet: K(1/2) D(1) K(1/2).
+///     pub struct VelocityVerlet {
+///         name: "velocity_verlet",
+///         order: 2,
+///         drift: [0, 1],          // drift-first pairs: D(drift_i h) K(kick_i h), i = 1..n
+///         kick: [1/2, 1/2],
+///         // or instead of drift/kick, any word of named flows:
+///         // word: [kick(1/2), drift(1), kick(1/2)],
+///         // optional: quadratic_kinetic: true   (an RKN method: needs T quadratic in p)
+///         // optional: tolerance: 1e-14
+///     }
+/// }
+/// ```
+///
+/// Checked by `stormer_order::validate_splitting`: equal lengths, finite coefficients,
+/// `sum drift = sum kick = 1`, and for order >= 2 `sum kick_i c_i = 1/2`. Symmetry and
+/// FSAL are derived from the merged word. The expansion is a zero-sized struct
+/// implementing `stormer::SplittingMethod` whose step is the merged word, unrolled.
+#[proc_macro]
+pub fn splitting(input: TokenStream) -> TokenStream {
+    let input = syn::parse_macro_input!(input as splitting::parse::Input);
+    match splitting::valid::validate(input, splitting::Family::Splitting) {
+        Ok(method) => splitting::expand::expand(&method).into(),
+        Err(e) => e.into_compile_error().into(),
+    }
+}
+
+/// Declares a composition `S(gamma_s h) o ... o S(gamma_1 h)` of a symmetric second-order
+/// base method, checks it at compile time and generates its unrolled step over
+/// drift-kick-drift Verlet (for any splittable problem; over other bases through
+/// `stormer::stepper::Composed`).
+///
+/// ```text
+/// stormer::composition! {
+///     /// Yoshida's triple jump.
+///     pub struct TripleJump {
+///         name: "triple_jump",
+///         order: 4,
+///         gamma: [1/(2 - 2^(1/3)), ...],   // any coefficient expressions
+///     }
+/// }
+/// ```
+///
+/// Checked by `stormer_order::validate_composition`: `sum gamma = 1` and
+/// `sum gamma^k = 0` for odd `k` from 3 to `order - 1`.
+#[proc_macro]
+pub fn composition(input: TokenStream) -> TokenStream {
+    let input = syn::parse_macro_input!(input as splitting::parse::Input);
+    match splitting::valid::validate(input, splitting::Family::Composition) {
+        Ok(method) => splitting::expand::expand(&method).into(),
         Err(e) => e.into_compile_error().into(),
     }
 }

@@ -3,13 +3,19 @@
 //! Coefficients are transcribed from the project's `data/butcher.toml` by
 //! `tools/gen_butcher_catalog.py` and checked at compile time by the `tableau!` macro.
 
+mod composition;
 mod embedded;
 mod explicit;
 mod implicit;
+mod splitting;
+mod splitting_list;
 
+pub use composition::*;
 pub use embedded::*;
 pub use explicit::*;
 pub use implicit::*;
+pub use splitting::*;
+pub(crate) use splitting_list::for_each_splitting_method;
 
 /// Invokes `$callback! { Euler, Midpoint, ... }` with the type names of all 31 Butcher
 /// tableaus above, in catalog order (used to build the method registry).
@@ -26,16 +32,3 @@ macro_rules! for_each_butcher_method {
     };
 }
 pub(crate) use for_each_butcher_method;
-
-/// Invokes `$callback! { general: [..], quadratic: [..] }` with the type names of every
-/// splitting and composition, in catalog order: `general` methods are valid for every
-/// splittable problem, `quadratic` ones need a quadratic kinetic energy.
-macro_rules! for_each_splitting_method {
-    ($callback:ident) => {
-        $callback! {
-            general: [],
-            quadratic: [],
-        }
-    };
-}
-pub(crate) use for_each_splitting_method;

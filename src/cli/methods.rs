@@ -2,7 +2,7 @@
 
 use super::output::{print, yes_no};
 use super::TableFormat;
-use stormer::registry::BUTCHER;
+use stormer::registry::{BUTCHER, SPLITTING};
 use stormer::MethodInfo;
 
 /// The table's columns, in order.
@@ -88,7 +88,11 @@ fn table(rows: &[[String; 9]]) -> String {
 
 /// Prints the catalog.
 pub fn run(format: TableFormat) -> anyhow::Result<()> {
-    let infos: Vec<MethodInfo> = BUTCHER.iter().map(|d| d.info()).collect();
+    let infos: Vec<MethodInfo> = BUTCHER
+        .iter()
+        .map(|d| d.info())
+        .chain(SPLITTING.iter().map(|d| d.info()))
+        .collect();
     let text = match format {
         TableFormat::Table => table(&infos.iter().map(cells).collect::<Vec<_>>()),
         TableFormat::Json => {

@@ -86,3 +86,11 @@ pub struct Interrupted<T: core::fmt::Debug, S: core::fmt::Debug> {
     /// What went wrong.
     pub error: Error,
 }
+
+/// `?` on a run inside a function returning [`Error`]: keeps the error, drops what was
+/// recorded (match on [`Interrupted`] to keep it).
+impl<T: core::fmt::Debug, S: core::fmt::Debug> From<Interrupted<T, S>> for Error {
+    fn from(interrupted: Interrupted<T, S>) -> Self {
+        interrupted.error
+    }
+}

@@ -82,6 +82,8 @@ impl<H: Hamiltonian> Problem for H {
 }
 
 impl<H: Hamiltonian> Splittable for H {
+    type FlowCache = ();
+
     /// `q += tau dT/dp(p)`; `scratch` receives the velocity.
     #[inline(always)]
     fn drift(
@@ -91,6 +93,7 @@ impl<H: Hamiltonian> Splittable for H {
         q: &mut [Self::Scalar],
         p: &mut [Self::Scalar],
         scratch: &mut [Self::Scalar],
+        _cache: &mut (),
     ) {
         self.kinetic_gradient(p, scratch);
         for (q, &v) in q.iter_mut().zip(scratch.iter()) {

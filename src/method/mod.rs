@@ -3,6 +3,7 @@
 mod butcher;
 mod info;
 mod splitting;
+mod splitting_file;
 mod tableau;
 
 pub use butcher::{ButcherMethod, ExplicitMethod};

@@ -73,7 +73,7 @@ pub trait SplittingMethod: Copy + Default + Send + Sync + core::fmt::Debug + 'st
 
     /// Applies one step of size `h` from time `t` in place on the halves `q`, `p`, op by
     /// op in the order of [`SplittingData::word`]: a drift `D(c)` starting at node `s` is
-    /// `problem.drift(t + s h, c h, q, p, v)`, a kick `K(c)` at node `s` evaluates
+    /// `problem.drift(t + s h, c h, q, p, v, cache)`, a kick `K(c)` at node `s` evaluates
     /// `problem.force(t + s h, q, f)` (except for a first kick when `cached`: `f` already
     /// holds the force at `(t, q)`) and applies `problem.kick(c h, f, p)`. `v` is scratch.
     /// On return `f` holds the last force evaluated. Returns the number of force
@@ -87,6 +87,7 @@ pub trait SplittingMethod: Copy + Default + Send + Sync + core::fmt::Debug + 'st
         p: &mut [P::Scalar],
         v: &mut [P::Scalar],
         f: &mut [P::Scalar],
+        cache: &mut P::FlowCache,
         cached: bool,
     ) -> u64;
 }
@@ -102,7 +103,7 @@ pub trait SplittingMethod: Copy + Default + Send + Sync + core::fmt::Debug + 'st
 /// assert_eq!(kdk.stages(), 1);
 /// // a wrong weight is an error naming the condition
 /// let err = Splitting::composition("jump", &[1.35, -1.7, 1.35], 4).unwrap_err();
-/// assert!(err.to_string().contains("order 1 condition sum gamma_i = 1 fails"), "{err}");
+/// assert!(err.to_string().contains("order 4 condition sum gamma_i^3 = 0 fails"), "{err}");
 /// ```
 #[derive(Debug, Clone)]
 pub struct Splitting {
@@ -114,6 +115,7 @@ pub struct Splitting {
 
 impl Splitting {
     /// A drift-first splitting from its arrays.
+    #[allow(clippy::self_named_constructors)] // reads as `Splitting::splitting` vs `::composition`
     pub fn splitting(
         name: impl Into<String>,
         drift: &[f64],

@@ -206,7 +206,7 @@ impl Tableau {
 /// A coefficient as written in a file: an expression string, or a TOML number.
 #[derive(Debug, Deserialize)]
 #[serde(untagged)]
-enum Coefficient {
+pub(super) enum Coefficient {
     Text(String),
     Integer(i64),
     Float(f64),
@@ -276,7 +276,7 @@ fn coefficient(c: &Coefficient, field: &str) -> Result<f64, String> {
     }
 }
 
-fn vector(v: &[Coefficient], field: &str) -> Result<Vec<f64>, String> {
+pub(super) fn vector(v: &[Coefficient], field: &str) -> Result<Vec<f64>, String> {
     v.iter()
         .enumerate()
         .map(|(i, c)| coefficient(c, &format!("{field}[{}]", i + 1)))

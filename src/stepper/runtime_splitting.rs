@@ -26,7 +26,8 @@ use stormer_order::splitting::Flow;
 /// assert!((y[0] - 0.995).abs() < 1e-15);
 /// ```
 #[derive(Debug, Clone)]
-pub struct RuntimeSplitting<S: State> {
+pub struct RuntimeSplitting<S: State, C = ()> {
+    cache: C,
     info: MethodInfo,
     /// `(flow, fraction, node)` per op of the word.
     ops: Vec<(Flow, S::Scalar, S::Scalar)>,
@@ -37,7 +38,7 @@ pub struct RuntimeSplitting<S: State> {
     counters: Counters,
 }
 
-impl<S: State> RuntimeSplitting<S> {
+impl<S: State, C: Default> RuntimeSplitting<S, C> {
     /// A stepper for a general method (valid for every splittable problem). A method that
     /// needs a quadratic kinetic energy is refused: use [`RuntimeSplitting::new_quadratic`]
     /// for a [`crate::QuadraticKinetic`] problem.
@@ -58,6 +59,7 @@ impl<S: State> RuntimeSplitting<S> {
         check_phase_space(method.name(), y0)?;
         Ok(RuntimeSplitting {
             info: method.info(),
+            cache: C::default(),
             ops: method
                 .word()
                 .iter()
@@ -72,7 +74,7 @@ impl<S: State> RuntimeSplitting<S> {
     }
 }
 
-impl<P: Splittable> Stepper<P> for RuntimeSplitting<P::State> {
+impl<P: Splittable> Stepper<P> for RuntimeSplitting<P::State, P::FlowCache> {
     fn info(&self) -> MethodInfo {
         self.info.clone()
     }
@@ -97,7 +99,7 @@ impl<P: Splittable> Stepper<P> for RuntimeSplitting<P::State> {
         let (v, f) = halves_mut(self.work.as_mut_slice());
         for (i, &(flow, coef, node)) in self.ops.iter().enumerate() {
             match flow {
-                Flow::Drift => p.drift(t + node * h, coef * h, q, mom, v),
+                Flow::Drift => p.drift(t + node * h, coef * h, q, mom, v, &mut self.cache),
                 Flow::Kick => {
                     if !(i == 0 && cached) {
                         p.force(t + node * h, q, f);

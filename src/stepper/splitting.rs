@@ -8,7 +8,8 @@ use crate::method::SplittingMethod;
 use crate::{Error, MethodInfo, State};
 
 /// Stepper for a splitting or composition `M` (declared with `splitting!` or
-/// `composition!`) on phase-space states `S = (q, p)`.
+/// `composition!`) on phase-space states `S = (q, p)`; `C` is the problem's
+/// [`crate::Splittable::FlowCache`] (`()` for every [`crate::Hamiltonian`]).
 ///
 /// Only problems of the method's class are accepted, by the type system: a method built
 /// for quadratic kinetic energies ([`crate::flows::QuadraticOnly`]) does not implement
@@ -28,8 +29,9 @@ use crate::{Error, MethodInfo, State};
 /// assert_eq!(y, [1.0 - 0.1 * 0.1 / 2.0, -0.1 * (1.0 + (1.0 - 0.005)) / 2.0]);
 /// ```
 #[derive(Debug, Clone)]
-pub struct SplittingStepper<M: SplittingMethod, S: State> {
+pub struct SplittingStepper<M: SplittingMethod, S: State, C = ()> {
     co: M::Coeffs<S::Scalar>,
+    cache: C,
     /// `(v, f)`: drift scratch and the force of the last kick.
     work: S,
     /// `f` holds the force at the current `(t, y)`.
@@ -39,12 +41,13 @@ pub struct SplittingStepper<M: SplittingMethod, S: State> {
     counters: Counters,
 }
 
-impl<M: SplittingMethod, S: State> SplittingStepper<M, S> {
+impl<M: SplittingMethod, S: State, C: Default> SplittingStepper<M, S, C> {
     /// A stepper with buffers shaped like `y0`, which must have even length `(q, p)`.
     pub fn new(y0: &S) -> Result<Self, Error> {
         check_phase_space(M::DATA.name, y0)?;
         Ok(SplittingStepper {
             co: M::coeffs(),
+            cache: C::default(),
             work: y0.zeros_like(),
             cached: false,
             fresh: false,
@@ -55,8 +58,12 @@ impl<M: SplittingMethod, S: State> SplittingStepper<M, S> {
     /// Boxed for run-time method choice.
     pub fn boxed<P>(y0: &S) -> Result<Box<dyn Stepper<P>>, Error>
     where
-        P: Admits<M::Class> + crate::Problem<Scalar = S::Scalar, State = S> + 'static,
+        P: Admits<M::Class>
+            + crate::Problem<Scalar = S::Scalar, State = S>
+            + crate::Splittable<FlowCache = C>
+            + 'static,
         S: 'static,
+        C: 'static,
     {
         Ok(Box::new(Self::new(y0)?))
     }
@@ -77,7 +84,7 @@ pub(crate) fn check_phase_space<S: State>(method: &str, y0: &S) -> Result<(), Er
     }
 }
 
-impl<M, P> Stepper<P> for SplittingStepper<M, P::State>
+impl<M, P> Stepper<P> for SplittingStepper<M, P::State, P::FlowCache>
 where
     M: SplittingMethod,
     P: Admits<M::Class>,
@@ -106,7 +113,7 @@ where
         y_new.copy_from(y);
         let (q, mom) = halves_mut(y_new.as_mut_slice());
         let (v, f) = halves_mut(self.work.as_mut_slice());
-        self.counters.evaluations += M::flows(&self.co, p, t, h, q, mom, v, f, cached);
+        self.counters.evaluations += M::flows(&self.co, p, t, h, q, mom, v, f, &mut self.cache, cached);
         self.fresh = M::DATA.flags.fsal;
         Ok(None)
     }

@@ -7,7 +7,7 @@ use quote::ToTokens;
 use stormer_order::{eval_coefficient, TableauError, TableauSpec, ValidTableau};
 use syn::{Attribute, Expr, Ident, LitStr, Visibility};
 
-use crate::parse::{Array, Input};
+use crate::tableau::parse::{Array, Input};
 
 /// A tableau that passed every check, ready to expand.
 pub struct Method {
@@ -27,7 +27,7 @@ pub struct Method {
 
 /// An expression as the user wrote it, near enough for a message: `1/2 - sqrt(3)/6`
 /// rather than the token stream's `1 / 2 - sqrt (3) / 6`.
-fn display(expr: &Expr) -> String {
+pub(crate) fn display(expr: &Expr) -> String {
     match expr {
         Expr::Paren(p) => format!("({})", display(&p.expr)),
         Expr::Group(g) => display(&g.expr),
@@ -50,7 +50,7 @@ fn display(expr: &Expr) -> String {
 }
 
 /// Evaluates one coefficient with the shared expression evaluator.
-fn eval(expr: &Expr) -> syn::Result<f64> {
+pub(crate) fn eval(expr: &Expr) -> syn::Result<f64> {
     eval_coefficient(&expr.to_token_stream().to_string())
         .map_err(|e| syn::Error::new_spanned(expr, format!("cannot evaluate coefficient `{}`: {e}", display(expr))))
 }
@@ -58,13 +58,13 @@ fn eval(expr: &Expr) -> syn::Result<f64> {
 /// Evaluates coefficients, collecting every error (so that all bad coefficients of an
 /// invocation are reported at once).
 #[derive(Default)]
-struct Evaluator {
-    errors: Option<syn::Error>,
+pub(crate) struct Evaluator {
+    pub(crate) errors: Option<syn::Error>,
 }
 
 impl Evaluator {
     /// The value of one coefficient; `None` after recording its error.
-    fn one(&mut self, expr: &Expr) -> Option<f64> {
+    pub(crate) fn one(&mut self, expr: &Expr) -> Option<f64> {
         match eval(expr) {
             Ok(x) => Some(x),
             Err(e) => {
@@ -78,7 +78,7 @@ impl Evaluator {
     }
 
     /// The values of an array (a placeholder 0 for an entry that failed).
-    fn array(&mut self, array: &Array) -> Vec<f64> {
+    pub(crate) fn array(&mut self, array: &Array) -> Vec<f64> {
         array.items.iter().map(|expr| self.one(expr).unwrap_or(0.0)).collect()
     }
 }

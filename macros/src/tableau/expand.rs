@@ -30,10 +30,10 @@ use proc_macro2::{Literal, TokenStream};
 use quote::{format_ident, quote};
 use stormer_order::ValidTableau;
 
-use crate::valid::Method;
+use crate::tableau::valid::Method;
 
 /// An `f64` literal that reads back to exactly `x` (sign as a separate token).
-fn float(x: f64) -> TokenStream {
+pub(crate) fn float(x: f64) -> TokenStream {
     let lit = Literal::f64_suffixed(x.abs());
     if x.is_sign_negative() {
         quote!(-#lit)
@@ -43,13 +43,13 @@ fn float(x: f64) -> TokenStream {
 }
 
 /// `&[x1, x2, ...]`.
-fn floats(v: &[f64]) -> TokenStream {
+pub(crate) fn floats(v: &[f64]) -> TokenStream {
     let items = v.iter().map(|&x| float(x));
     quote!(&[#(#items),*])
 }
 
 /// `None` or `Some(&[...])`.
-fn optional_floats(v: Option<&Vec<f64>>) -> TokenStream {
+pub(crate) fn optional_floats(v: Option<&Vec<f64>>) -> TokenStream {
     match v {
         Some(v) => {
             let v = floats(v);
@@ -62,13 +62,13 @@ fn optional_floats(v: Option<&Vec<f64>>) -> TokenStream {
 /// The distinct nonzero coefficient values the step uses, in order of first use; the
 /// generated code reads slot `i` as `__co[i]`.
 #[derive(Default)]
-struct Slots {
-    values: Vec<f64>,
+pub(crate) struct Slots {
+    pub(crate) values: Vec<f64>,
 }
 
 impl Slots {
     /// The slot of `x` (bitwise-equal values share one).
-    fn of(&mut self, x: f64) -> usize {
+    pub(crate) fn of(&mut self, x: f64) -> usize {
         match self.values.iter().position(|v| v.to_bits() == x.to_bits()) {
             Some(i) => i,
             None => {
@@ -363,7 +363,9 @@ mod tests {
 
     fn expand(tokens: proc_macro2::TokenStream) -> String {
         let input = syn::parse2(tokens).unwrap();
-        let method = crate::valid::validate(input).map_err(|e| e.to_string()).unwrap();
+        let method = crate::tableau::valid::validate(input)
+            .map_err(|e| e.to_string())
+            .unwrap();
         super::expand(&method).to_string()
     }
 

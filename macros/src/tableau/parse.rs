@@ -114,7 +114,7 @@ impl Parse for Matrix {
 }
 
 /// An order: a non-negative integer literal (range checks are `valid.rs`'s).
-fn parse_order(input: ParseStream, key: &Ident) -> syn::Result<Spanned<usize>> {
+pub(crate) fn parse_order(input: ParseStream, key: &Ident) -> syn::Result<Spanned<usize>> {
     let expr: Expr = input.parse()?;
     let err = || {
         syn::Error::new_spanned(
@@ -149,7 +149,7 @@ struct Fields {
 }
 
 /// Adds `e` to the accumulated errors.
-fn push(errors: &mut Option<syn::Error>, e: syn::Error) {
+pub(crate) fn push(errors: &mut Option<syn::Error>, e: syn::Error) {
     match errors {
         Some(all) => all.combine(e),
         None => *errors = Some(e),
@@ -157,7 +157,7 @@ fn push(errors: &mut Option<syn::Error>, e: syn::Error) {
 }
 
 /// Levenshtein distance, for suggesting a key.
-fn distance(a: &str, b: &str) -> usize {
+pub(crate) fn distance(a: &str, b: &str) -> usize {
     let b: Vec<char> = b.chars().collect();
     let mut row: Vec<usize> = (0..=b.len()).collect();
     for (i, ca) in a.chars().enumerate() {
@@ -173,7 +173,7 @@ fn distance(a: &str, b: &str) -> usize {
 }
 
 /// Skips the tokens of one value (up to the next top-level comma).
-fn skip_value(input: ParseStream) -> syn::Result<()> {
+pub(crate) fn skip_value(input: ParseStream) -> syn::Result<()> {
     while !input.is_empty() && !input.peek(Token![,]) {
         input.parse::<proc_macro2::TokenTree>()?;
     }

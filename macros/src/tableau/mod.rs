@@ -1,0 +1,5 @@
+//! `tableau!`: a Butcher tableau.
+
+pub mod expand;
+pub mod parse;
+pub mod valid;
