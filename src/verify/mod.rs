@@ -17,13 +17,17 @@ mod dual;
 mod jacobian;
 mod order;
 pub mod problems;
+mod report;
 mod reversibility;
+mod scheme;
 mod structure;
 
 pub use dual::{jacobian_dual, DualScalar};
 pub use jacobian::{increment, jacobian_fd};
 pub use order::{measure_order, reference_flow, OrderMeasurement, OrderOptions, Sample};
+pub use report::{report, Case, Check, Report, REVERSIBLE_FACTOR, SYMPLECTIC_FACTOR};
 pub use reversibility::reversibility_defect;
+pub use scheme::Scheme;
 pub use structure::{defect_bound, symplectic_defect, Canonical, Structure};
 
 #[allow(unused_imports)]
