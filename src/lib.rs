@@ -59,6 +59,8 @@ pub mod guide {
     pub mod define_your_own_scheme {}
     #[doc = include_str!("../docs/declaring-a-method.md")]
     pub mod declaring_a_method {}
+    #[doc = include_str!("../docs/verification.md")]
+    pub mod verification {}
 }
 
 /// The everyday items in one import.

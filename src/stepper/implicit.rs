@@ -16,9 +16,9 @@
 mod newton;
 
 use super::{Counters, Stepper, Tolerances};
+use crate::real::magnitude;
 #[allow(unused_imports)]
 use crate::real::ops::*;
-use crate::real::magnitude;
 use crate::{lit, to_f64, Error, MethodInfo, Problem, Real, State, Tableau};
 use newton::Newton;
 

@@ -21,7 +21,7 @@ use num_dual::{Dual32, Dual64};
 /// use num_dual::Dual64;
 /// let x = Dual64::seeded(3.0, 1.0);
 /// let y = x * x; // d(x^2)/dx = 2x
-/// assert_eq!((y.value(), y.derivative()), (9.0, 6.0));
+/// assert_eq!((y.real_part(), y.dual_part()), (9.0, 6.0));
 /// ```
 pub trait DualScalar: Real {
     /// The scalar of the two parts (`f64` for [`Dual64`]).
@@ -29,9 +29,9 @@ pub trait DualScalar: Real {
     /// The dual number `re + eps ε`.
     fn seeded(re: Self::Re, eps: Self::Re) -> Self;
     /// The real part.
-    fn value(self) -> Self::Re;
+    fn real_part(self) -> Self::Re;
     /// The derivative part.
-    fn derivative(self) -> Self::Re;
+    fn dual_part(self) -> Self::Re;
 }
 
 macro_rules! dual_scalar {
@@ -43,11 +43,11 @@ macro_rules! dual_scalar {
                 <$dual>::new(re, eps)
             }
             #[inline]
-            fn value(self) -> $re {
+            fn real_part(self) -> $re {
                 self.re
             }
             #[inline]
-            fn derivative(self) -> $re {
+            fn dual_part(self) -> $re {
                 self.eps
             }
         }
@@ -94,11 +94,11 @@ where
     let mut out = y.zeros_like();
     for j in 0..n {
         for (k, (s, &y)) in seeded.as_mut_slice().iter_mut().zip(y.as_slice()).enumerate() {
-            *s = P::Scalar::seeded(y.value(), if k == j { one } else { zero });
+            *s = P::Scalar::seeded(y.real_part(), if k == j { one } else { zero });
         }
         step_once(stepper, problem, t, h, &seeded, &mut out)?;
         for (i, o) in out.as_slice().iter().enumerate() {
-            jac[(i, j)] = o.derivative();
+            jac[(i, j)] = o.dual_part();
         }
     }
     Ok(jac)

@@ -123,7 +123,9 @@ where
         let h = options.h_max / options.ratio.powi(k as i32);
         let mut worst = Some(0.0f64);
         for (t, y) in &states {
-            worst = worst.zip(centred_error(stepper, problem, *t, y, h)).map(|(a, b)| a.max(b));
+            worst = worst
+                .zip(centred_error(stepper, problem, *t, y, h))
+                .map(|(a, b)| a.max(b));
         }
         if let Some(error) = worst {
             samples.push(Sample { h, error });

@@ -97,7 +97,12 @@ pub fn report(scheme: &Scheme) -> Result<Report, Error> {
     }
     for y in PLANAR_STATES {
         for h in STEPS {
-            cases.push(case::<HenonHeiles<f64>, HenonHeiles<Dual64>, 4>(scheme, "henon_heiles", y, h)?);
+            cases.push(case::<HenonHeiles<f64>, HenonHeiles<Dual64>, 4>(
+                scheme,
+                "henon_heiles",
+                y,
+                h,
+            )?);
             if general {
                 cases.push(case::<QuarticKinetic<f64>, QuarticKinetic<Dual64>, 4>(
                     scheme,
@@ -192,12 +197,7 @@ impl<T: Real> TestProblem for QuarticKinetic<T> {
     }
 }
 
-fn case<P, D, const N: usize>(
-    scheme: &Scheme,
-    problem: &'static str,
-    y: [f64; N],
-    h: f64,
-) -> Result<Outcome, Error>
+fn case<P, D, const N: usize>(scheme: &Scheme, problem: &'static str, y: [f64; N], h: f64) -> Result<Outcome, Error>
 where
     P: TestProblem + crate::Problem<Scalar = f64, State = [f64; N]>,
     D: TestProblem + crate::Problem<Scalar = Dual64, State = [Dual64; N]>,

@@ -64,11 +64,14 @@ impl Structure for DMatrix<f64> {
 /// let shear = DMatrix::from_row_slice(2, 2, &[1.0, 0.1, 0.0, 1.0]);
 /// assert_eq!(symplectic_defect(&shear, &Canonical, &[0.0; 2], &[0.0; 2]), 0.0);
 /// let contraction = DMatrix::from_row_slice(2, 2, &[0.9, 0.0, 0.0, 1.0]);
-/// assert!((symplectic_defect(&contraction, &Canonical, &[0.0; 2], &[0.0; 2]) - 0.1).abs() < 1e-15);
+/// let d: f64 = symplectic_defect(&contraction, &Canonical, &[0.0; 2], &[0.0; 2]);
+/// assert!((d - 0.1).abs() < 1e-15);
 /// ```
 pub fn symplectic_defect<T: Real>(j: &DMatrix<T>, structure: &impl Structure, y0: &[T], y1: &[T]) -> T {
     let lhs = j.transpose() * structure.matrix(y1) * j;
-    (lhs - structure.matrix(y0)).iter().fold(T::zero(), |m, x| m.max(x.abs()))
+    (lhs - structure.matrix(y0))
+        .iter()
+        .fold(T::zero(), |m, x| m.max(x.abs()))
 }
 
 /// The largest defect that counts as round-off for a Jacobian `J` computed in a scalar of

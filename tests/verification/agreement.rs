@@ -34,7 +34,11 @@ fn every_splitting_is_symplectic_and_reversible_exactly_when_symmetric() {
     for data in registry::SPLITTING {
         let r = report(&Scheme::named(data.name).unwrap()).unwrap();
         assert!(r.symplectic.holds, "{}: {:?}", data.name, r.symplectic);
-        assert_eq!(data.flags.symmetric, r.reversible.holds, "{}: {:?}", data.name, r.reversible);
+        assert_eq!(
+            data.flags.symmetric, r.reversible.holds,
+            "{}: {:?}",
+            data.name, r.reversible
+        );
     }
 }
 
@@ -43,7 +47,11 @@ fn a_tableau_is_reversible_exactly_when_symmetric() {
     let mut reversible = 0;
     for data in registry::BUTCHER {
         let r = report(&Scheme::named(data.name).unwrap()).unwrap();
-        assert_eq!(data.flags.symmetric, r.reversible.holds, "{}: {:?}", data.name, r.reversible);
+        assert_eq!(
+            data.flags.symmetric, r.reversible.holds,
+            "{}: {:?}",
+            data.name, r.reversible
+        );
         reversible += usize::from(r.reversible.holds);
     }
     // midpoint rule, trapezoid, Gauss 4 and 6, Lobatto IIIA and IIIB
@@ -71,6 +79,10 @@ fn defects_scale_with_the_scalars_epsilon() {
         stepper.step(&p, lit(0.0), lit(1.0), &y, &mut y1, None).unwrap();
         let defect = symplectic_defect(&j, &Canonical, &y.map(|x| x.re), &y1.map(|x| x.re));
         let bound = defect_bound(&j, SYMPLECTIC_FACTOR);
-        assert_eq!(defect <= bound, symplectic, "{name}: defect {defect:e}, bound {bound:e}");
+        assert_eq!(
+            defect <= bound,
+            symplectic,
+            "{name}: defect {defect:e}, bound {bound:e}"
+        );
     }
 }

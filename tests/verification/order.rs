@@ -108,12 +108,20 @@ fn a_drift_kick_role_swap_is_caught_on_a_nonlinear_problem() {
     let data = registry::find_splitting("mclachlan_atela4").unwrap();
     // K(k1) D(d1) ... K(k4) D(d4) becomes D(k1) K(d1) ... D(k4) K(d4)
     let (drift, kick) = (data.drift, data.kick);
-    assert_eq!((drift[0], kick[kick.len() - 1]), (0.0, 0.0), "the catalog's word is K D K D K D K D");
+    assert_eq!(
+        (drift[0], kick[kick.len() - 1]),
+        (0.0, 0.0),
+        "the catalog's word is K D K D K D K D"
+    );
     let swapped_drift = kick[..kick.len() - 1].to_vec();
     let swapped_kick = drift[1..].to_vec();
     let swapped = Splitting::splitting("mcate4_swapped", &swapped_drift, &swapped_kick, 3, true).unwrap();
     let y = HenonHeiles::<f64>::initial();
     let mut stepper = RuntimeSplitting::new_quadratic(&swapped, &y).unwrap();
     let m = measure_order(&mut stepper, &HenonHeiles::new(), 0.0, &y, &OrderOptions::default()).unwrap();
-    assert!((m.order - 3.0).abs() <= TOLERANCE, "swapped McLachlan-Atela 4 measures {:.2}", m.order);
+    assert!(
+        (m.order - 3.0).abs() <= TOLERANCE,
+        "swapped McLachlan-Atela 4 measures {:.2}",
+        m.order
+    );
 }

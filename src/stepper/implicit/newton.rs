@@ -1,9 +1,9 @@
 //! The simplified Newton iteration of Hairer & Wanner (*Solving ODEs II*, IV.8): one
 //! finite-difference Jacobian and one LU factorisation per step.
 
+use crate::real::magnitude;
 #[allow(unused_imports)]
 use crate::real::ops::*;
-use crate::real::magnitude;
 use crate::{lit, Problem, Real, State};
 use nalgebra::{DMatrix, DVector, Dyn, LU};
 
