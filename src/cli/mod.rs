@@ -3,6 +3,8 @@
 mod choice;
 mod methods;
 mod output;
+#[allow(dead_code)] // used by `run`, `compare` and `scan` as they land (issue 5)
+mod plot;
 mod run;
 mod scene;
 mod verify;
