@@ -65,6 +65,7 @@ mod tests {
     use num_dual::Dual64;
 
     #[test]
+    #[allow(clippy::float_cmp)] // exact values
     fn magnitude_sees_the_derivative_part_of_dual_numbers() {
         assert_eq!(magnitude(-2.0f64), 2.0);
         assert_eq!(magnitude(-2.0f32), 2.0);
