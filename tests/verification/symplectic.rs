@@ -109,13 +109,16 @@ fn symplectic(name: &str, case: &Case, general: bool) -> Result<(), TestCaseErro
     Ok(())
 }
 
-/// A negative control fails every problem's bound by at least three orders of magnitude.
+/// A negative control fails the same check (the largest defect over the problems) by at
+/// least three orders of magnitude. Not every problem alone does: at `h = 0.05` RK4's
+/// pendulum defect can be as small as `2.4e3 eps |J|^2` (24 times the bound; the case is
+/// in `proptest-regressions/`), while Henon-Heiles stays near `1e6`.
 fn not_symplectic(name: &str, case: &Case) -> Result<(), TestCaseError> {
     let d = measured(name, case, true)?;
-    let least = d.iter().cloned().fold(f64::INFINITY, f64::min);
+    let worst = d.iter().cloned().fold(0.0, f64::max);
     prop_assert!(
-        least >= 1e3 * SYMPLECTIC_FACTOR,
-        "{name}: defect only {least:.1} eps |J|^2 ({d:?}, {case:?})"
+        worst >= 1e3 * SYMPLECTIC_FACTOR,
+        "{name}: defect only {worst:.1} eps |J|^2 ({d:?}, {case:?})"
     );
     Ok(())
 }
