@@ -8,6 +8,7 @@
 mod agreement;
 mod dual;
 mod order;
+mod structure;
 mod symplectic;
 
 /// The catalog's splittings and compositions, by the class of problems they are valid
