@@ -61,6 +61,8 @@ pub mod guide {
     pub mod declaring_a_method {}
     #[doc = include_str!("../docs/verification.md")]
     pub mod verification {}
+    #[doc = include_str!("../docs/charged-particles.md")]
+    pub mod charged_particles {}
 }
 
 /// The everyday items in one import.
