@@ -10,8 +10,10 @@
 //! - [`reversibility_defect`]: a step of `h` then `-h`;
 //! - [`measure_order`]: the slope of the (centred) local error against the step size;
 //!
-//! The nonlinear test problems are in [`problems`]. `docs/verification.md` explains the
-//! checks, their bounds and the measurements behind them.
+//! [`report`] runs all of them on a [`Scheme`] (a method of any family, catalog or
+//! user-made) over the nonlinear test problems of [`problems`]; it is what
+//! `stormer verify` prints. `docs/verification.md` explains the checks, their bounds and
+//! the measurements behind them.
 
 mod dual;
 mod jacobian;
