@@ -1,6 +1,7 @@
 //! Reference problems with exact solutions, shared by the integration tests.
 #![allow(dead_code)]
 
+use nalgebra::DVector;
 use stormer::{lit, Problem, Real};
 
 /// Hairer's nonlinear, non-autonomous test problem (Hairer, Norsett, Wanner, *Solving
@@ -139,147 +140,109 @@ impl<T: Real> Problem for Generic<Logistic, T> {
     }
 }
 
-/// EXPLORATION: spiral onto a limit cycle.
-#[derive(Debug, Clone, Copy)]
-pub struct Spiral {
-    pub kappa: f64,
-    pub beta: f64,
-    pub eps: f64,
-    pub nu: f64,
-    pub w0: f64,
-    pub r0: f64,
-    pub cubic: bool,
+/// Butcher's tree system, scaled: one component `z_τ` for every rooted tree `τ` with
+/// `2 <= |τ| <= max_order`, with `z_τ' = |τ| Π_{σ child of τ's root} z_σ`, where a child that
+/// is a single vertex stands for the time `t` itself. The exact solution through
+/// `z_τ(t0) = t0^|τ|` is `z_τ(t) = t^|τ|`.
+///
+/// (It is the system `y_τ' = Π y_σ`, `y_τ = t^|τ| / γ(τ)`, of Butcher's theory with every
+/// component scaled by its density `γ(τ) = |τ| Π γ(σ)`, so that all components are of size 1.)
+///
+/// It is nonlinear (products of components) as soon as `max_order >= 5`, whose tree
+/// `[[τ][τ]]` gives `z' = 5 z_[τ]^2`, and non-autonomous (the leaves are `t`), so the stepper's
+/// nodes `c_i` are exercised. Every elementary differential of order `<= max_order` is
+/// present in some component, and component `τ` is a polynomial of degree `|τ|` in `t`;
+/// hence every elementary differential of order `> max_order` vanishes identically. For a
+/// method of order `p` integrating the system with `max_order = p + 1`, the components of
+/// order `<= p` are integrated exactly and the local error of the others is exactly
+/// `h^(p+1)` times a constant (no `h^(p+2)`, ... terms: the B-series of the error stops at
+/// trees of order `p + 1`), so the global error at a fixed end time is exactly proportional
+/// to `h^p` in exact arithmetic. The measured slope therefore reaches the
+/// declared order at every step size, however small the method's principal error
+/// coefficients are compared to the next ones (Verner's and Dormand-Prince's pairs are
+/// designed that way), and a method of lower order than declared still shows it, since
+/// every tree of order `<= p` is exercised.
+#[derive(Debug, Clone)]
+pub struct TreeSystem {
+    /// `|τ|` of each component.
+    orders: Vec<usize>,
+    /// Children of each component's root, as indices into the components (`LEAF`: the time).
+    children: Vec<Vec<usize>>,
 }
 
-impl Default for Spiral {
-    fn default() -> Self {
-        Spiral {
-            kappa: 1.0,
-            beta: 1.0,
-            eps: 0.5,
-            nu: 1.0,
-            w0: 1.0,
-            r0: 0.5,
-            cubic: false,
+impl TreeSystem {
+    /// A child that is a single vertex: the time `t`.
+    pub const LEAF: usize = usize::MAX;
+
+    /// The components for all trees of orders `2..=max_order` (generated here rather than
+    /// taken from `stormer::order`, so that the check does not share the crate's tree code).
+    pub fn up_to(max_order: usize) -> Self {
+        // Trees as sorted child lists of indices into `all` (index 0 is the single vertex);
+        // trees of order n are the multisets of trees whose orders sum to n - 1, generated
+        // with non-decreasing indices so that each appears once.
+        fn multisets(
+            all: &[(usize, Vec<usize>)],
+            remaining: usize,
+            min: usize,
+            prefix: &mut Vec<usize>,
+            out: &mut Vec<Vec<usize>>,
+        ) {
+            if remaining == 0 {
+                out.push(prefix.clone());
+                return;
+            }
+            for i in min..all.len() {
+                if all[i].0 <= remaining {
+                    prefix.push(i);
+                    multisets(all, remaining - all[i].0, i, prefix, out);
+                    prefix.pop();
+                }
+            }
+        }
+        let mut all: Vec<(usize, Vec<usize>)> = vec![(1, Vec::new())];
+        for n in 2..=max_order {
+            let mut found = Vec::new();
+            multisets(&all, n - 1, 0, &mut Vec::new(), &mut found);
+            all.extend(found.into_iter().map(|c| (n, c)));
+        }
+        // Component k is tree k + 1 of `all`; the single vertex becomes LEAF.
+        let index = |i: usize| if i == 0 { Self::LEAF } else { i - 1 };
+        TreeSystem {
+            orders: all[1..].iter().map(|t| t.0).collect(),
+            children: all[1..]
+                .iter()
+                .map(|t| t.1.iter().map(|&i| index(i)).collect())
+                .collect(),
         }
     }
-}
 
-impl Spiral {
-    pub fn initial<T: Real>(&self) -> [T; 2] {
-        [lit(self.r0), T::zero()]
+    /// Number of components (trees of orders `2..=max_order`).
+    pub fn dim(&self) -> usize {
+        self.orders.len()
     }
-    pub fn exact(&self, t: f64) -> [f64; 2] {
-        let (k, r0) = (self.kappa, self.r0);
-        let (r, shear) = if self.cubic {
-            let c = 1.0 / (r0 * r0) - 1.0;
-            let u = 1.0 / (1.0 + c * (-2.0 * k * t).exp());
-            (
-                u.sqrt(),
-                ((1.0 + c * (-2.0 * k * t).exp()) / (1.0 + c)).ln() / (2.0 * k),
-            )
-        } else {
-            (
-                1.0 - (1.0 - r0) * (-k * t).exp(),
-                -(1.0 - r0) * (1.0 - (-k * t).exp()) / k,
-            )
-        };
-        let theta = self.w0 * t + self.eps / self.nu * (self.nu * t).sin() + self.beta * shear;
-        [r * theta.cos(), r * theta.sin()]
+
+    /// Number of components (trees) of order `n`.
+    pub fn count_of_order(&self, n: usize) -> usize {
+        self.orders.iter().filter(|&&o| o == n).count()
+    }
+
+    /// The exact solution `z_τ(t) = t^|τ|`.
+    pub fn exact<T: Real>(&self, t: T) -> DVector<T> {
+        DVector::from_iterator(self.dim(), self.orders.iter().map(|&o| t.powi(o as i32)))
     }
 }
 
-impl<T: Real> Problem for Generic<Spiral, T> {
+impl<T: Real> Problem for Generic<TreeSystem, T> {
     type Scalar = T;
-    type State = [T; 2];
-    fn rhs(&self, t: T, y: &[T; 2], dy: &mut [T; 2]) {
-        let s = &self.0;
-        let r2 = y[0] * y[0] + y[1] * y[1];
-        let (radial, dev) = if s.cubic {
-            (lit::<T>(s.kappa) * (T::one() - r2), r2 - T::one())
-        } else {
-            let r = r2.sqrt();
-            (lit::<T>(s.kappa) * (T::one() / r - T::one()), r - T::one())
-        };
-        let w = lit::<T>(s.w0) + lit::<T>(s.eps) * (lit::<T>(s.nu) * t).cos() + lit::<T>(s.beta) * dev;
-        dy[0] = radial * y[0] - w * y[1];
-        dy[1] = radial * y[1] + w * y[0];
-    }
-}
-
-/// EXPLORATION: candidate problems, 4-D.
-#[derive(Debug, Clone, Copy, Default)]
-pub struct Cand {
-    pub kind: u8,
-    pub p: [f64; 8],
-}
-
-impl Cand {
-    pub fn initial(&self) -> [f64; 4] {
-        self.exact(0.0)
-    }
-    pub fn exact(&self, t: f64) -> [f64; 4] {
-        let p = &self.p;
-        match self.kind {
-            // Spiral in 0,1 (kappa p0, beta p1, eps p2, nu p3, r0 p5, cubic p6), zeros
-            0 => {
-                let s = Spiral {
-                    kappa: p[0],
-                    beta: p[1],
-                    eps: p[2],
-                    nu: p[3],
-                    w0: p[4],
-                    r0: p[5],
-                    cubic: p[6] != 0.0,
-                };
-                let y = s.exact(t);
-                [y[0], y[1], 0.0, 0.0]
+    type State = DVector<T>;
+    fn rhs(&self, t: T, y: &DVector<T>, dy: &mut DVector<T>) {
+        let sys = &self.0;
+        for (k, children) in sys.children.iter().enumerate() {
+            let mut v = lit::<T>(sys.orders[k] as f64);
+            for &c in children {
+                v *= if c == TreeSystem::LEAF { t } else { y[c] };
             }
-            // Kepler e = p0
-            1 => Kepler { e: p[0] }.exact::<f64>(t),
-            // two rotors: r1 = p0, r2 = p1; w1 = 1 + a cos t + b r2^2 ; w2 = 2 + c sin(t) + d r1^2 (a=p2,b=p3,c=p4,d=p5)
-            2 => {
-                let (r1, r2, a, b, c, d) = (p[0], p[1], p[2], p[3], p[4], p[5]);
-                let th1 = t + a * t.sin() + b * r2 * r2 * t;
-                let th2 = 2.0 * t + c * (1.0 - t.cos()) + d * r1 * r1 * t;
-                [r1 * th1.cos(), r1 * th1.sin(), r2 * th2.cos(), r2 * th2.sin()]
-            }
-            _ => unreachable!(),
-        }
-    }
-}
-
-impl<T: Real> Problem for Generic<Cand, T> {
-    type Scalar = T;
-    type State = [T; 4];
-    fn rhs(&self, t: T, y: &[T; 4], dy: &mut [T; 4]) {
-        let p = &self.0.p;
-        match self.0.kind {
-            0 => {
-                let s = Spiral {
-                    kappa: p[0],
-                    beta: p[1],
-                    eps: p[2],
-                    nu: p[3],
-                    w0: p[4],
-                    r0: p[5],
-                    cubic: p[6] != 0.0,
-                };
-                let g = Generic::<Spiral, T>(s, core::marker::PhantomData);
-                let mut d2 = [T::zero(); 2];
-                g.rhs(t, &[y[0], y[1]], &mut d2);
-                *dy = [d2[0], d2[1], T::zero(), T::zero()];
-            }
-            1 => Generic::<Kepler, T>(Kepler { e: p[0] }, core::marker::PhantomData).rhs(t, y, dy),
-            2 => {
-                let (a, b, c, d) = (lit::<T>(p[2]), lit::<T>(p[3]), lit::<T>(p[4]), lit::<T>(p[5]));
-                let q1 = y[0] * y[0] + y[1] * y[1];
-                let q2 = y[2] * y[2] + y[3] * y[3];
-                let w1 = T::one() + a * t.cos() + b * q2;
-                let w2 = lit::<T>(2.0) + c * t.sin() + d * q1;
-                *dy = [-w1 * y[1], w1 * y[0], -w2 * y[3], w2 * y[2]];
-            }
-            _ => unreachable!(),
+            dy[k] = v;
         }
     }
 }
