@@ -17,6 +17,7 @@ pub mod registry;
 pub mod scenes;
 mod state;
 pub mod stepper;
+pub mod verify;
 
 pub use driver::{Driver, Interrupted, Solution, Stats, StepControl, StopEvent};
 pub use error::Error;
@@ -58,6 +59,8 @@ pub mod guide {
     pub mod define_your_own_scheme {}
     #[doc = include_str!("../docs/declaring-a-method.md")]
     pub mod declaring_a_method {}
+    #[doc = include_str!("../docs/verification.md")]
+    pub mod verification {}
     #[doc = include_str!("../docs/charged-particles.md")]
     pub mod charged_particles {}
 }

@@ -470,3 +470,69 @@ fn a_failing_run_keeps_its_records() {
     );
     assert_error(&out, "did not converge");
 }
+
+/// The numerical checks of `verify` (docs/verification.md): the acceptance of issue 3.
+#[test]
+fn verify_measures_order_symplecticity_and_reversibility() {
+    let dir = workdir("verify-checks");
+    let json = |args: &[&str]| -> serde_json::Value {
+        let out = stormer(&dir, args);
+        assert_ok(&out);
+        serde_json::from_str(&stdout(&out)).unwrap()
+    };
+    let f = |v: &serde_json::Value, key: &str| v[key].as_f64().unwrap_or_else(|| panic!("{key}: {v}"));
+    // a sixth-order composition: order 6 measured, defect at round-off, reversible
+    let v = json(&["verify", "kahan_li6", "--format", "json"]);
+    assert_eq!(v["family"], "composition");
+    assert!((f(&v, "measured_order") - 6.0).abs() <= 0.2, "{v}");
+    assert_eq!(v["measured_order_problem"], "quartic_kinetic");
+    assert_eq!(
+        (v["symplectic"].as_bool(), v["reversible"].as_bool()),
+        (Some(true), Some(true))
+    );
+    assert!(f(&v, "symplectic_defect") <= f(&v, "symplectic_defect_bound"));
+    assert!(f(&v, "symplectic_defect_bound") < 1e-13, "a round-off bound: {v}");
+    assert!(f(&v, "reversibility_defect") <= f(&v, "reversibility_defect_bound"));
+    // RK4: fourth order, neither symplectic nor reversible, by orders of magnitude
+    let v = json(&["verify", "rk4", "--format", "json"]);
+    assert!((f(&v, "measured_order") - 4.0).abs() <= 0.2, "{v}");
+    assert_eq!(
+        (v["symplectic"].as_bool(), v["reversible"].as_bool()),
+        (Some(false), Some(false))
+    );
+    assert!(f(&v, "symplectic_defect") > 1e6 * f(&v, "symplectic_defect_bound"));
+    assert_eq!(v["symplectic_condition"], false);
+    // a Runge-Kutta-Nystrom splitting is measured on a quadratic kinetic energy
+    let v = json(&["verify", "mclachlan-atela4", "--format", "json"]);
+    assert_eq!(v["measured_order_problem"], "henon_heiles");
+    assert!((f(&v, "measured_order") - 4.0).abs() <= 0.2, "{v}");
+    // the text form says it in words
+    let text = stdout(&stormer(&dir, &["verify", "kahan_li6"]));
+    assert!(text.contains("agrees with the declared 6"), "{text}");
+    assert!(text.contains("  symplectic       yes: max |J^T S J - S|"), "{text}");
+    let text = stdout(&stormer(&dir, &["verify", "rk4"]));
+    assert!(text.contains("  symplectic       no: max |J^T S J - S|"), "{text}");
+}
+
+#[test]
+fn verify_reads_splitting_and_composition_files() {
+    let dir = workdir("verify-splitting-files");
+    let leapfrog = "name = \"my_leapfrog\"\nfamily = \"splitting\"\norder = 2\ndrift = [\"1/2\", \"1/2\"]\nkick = [\"1\", \"0\"]\n";
+    std::fs::write(dir.join("leapfrog.toml"), leapfrog).unwrap();
+    let out = stormer(&dir, &["verify", "leapfrog.toml", "--format", "json"]);
+    assert_ok(&out);
+    let v: serde_json::Value = serde_json::from_str(&stdout(&out)).unwrap();
+    assert_eq!(
+        (v["name"].as_str(), v["family"].as_str()),
+        (Some("my_leapfrog"), Some("splitting"))
+    );
+    assert!((v["measured_order"].as_f64().unwrap() - 2.0).abs() <= 0.2, "{v}");
+    assert_eq!(
+        (v["symplectic"].as_bool(), v["reversible"].as_bool()),
+        (Some(true), Some(true))
+    );
+    // a composition with rounded weights is refused with the failing condition
+    let bad = "name = \"jump\"\norder = 4\ngamma = [\"1.35\", \"-1.7\", \"1.35\"]\n";
+    std::fs::write(dir.join("jump.toml"), bad).unwrap();
+    assert_error(&stormer(&dir, &["verify", "jump.toml"]), "sum gamma_i^3 = 0 fails");
+}

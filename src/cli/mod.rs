@@ -8,6 +8,8 @@ mod plot;
 mod run;
 mod scene;
 mod verify;
+mod verify_checks;
+mod verify_splitting;
 
 use clap::{Parser, Subcommand, ValueEnum};
 use std::io::Write;
@@ -29,8 +31,8 @@ enum Command {
         #[arg(long, value_enum, default_value_t = TableFormat::Table)]
         format: TableFormat,
     },
-    /// Check a method: flags, row sums, every order condition with its residual, and the
-    /// highest order its coefficients reach.
+    /// Check a method: flags, every order (or consistency) condition with its residual, and
+    /// the numerical checks: measured order, symplecticity (J^T S J = S) and reversibility.
     Verify {
         /// A catalog name (`-` and `_` both accepted) or a path to a TOML method file.
         method: String,

@@ -1,17 +1,24 @@
-//! `stormer verify METHOD|FILE`: flags, row sums, every order condition with its residual,
-//! and the highest order the coefficients reach.
+//! `stormer verify METHOD|FILE`: for a Butcher tableau, flags, row sums, every order
+//! condition with its residual and the highest order the coefficients reach; for a
+//! splitting or composition, its consistency conditions (`verify_splitting`); for both,
+//! the numerical checks of `stormer::verify` (`verify_checks`).
 
-use super::choice::MethodChoice;
+use super::choice::{looks_like_path, MethodChoice};
 use super::output::{print, yes_no};
-use super::TextFormat;
+use super::verify_checks::{self, JsonChecks};
+use super::{verify_splitting, TextFormat};
 use std::fmt::Write as _;
+use std::path::Path;
 use stormer::order::{achieved_order, DEFAULT_TOLERANCE, MAX_ORDER};
-use stormer::Tableau;
+use stormer::registry::{self, normalize, MethodRef};
+use stormer::verify::{self, Scheme};
+use stormer::{Splitting, Tableau};
 
 /// What `verify` reports about a tableau.
 struct Report {
     tableau: Tableau,
     source: String,
+    checks: verify::Report,
     row_sum_residual: f64,
     /// Orders checked for exactness: `min(order + 1, MAX_ORDER)`.
     limit: usize,
@@ -20,7 +27,7 @@ struct Report {
 }
 
 impl Report {
-    fn new(tableau: Tableau, source: String) -> Self {
+    fn new(tableau: Tableau, source: String, checks: verify::Report) -> Self {
         let s = tableau.stages();
         let row_sum_residual = tableau
             .c()
@@ -37,6 +44,7 @@ impl Report {
         Report {
             tableau,
             source,
+            checks,
             row_sum_residual,
             limit,
             achieved,
@@ -118,6 +126,7 @@ impl Report {
         if let (Some((q, limit)), Some(declared)) = (self.achieved_embedded, t.embedded_order()) {
             let _ = writeln!(out, "achieved embedded order {}", Report::verdict(q, declared, limit));
         }
+        out += &verify_checks::text(&self.checks, t.order(), f.symmetric);
         out.lines().map(|l| l.trim_end().to_string() + "\n").collect()
     }
 
@@ -134,7 +143,7 @@ impl Report {
             stages: t.stages(),
             explicit: f.explicit,
             fsal: f.fsal,
-            symplectic: f.symplectic,
+            symplectic: self.checks.symplectic.holds,
             symmetric: f.symmetric,
             row_sum_residual: self.row_sum_residual,
             conditions: t
@@ -153,6 +162,9 @@ impl Report {
             achieved_order: self.achieved,
             achieved_order_checked_up_to: self.limit,
             achieved_embedded_order: self.achieved_embedded.map(|(q, _)| q),
+            symplectic_condition: f.symplectic,
+            symplectic_condition_residual: self.checks.symplectic_condition_residual,
+            checks: JsonChecks::new(&self.checks),
         }
     }
 }
@@ -169,6 +181,8 @@ struct JsonReport<'a> {
     stages: usize,
     explicit: bool,
     fsal: bool,
+    /// The numerical verdict (`symplectic_defect` within its bound in every case); the
+    /// algebraic one is `symplectic_condition`.
     symplectic: bool,
     symmetric: bool,
     row_sum_residual: f64,
@@ -176,6 +190,11 @@ struct JsonReport<'a> {
     achieved_order: usize,
     achieved_order_checked_up_to: usize,
     achieved_embedded_order: Option<usize>,
+    /// `b_i a_ij + b_j a_ji = b_i b_j` holds (the derived flag).
+    symplectic_condition: bool,
+    symplectic_condition_residual: Option<f64>,
+    #[serde(flatten)]
+    checks: JsonChecks,
 }
 
 /// One order condition in `verify --format json`.
@@ -190,18 +209,72 @@ struct JsonCondition<'a> {
     ok: bool,
 }
 
+/// A method file holding a splitting or composition: its family says so, or it has
+/// `drift`/`kick`/`gamma` keys (a file that does not parse is left to the tableau reader,
+/// which reports the TOML error).
+fn is_splitting_file(path: &Path) -> bool {
+    let Ok(text) = std::fs::read_to_string(path) else {
+        return false;
+    };
+    let Ok(table) = text.parse::<toml::Table>() else {
+        return false;
+    };
+    let entry = match table.get("method") {
+        Some(toml::Value::Array(list)) => list.first().and_then(|m| m.as_table()).cloned(),
+        _ => Some(table),
+    };
+    entry.is_some_and(|m| match m.get("family").and_then(|f| f.as_str()) {
+        Some(family) => family == "splitting" || family == "composition",
+        None => ["drift", "kick", "gamma"].iter().any(|k| m.contains_key(*k)),
+    })
+}
+
 /// Verifies a catalog method or a method file and prints the report.
 pub fn run(method: &str, format: TextFormat) -> anyhow::Result<()> {
-    let choice = MethodChoice::resolve(method, None)?;
-    let source = match &choice {
-        MethodChoice::File { path, .. } => path.display().to_string(),
-        MethodChoice::Theta(_) => "the theta method (alpha = 1/2)".to_string(),
-        MethodChoice::Catalog(_) => "catalog".to_string(),
+    let theta = normalize(method) == "theta";
+    // a splitting or composition: the method, its source, and how to run it
+    let splitting = if !theta && looks_like_path(method) {
+        let path = Path::new(method);
+        match is_splitting_file(path) {
+            true => {
+                let s = Splitting::from_file(path)?;
+                Some((s.clone(), path.display().to_string(), Scheme::from(s)))
+            }
+            false => None,
+        }
+    } else if !theta {
+        match registry::lookup(method)? {
+            found @ MethodRef::Splitting(d) => Some((Splitting::from_data(d)?, "catalog".into(), Scheme::from(found))),
+            MethodRef::Butcher(_) => None,
+        }
+    } else {
+        None
     };
-    let report = Report::new(choice.tableau()?, source);
-    let text = match format {
-        TextFormat::Text => report.text(),
-        TextFormat::Json => serde_json::to_string_pretty(&report.json())? + "\n",
+    let text = match splitting {
+        Some((method, source, scheme)) => {
+            let report = verify_splitting::Report {
+                checks: verify::report(&scheme)?,
+                method,
+                source,
+            };
+            match format {
+                TextFormat::Text => report.text(),
+                TextFormat::Json => serde_json::to_string_pretty(&report.json())? + "\n",
+            }
+        }
+        None => {
+            let choice = MethodChoice::resolve(method, None)?;
+            let (source, scheme) = match &choice {
+                MethodChoice::File { path, tableau } => (path.display().to_string(), Scheme::from(tableau.clone())),
+                MethodChoice::Theta(t) => ("the theta method (alpha = 1/2)".to_string(), Scheme::from(t.clone())),
+                MethodChoice::Catalog(d) => ("catalog".to_string(), Scheme::from(MethodRef::Butcher(d))),
+            };
+            let report = Report::new(choice.tableau()?, source, verify::report(&scheme)?);
+            match format {
+                TextFormat::Text => report.text(),
+                TextFormat::Json => serde_json::to_string_pretty(&report.json())? + "\n",
+            }
+        }
     };
     print(&text)?;
     Ok(())
