@@ -61,12 +61,13 @@ fn largest(name: &str, h: f64, steps: u64) -> f64 {
 
 #[test]
 fn known_limits() {
-    let find = |name: &str| catalog().into_iter().find(|(n, _)| *n == name).unwrap().1.value();
+    let computed = catalog();
+    let find = |name: &str| computed.iter().find(|(n, _)| *n == name).unwrap().1.value();
     assert!((find("stormer_verlet_dkd") - 2.0).abs() < 1e-9);
     assert!((find("velocity_verlet_kdk") - 2.0).abs() < 1e-9);
     assert!((find("rk4") - 8f64.sqrt()).abs() < 1e-9);
     assert!((find("kutta3") - 3f64.sqrt()).abs() < 1e-9);
-    let interval = |name: &str| catalog().into_iter().find(|(n, _)| *n == name).unwrap().1;
+    let interval = |name: &str| computed.iter().find(|(n, _)| *n == name).unwrap().1;
     assert_eq!(interval("euler"), Interval::Bounded(0.0));
     assert_eq!(interval("gauss_legendre4"), Interval::Unbounded);
 }
@@ -137,4 +138,28 @@ fn every_limit_is_confirmed_by_runs_on_both_sides() {
             h / limit
         );
     }
+}
+
+/// The table of docs/stability-and-limits.md is the computation's, to its 4 decimals.
+#[test]
+fn the_documented_table_is_the_computed_one() {
+    let doc = include_str!("../docs/stability-and-limits.md");
+    let computed = catalog();
+    let mut rows = 0;
+    for line in doc.lines().filter(|l| l.starts_with("| `")) {
+        let cells: Vec<&str> = line.split('|').map(str::trim).collect();
+        let name = cells[1].trim_matches('`');
+        let (_, interval) = computed
+            .iter()
+            .find(|(n, _)| *n == name)
+            .unwrap_or_else(|| panic!("{name}"));
+        let expected = match *interval {
+            Interval::Bounded(0.0) => "0 (grows at every step)".to_string(),
+            Interval::Bounded(x) => format!("{x:.4}"),
+            Interval::Unbounded => "unbounded".to_string(),
+        };
+        assert_eq!(cells[3], expected, "{name}");
+        rows += 1;
+    }
+    assert_eq!(rows, registry::BUTCHER.len() + registry::SPLITTING.len());
 }
