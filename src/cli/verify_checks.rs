@@ -150,7 +150,10 @@ fn order_line(
     };
     let how = match error {
         OrderError::CentredLocal => {
-            format!("slope of the centred local error on {problem}, h = {:.3} .. {:.3}", first.h, last.h)
+            format!(
+                "slope of the centred local error on {problem}, h = {:.3} .. {:.3}",
+                first.h, last.h
+            )
         }
         OrderError::Global => format!(
             "slope of the global error at t = 1 from t = -1 on {problem} (trees of orders 2 to {}), \
@@ -175,7 +178,7 @@ fn stability_line(interval: Interval, butcher: bool) -> String {
     };
     let oscillator = "on the harmonic oscillator q'' = -omega^2 q";
     match interval {
-        Interval::Bounded(x) if x == 0.0 => format!(
+        Interval::Bounded(x) if x <= 0.0 => format!(
             "  stability        0: a step grows {oscillator} at every h*omega > 0 (from the coefficients: {how} fails)\n"
         ),
         Interval::Bounded(x) => format!(

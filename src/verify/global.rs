@@ -224,7 +224,14 @@ fn check(o: &GlobalOrderOptions) -> Result<(), Error> {
 fn no_window(samples: &[Sample], why: &str) -> Error {
     let runs: Vec<String> = samples
         .iter()
-        .map(|s| format!("h {:.2e}: {:.1e} (rounding {:.1e})", s.h, s.error, s.rounding.unwrap_or(f64::NAN)))
+        .map(|s| {
+            format!(
+                "h {:.2e}: {:.1e} (rounding {:.1e})",
+                s.h,
+                s.error,
+                s.rounding.unwrap_or(f64::NAN)
+            )
+        })
         .collect();
     Error::invalid("measured order", format!("{why} ({})", runs.join(", ")))
 }

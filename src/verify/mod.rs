@@ -28,11 +28,11 @@ mod scheme;
 mod structure;
 
 pub use dual::{jacobian_dual, DualScalar};
+pub use global::{measure_global_order, GlobalOrderOptions, Precision};
 pub use jacobian::{increment, jacobian_fd};
 /// The dual-number types of `num_dual` the Jacobians run on (re-exported, so a user needs
 /// no dependency of their own).
 pub use num_dual::{Dual32, Dual64};
-pub use global::{measure_global_order, GlobalOrderOptions, Precision};
 pub use order::{measure_order, reference_flow, OrderMeasurement, OrderOptions, Sample};
 pub use report::{report, Case, Check, OrderError, Report, REVERSIBLE_FACTOR, SYMPLECTIC_FACTOR};
 pub use reversibility::reversibility_defect;

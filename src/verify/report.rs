@@ -7,9 +7,9 @@ use super::{
     symplectic_defect, Canonical, GlobalOrderOptions, OrderMeasurement, OrderOptions, Precision, Scheme,
 };
 use crate::flows::Splittable;
-use stormer_order::stability::Interval;
 use crate::{lit, Error, MethodInfo, Real, Stepper};
 use num_dual::Dual64;
+use stormer_order::stability::Interval;
 
 /// A step is symplectic to round-off when `max |J^T S J - S| <= SYMPLECTIC_FACTOR eps
 /// max(1, |J|)^2` ([`defect_bound`]), `J` computed on dual numbers.

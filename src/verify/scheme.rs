@@ -3,8 +3,8 @@
 
 use crate::flows::{QuadraticKinetic, Splittable};
 use crate::registry::{self, MethodRef};
-use stormer_order::stability::{butcher_interval, splitting_interval, Interval};
 use crate::{Error, ImplicitOptions, MethodInfo, Problem, RuntimeSplitting, Splitting, Stepper, Tableau};
+use stormer_order::stability::{butcher_interval, splitting_interval, Interval};
 
 /// A method of any family, as the verification suite runs it.
 ///
