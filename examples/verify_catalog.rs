@@ -31,6 +31,7 @@ fn main() -> Result<(), stormer::Error> {
             _ => String::new(),
         };
         let stability = match r.stability {
+            Interval::Bounded(x) if x <= 0.0 => "0".into(),
             Interval::Bounded(x) => format!("{x:.4}"),
             Interval::Unbounded => "unbounded".into(),
         };
