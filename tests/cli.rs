@@ -536,3 +536,78 @@ fn verify_reads_splitting_and_composition_files() {
     std::fs::write(dir.join("jump.toml"), bad).unwrap();
     assert_error(&stormer(&dir, &["verify", "jump.toml"]), "sum gamma_i^3 = 0 fails");
 }
+
+/// The linear stability interval of `verify`, from the coefficients: the largest `h omega`
+/// with no growth on the harmonic oscillator (docs/verification.md).
+#[test]
+fn verify_reports_the_stability_interval() {
+    let dir = workdir("verify-stability");
+    let json = |args: &[&str]| -> serde_json::Value {
+        let out = stormer(&dir, args);
+        assert_ok(&out);
+        serde_json::from_str(&stdout(&out)).unwrap()
+    };
+    let interval = |method: &str| json(&["verify", method, "--format", "json"])["stability_interval"].clone();
+    let close = |v: serde_json::Value, x: f64| {
+        let got = v.as_f64().unwrap_or_else(|| panic!("a number: {v}"));
+        assert!((got - x).abs() < 1e-9, "{got} vs {x}");
+    };
+    close(interval("velocity_verlet_kdk"), 2.0);
+    close(interval("rk4"), 8f64.sqrt());
+    close(interval("euler"), 0.0);
+    assert_eq!(interval("gauss_legendre4"), "unbounded");
+    // method files: a tableau (Heun grows at every step), a splitting, a composition
+    let heun = "name = \"my_heun\"\norder = 2\nc = [\"0\", \"1\"]\na = [[\"0\", \"0\"], [\"1\", \"0\"]]\nb = [\"1/2\", \"1/2\"]\n";
+    let leapfrog = "name = \"my_leapfrog\"\nfamily = \"splitting\"\norder = 2\ndrift = [\"1/2\", \"1/2\"]\nkick = [\"1\", \"0\"]\n";
+    let w = "\"1.351207191959657634047687808971460826922\"";
+    let jump =
+        format!("name = \"my_jump\"\norder = 4\ngamma = [{w}, \"-1.702414383919315268095375617942921653844\", {w}]\n");
+    for (file, text) in [
+        ("heun.toml", heun),
+        ("leapfrog.toml", leapfrog),
+        ("jump.toml", jump.as_str()),
+    ] {
+        std::fs::write(dir.join(file), text).unwrap();
+    }
+    close(interval("heun.toml"), 0.0);
+    close(interval("leapfrog.toml"), 2.0);
+    let catalog = interval("triple_jump4").as_f64().unwrap();
+    close(interval("jump.toml"), catalog);
+    assert!((1.5..1.6).contains(&catalog), "{catalog}");
+    // the text says what the number is
+    let text = stdout(&stormer(&dir, &["verify", "rk4"]));
+    assert!(
+        text.contains(
+            "  stability        h*omega <= 2.8284: the largest h*omega with no growth on the harmonic oscillator"
+        ),
+        "{text}"
+    );
+    let text = stdout(&stormer(&dir, &["verify", "gauss_legendre4"]));
+    assert!(text.contains("  stability        unbounded: no growth"), "{text}");
+    let text = stdout(&stormer(&dir, &["verify", "euler"]));
+    assert!(text.contains("  stability        0: a step grows"), "{text}");
+}
+
+/// The order of a Butcher tableau, main and embedded solution, is measured on the tree
+/// system: Verner's pairs, whose leading error terms are tiny on other problems, measure
+/// their declared orders.
+#[test]
+fn verify_measures_tableaus_on_the_tree_system() {
+    let dir = workdir("verify-tree");
+    for (method, p, q) in [("verner6", 6.0, 5.0), ("verner9", 9.0, 8.0)] {
+        let out = stormer(&dir, &["verify", method, "--format", "json"]);
+        assert_ok(&out);
+        let v: serde_json::Value = serde_json::from_str(&stdout(&out)).unwrap();
+        assert_eq!(v["measured_order_problem"], "tree_system", "{v}");
+        assert!((v["measured_order"].as_f64().unwrap() - p).abs() <= 0.2, "{v}");
+        assert!((v["measured_embedded_order"].as_f64().unwrap() - q).abs() <= 0.2, "{v}");
+        assert!(v["measured_embedded_order_error"].is_null(), "{v}");
+        let text = stdout(&stormer(&dir, &["verify", method]));
+        assert!(text.contains(&format!("(agrees with the declared {p})")), "{text}");
+        assert!(text.contains(&format!("(agrees with the declared {q})")), "{text}");
+        assert!(!text.contains("DIFFERS"), "{text}");
+    }
+    let out = stormer(&dir, &["verify", "rk4", "--format", "json"]);
+    let v: serde_json::Value = serde_json::from_str(&stdout(&out)).unwrap();
+    assert!(v["measured_embedded_order"].is_null(), "{v}");
+}

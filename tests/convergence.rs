@@ -2,14 +2,17 @@
 //! <= 4) f32, for the main and the embedded solution: the declared order must be met
 //! within +-0.2 ([`TOLERANCE`]).
 //!
+//! The problem and the measurement are the library's, the ones `stormer verify` reports
+//! (`stormer::verify::measure_global_order`, `docs/verification.md`):
+//!
 //! # The problem
 //!
-//! Butcher's tree system ([`TreeSystem`]): one component per rooted tree `τ` of order
-//! `2..=q`, `z_τ' = |τ| Π z_σ` over the subtrees `σ` of the root, a single vertex standing
-//! for the time `t`; exact solution `z_τ(t) = t^|τ|`. It is integrated over `[-1, 1]`, where
-//! every component stays within `[-1, 1]` and ends at 1. It is nonlinear, non-autonomous
-//! (the nodes `c_i` matter), and every elementary differential of order `<= q` appears in
-//! it, each in a component of its own.
+//! Butcher's tree system (`stormer::verify::problems::TreeSystem`): one component per
+//! rooted tree `τ` of order `2..=q`, `z_τ' = |τ| Π z_σ` over the subtrees `σ` of the root,
+//! a single vertex standing for the time `t`; exact solution `z_τ(t) = t^|τ|`. It is
+//! integrated over `[-1, 1]`, where every component stays within `[-1, 1]` and ends at 1.
+//! It is nonlinear, non-autonomous (the nodes `c_i` matter), and every elementary
+//! differential of order `<= q` appears in it, each in a component of its own.
 //!
 //! For a method of declared order `p` the system is taken with `q = max(p + 1, 5)`:
 //!
@@ -32,7 +35,7 @@
 //!
 //! # The measurement
 //!
-//! Step counts `n = round(2^(k/4))`, `k = 0, 1, ...` (duplicates removed) up to [`N_MAX`];
+//! Step counts `n = round(2^(k/4))`, `k = 0, 1, ...` (duplicates removed) up to 1024;
 //! the step is `2/n` rounded to a multiple of `2^-20`, so that it and every time `-1 + i h`
 //! are exact in f32 and f64 (the end time differs from 1 by less than `n 2^-21`, and the
 //! exact solution is taken there). The error of a run is the largest relative error of the
@@ -46,11 +49,10 @@
 //! f64 its coefficients satisfy `Σ b_i Σ_j a_ij = 1/2` only to 6.5e-12, a first-order term
 //! that floors its error near 1e-10 on this problem).
 //!
-//! A run counts while its error is at least [`FLOOR_FACTOR`] times its rounding error, so
-//! that rounding changes it by at most 1%; the refinement stops at the first run that does
-//! not. The order is the least-squares slope of `log(error)` against `log(h)` over the
-//! counted runs with steps at most [`WINDOW`] times the finest one (at least
-//! [`MIN_RUNS`] of them).
+//! A run counts while its error is at least 100 times its rounding error, so that rounding
+//! changes it by at most 1%; the refinement stops at the first run that does not. The
+//! order is the least-squares slope of `log(error)` against `log(h)` over the counted runs
+//! with steps at most twice the finest one (at least 3 of them).
 //!
 //! The measurement can fail both ways: a perturbed tableau measures a lower order, and a
 //! method of higher order than claimed measures its true order, or has no error above
@@ -59,200 +61,57 @@
 //! `STORMER_SHOW_ERRORS=1 cargo test --release --test convergence -- --nocapture
 //! --test-threads 1` prints every refinement.
 
-mod common;
-
-use common::{Generic, TreeSystem};
-use nalgebra::DVector;
-use stormer::{lit, registry, to_f64, Driver, ImplicitOptions, Real, Stepper, Tableau};
+use stormer::verify::problems::TreeSystem;
+use stormer::verify::{measure_global_order, GlobalOrderOptions, OrderMeasurement, Precision, Scheme};
+use stormer::{registry, Problem, Tableau};
 
 /// Largest allowed distance between the measured and the declared order.
 const TOLERANCE: f64 = 0.2;
-/// Finest step count tried.
-const N_MAX: usize = 1024;
-/// How far above the rounding estimate an error must be to count.
-const FLOOR_FACTOR: f64 = 100.0;
-/// The fit uses the runs whose step is at most this factor times the finest one...
-const WINDOW: f64 = 2.0;
-/// ... and there must be at least this many.
-const MIN_RUNS: usize = 3;
-/// The integration interval is `[T0, -T0]`.
-const T0: f64 = -1.0;
 
-type Tree<T> = Generic<TreeSystem, T>;
-
-/// The order of the tree system used for a method of declared order `p` (see the module
-/// documentation).
-fn tree_order(p: usize) -> usize {
-    (p + 1).max(5)
-}
-
-/// Step counts `round(2^(k/4))` up to `N_MAX`.
-fn step_counts() -> Vec<usize> {
-    let mut ns: Vec<usize> = (0..)
-        .map(|k| 2f64.powf(f64::from(k) / 4.0).round() as usize)
-        .take_while(|&n| n <= N_MAX)
-        .collect();
-    ns.dedup();
-    ns
-}
-
-/// `2/n` rounded to a multiple of `2^-20`: exact in f32, and so is every `T0 + i h`.
-fn dyadic_step(n: usize) -> f64 {
-    let unit = 2f64.powi(-20);
-    (-2.0 * T0 / (n as f64 * unit)).round() * unit
-}
-
-/// Largest difference between two states, relative to the exact one.
-fn rel_distance(y: &DVector<f64>, z: &DVector<f64>, exact: &DVector<f64>) -> f64 {
-    (0..y.len()).fold(0.0f64, |m, i| m.max((y[i] - z[i]).abs() / exact[i].abs()))
-}
-
-/// One run of the refinement: step, error, and rounding error.
-#[derive(Debug, Clone, Copy)]
-struct Run {
-    n: usize,
-    h: f64,
-    error: f64,
-    rounding: f64,
-}
-
-/// The measured order from the runs `run(n)`: see the module documentation.
-fn measured_order(mut run: impl FnMut(usize) -> Result<Run, String>) -> Result<f64, String> {
-    let mut history: Vec<Run> = Vec::new();
-    let mut counted = 0;
-    for n in step_counts() {
-        let r = run(n)?;
-        history.push(r);
-        // (false for a NaN error or rounding)
-        let above_rounding = r.error >= FLOOR_FACTOR * r.rounding;
-        if !above_rounding {
-            break;
-        }
-        counted = history.len();
-    }
-    if std::env::var_os("STORMER_SHOW_ERRORS").is_some() {
-        for r in &history {
-            eprintln!(
-                "  n {:5}  h {:.6}  error {:.3e}  rounding {:.1e}",
-                r.n, r.h, r.error, r.rounding
-            );
-        }
-    }
-    let good = &history[..counted];
-    let Some(finest) = good.last() else {
-        return Err(format!("no error above the rounding floor: {history:?}"));
-    };
-    let fitted: Vec<&Run> = good
-        .iter()
-        .filter(|r| r.h <= WINDOW * finest.h * (1.0 + 1e-9))
-        .collect();
-    let window: Vec<(f64, f64)> = fitted.iter().map(|r| (r.h.ln(), r.error.ln())).collect();
-    if window.len() < MIN_RUNS {
-        return Err(format!(
-            "only {} errors above the rounding floor in the finest factor {WINDOW}: {history:?}",
-            window.len()
-        ));
-    }
-    let k = window.len() as f64;
-    let (mx, my) = window.iter().fold((0.0, 0.0), |(a, b), &(x, y)| (a + x / k, b + y / k));
-    let (sxy, sxx) = window.iter().fold((0.0, 0.0), |(a, b), &(x, y)| {
-        (a + (x - mx) * (y - my), b + (x - mx) * (x - mx))
-    });
-    let slope = sxy / sxx;
-    if std::env::var_os("STORMER_SHOW_ERRORS").is_some() {
-        eprintln!(
-            "  slope {slope:.3} over n = {}..{} ({} runs)",
-            fitted[0].n,
-            finest.n,
-            fitted.len()
-        );
-    }
-    Ok(slope)
-}
-
-/// The method under test.
-#[derive(Clone, Copy)]
-enum Method<'a> {
-    /// A catalog method's compiled (generated, unrolled) stepper.
-    Compiled(&'static str),
-    /// A tableau run by the run-time steppers (embedded solutions, perturbed tableaus).
-    Runtime(&'a Tableau),
-}
-
-impl Method<'_> {
-    fn stepper<T: Real>(self, y0: &DVector<T>) -> Box<dyn Stepper<Tree<T>>> {
-        // Fixed-point iteration to round-off (the crate's default): on the tree system the
-        // stage equations are triangular, so it is exact after at most `q` sweeps, at any h.
-        let opts = ImplicitOptions::fixed_point();
-        match self {
-            Method::Compiled(name) => registry::stepper(name, y0, &opts).unwrap(),
-            Method::Runtime(tableau) => registry::tableau_stepper(tableau, y0, &opts).unwrap(),
-        }
-    }
-
-    /// The final state of `n` steps in precision `T`, in f64, and the step.
-    fn run<T: Real>(self, system: &TreeSystem, n: usize) -> Result<(f64, DVector<f64>), String> {
-        let problem = Generic::<TreeSystem, T>(system.clone(), core::marker::PhantomData);
-        let h = dyadic_step(n);
-        let t_end = T0 + n as f64 * h;
-        let y0 = system.exact(lit::<T>(T0));
-        let mut stepper = self.stepper(&y0);
-        let sol = Driver::fixed(lit::<T>(h))
-            .every(n as u64)
-            .run(&problem, &mut *stepper, lit(T0), &y0, lit(t_end))
-            .map_err(|e| format!("{} failed with n = {n}: {}", stepper.info().name, e.error))?;
-        assert_eq!(
-            sol.stats.steps, n as u64,
-            "the dyadic steps divide the interval exactly"
-        );
-        Ok((h, sol.y.last().unwrap().map(to_f64)))
-    }
-}
-
-/// The precisions.
-#[derive(Clone, Copy, Debug, PartialEq)]
-enum Precision {
-    F32,
-    F64,
-}
-
-/// The measured order of `method` in `precision` on the tree system for a method declared
+/// The measured order of `scheme` in `precision` on the tree system for a method declared
 /// of order `declared`.
-fn measure(method: Method, declared: usize, precision: Precision) -> Result<f64, String> {
-    let system = TreeSystem::up_to(tree_order(declared));
-    let ratio = f64::EPSILON / f64::from(f32::EPSILON);
-    measured_order(|n| {
-        let (h, y64) = method.run::<f64>(&system, n)?;
-        let (_, y32) = method.run::<f32>(&system, n)?;
-        let exact = system.exact(T0 + n as f64 * h);
-        let rounding32 = rel_distance(&y32, &y64, &exact);
-        Ok(match precision {
-            Precision::F32 => Run {
-                n,
-                h,
-                error: rel_distance(&y32, &exact, &exact),
-                rounding: rounding32,
-            },
-            Precision::F64 => Run {
-                n,
-                h,
-                error: rel_distance(&y64, &exact, &exact),
-                rounding: rounding32 * ratio,
-            },
-        })
-    })
+fn measure(scheme: &Scheme, declared: usize, precision: Precision) -> Result<f64, String> {
+    let m = measure_global_order(scheme, declared, precision, &GlobalOrderOptions::default());
+    if std::env::var_os("STORMER_SHOW_ERRORS").is_some() {
+        show(m.as_ref().ok());
+    }
+    m.map(|m| m.order).map_err(|e| e.to_string())
+}
+
+/// Prints every run of a refinement and the fit.
+fn show(m: Option<&OrderMeasurement>) {
+    let Some(m) = m else { return };
+    for s in &m.samples {
+        eprintln!(
+            "  n {:5}  h {:.6}  error {:.3e}  rounding {:.1e}",
+            (2.0 / s.h).round(),
+            s.h,
+            s.error,
+            s.rounding.unwrap_or(f64::NAN)
+        );
+    }
+    eprintln!(
+        "  slope {:.3} over n = {}..{} ({} runs)",
+        m.order,
+        (2.0 / m.samples[m.fitted.start].h).round(),
+        (2.0 / m.samples[m.fitted.end - 1].h).round(),
+        m.fitted.len()
+    );
 }
 
 fn check(name: &'static str, embedded: bool, precision: Precision) {
     let data = registry::find(name).unwrap();
-    let main = Tableau::from_data(data).unwrap();
-    let embedded_tableau = embedded.then(|| main.embedded_as_main().expect("has b_hat").unwrap());
-    let (method, declared) = match &embedded_tableau {
-        Some(tableau) => (Method::Runtime(tableau), data.embedded_order.unwrap()),
-        None => (Method::Compiled(name), data.order),
+    let (scheme, declared) = if embedded {
+        let main = Tableau::from_data(data).unwrap();
+        let tableau = main.embedded_as_main().expect("has b_hat").unwrap();
+        // the run-time stepper, propagating b_hat
+        (Scheme::from(tableau), data.embedded_order.unwrap())
+    } else {
+        // the compiled (generated, unrolled) stepper
+        (Scheme::named(name).unwrap(), data.order)
     };
     let what = if embedded { " (embedded)" } else { "" };
-    let order = measure(method, declared, precision).unwrap_or_else(|e| panic!("{name}{what}: {e}"));
+    let order = measure(&scheme, declared, precision).unwrap_or_else(|e| panic!("{name}{what}: {e}"));
     if std::env::var_os("STORMER_SHOW_ERRORS").is_some() {
         eprintln!("{name}{what} {precision:?}: measured {order:.3}, declared {declared}");
     }
@@ -352,15 +211,14 @@ convergence! {
 /// trees of orders 2 to 10 (OEIS A000081), and its exact solution solves it.
 #[test]
 fn tree_system_is_complete_and_exact() {
-    let system = TreeSystem::up_to(10);
+    let system = TreeSystem::<f64>::new(10);
     let counts: Vec<usize> = (2..=10).map(|n| system.count_of_order(n)).collect();
     assert_eq!(counts, [1, 2, 4, 9, 20, 48, 115, 286, 719]);
-    let p = Generic::<TreeSystem, f64>(system, core::marker::PhantomData);
     let t = 1.3;
-    let mut dy = p.0.exact(t);
-    stormer::Problem::rhs(&p, t, &p.0.exact(t), &mut dy);
+    let mut dy = system.exact(t);
+    system.rhs(t, &system.exact(t), &mut dy);
     let delta = 1e-6;
-    let slope = (p.0.exact(t + delta) - p.0.exact(t - delta)) / (2.0 * delta);
+    let slope = (system.exact(t + delta) - system.exact(t - delta)) / (2.0 * delta);
     for (a, b) in dy.iter().zip(slope.iter()) {
         assert!((a - b).abs() <= 1e-7 * b.abs(), "{a} vs {b}");
     }
@@ -388,7 +246,7 @@ fn with_weights(name: &str, b: Vec<f64>, order: usize, tolerance: Option<f64>) -
 
 /// The measured order of `tableau` run as if it were declared of order `claimed`.
 fn measure_claimed(tableau: &Tableau, claimed: usize) -> Result<f64, String> {
-    measure(Method::Runtime(tableau), claimed, Precision::F64)
+    measure(&Scheme::from(tableau.clone()), claimed, Precision::F64)
 }
 
 /// Heun's method with an O(1e-2) error in its second-order condition is not taken for a

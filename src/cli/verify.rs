@@ -162,6 +162,18 @@ impl Report {
             achieved_order: self.achieved,
             achieved_order_checked_up_to: self.limit,
             achieved_embedded_order: self.achieved_embedded.map(|(q, _)| q),
+            measured_embedded_order: self
+                .checks
+                .embedded_order
+                .as_ref()
+                .and_then(|m| m.as_ref().ok())
+                .map(|m| m.order),
+            measured_embedded_order_error: self
+                .checks
+                .embedded_order
+                .as_ref()
+                .and_then(|m| m.as_ref().err())
+                .map(|e| e.to_string()),
             symplectic_condition: f.symplectic,
             symplectic_condition_residual: self.checks.symplectic_condition_residual,
             checks: JsonChecks::new(&self.checks),
@@ -190,6 +202,10 @@ struct JsonReport<'a> {
     achieved_order: usize,
     achieved_order_checked_up_to: usize,
     achieved_embedded_order: Option<usize>,
+    /// The embedded solution's order measured like `measured_order` (`null` without one).
+    measured_embedded_order: Option<f64>,
+    /// Why the embedded order could not be measured.
+    measured_embedded_order_error: Option<String>,
     /// `b_i a_ij + b_j a_ji = b_i b_j` holds (the derived flag).
     symplectic_condition: bool,
     symplectic_condition_residual: Option<f64>,

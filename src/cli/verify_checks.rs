@@ -3,7 +3,10 @@
 
 use super::output::yes_no;
 use std::fmt::Write as _;
-use stormer::verify::{Check, Report, REVERSIBLE_FACTOR, SYMPLECTIC_FACTOR};
+use stormer::order::stability::{Interval, SCAN_LIMIT};
+use stormer::verify::problems::TreeSystem;
+use stormer::verify::{Check, OrderError, OrderMeasurement, Report, REVERSIBLE_FACTOR, SYMPLECTIC_FACTOR};
+use stormer::Error;
 
 /// The JSON keys the numerical checks add to `verify --format json` (flattened into the
 /// report, after its own keys). The verdict `symplectic` is not here: each report keeps
@@ -28,6 +31,21 @@ pub struct JsonChecks {
     pub reversibility_defect: f64,
     /// That case's bound, `REVERSIBLE_FACTOR eps max(1, |y|)`.
     pub reversibility_defect_bound: f64,
+    /// The largest `h omega` with no growth on the harmonic oscillator: a number, or
+    /// `"unbounded"`.
+    pub stability_interval: Stability,
+}
+
+/// The stability interval in JSON: its bound, or the string `"unbounded"`.
+pub struct Stability(pub Interval);
+
+impl serde::Serialize for Stability {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        match self.0 {
+            Interval::Bounded(x) => s.serialize_f64(x),
+            Interval::Unbounded => s.serialize_str("unbounded"),
+        }
+    }
 }
 
 impl JsonChecks {
@@ -42,6 +60,7 @@ impl JsonChecks {
             reversible: r.reversible.holds,
             reversibility_defect: r.reversible.defect,
             reversibility_defect_bound: r.reversible.bound,
+            stability_interval: Stability(r.stability),
         }
     }
 }
@@ -64,29 +83,9 @@ fn verdict(c: &Check) -> &'static str {
 pub fn text(r: &Report, declared: usize, symmetric: bool) -> String {
     let mut out = String::new();
     let _ = writeln!(out, "numerical checks (docs/verification.md):");
-    match &r.order {
-        Ok(m) => {
-            let fitted = &m.samples[m.fitted.clone()];
-            let agrees = if (m.order - declared as f64).abs() <= 0.2 {
-                "agrees with"
-            } else {
-                "DIFFERS from"
-            };
-            let _ = writeln!(
-                out,
-                "  measured order   {:.2} ({agrees} the declared {declared}): slope of the centred local error on {}, \
-                 h = {:.3} .. {:.3}, errors {:.1e} .. {:.1e}",
-                m.order,
-                r.order_problem,
-                fitted[0].h,
-                fitted[fitted.len() - 1].h,
-                fitted[0].error,
-                fitted[fitted.len() - 1].error,
-            );
-        }
-        Err(e) => {
-            let _ = writeln!(out, "  measured order   not measured on {}: {e}", r.order_problem);
-        }
+    out += &order_line("measured order  ", &r.order, r.order_error, r.order_problem, declared);
+    if let (Some(m), Some(q)) = (&r.embedded_order, r.info.embedded_order) {
+        out += &order_line("  embedded      ", m, OrderError::Global, r.order_problem, q);
     }
     let s = &r.symplectic;
     let _ = writeln!(
@@ -126,5 +125,69 @@ pub fn text(r: &Report, declared: usize, symmetric: bool) -> String {
             " (DIFFERS from the symmetric flag)"
         }
     );
+    out += &stability_line(r.stability, r.info.family == "butcher");
     out
+}
+
+/// The line of a measured order (`label` 16 characters wide).
+fn order_line(
+    label: &str,
+    order: &Result<OrderMeasurement, Error>,
+    error: OrderError,
+    problem: &str,
+    declared: usize,
+) -> String {
+    let m = match order {
+        Ok(m) => m,
+        Err(e) => return format!("  {label} not measured on {problem}: {e}\n"),
+    };
+    let fitted = &m.samples[m.fitted.clone()];
+    let (first, last) = (fitted[0], fitted[fitted.len() - 1]);
+    let agrees = if (m.order - declared as f64).abs() <= 0.2 {
+        "agrees with"
+    } else {
+        "DIFFERS from"
+    };
+    let how = match error {
+        OrderError::CentredLocal => {
+            format!(
+                "slope of the centred local error on {problem}, h = {:.3} .. {:.3}",
+                first.h, last.h
+            )
+        }
+        OrderError::Global => format!(
+            "slope of the global error at t = 1 from t = -1 on {problem} (trees of orders 2 to {}), \
+             {} .. {} steps",
+            TreeSystem::<f64>::max_order_for(declared),
+            (2.0 / first.h).round(),
+            (2.0 / last.h).round(),
+        ),
+    };
+    format!(
+        "  {label} {:.2} ({agrees} the declared {declared}): {how}, errors {:.1e} .. {:.1e}\n",
+        m.order, first.error, last.error
+    )
+}
+
+/// The stability interval and what it means.
+fn stability_line(interval: Interval, butcher: bool) -> String {
+    let how = if butcher {
+        "|R(i h omega)| <= 1"
+    } else {
+        "|trace| <= 2 of the transfer matrix"
+    };
+    let oscillator = "on the harmonic oscillator q'' = -omega^2 q";
+    match interval {
+        Interval::Bounded(x) if x <= 0.0 => format!(
+            "  stability        0: a step grows {oscillator} at every h*omega > 0 (from the coefficients: {how} fails)\n"
+        ),
+        Interval::Bounded(x) => format!(
+            "  stability        h*omega <= {x:.4}: the largest h*omega with no growth {oscillator} \
+             (from the coefficients: {how})\n"
+        ),
+        Interval::Unbounded => format!(
+            "  stability        unbounded: no growth {oscillator} at any h*omega (up to {SCAN_LIMIT}; \
+             from the coefficients: {how})\n"
+        ),
+    }
 }

@@ -9,6 +9,8 @@
 //!   problem supplies, with [`defect_bound`] separating round-off from a real defect;
 //! - [`reversibility_defect`]: a step of `h` then `-h`;
 //! - [`measure_order`]: the slope of the (centred) local error against the step size;
+//! - [`measure_global_order`]: for a Butcher tableau, the slope of the global error on
+//!   Butcher's tree system ([`problems::TreeSystem`]), above its estimated rounding error;
 //!
 //! [`report`] runs all of them on a [`Scheme`] (a method of any family, catalog or
 //! user-made) over the nonlinear test problems of [`problems`]; it is what
@@ -16,6 +18,7 @@
 //! the measurements behind them.
 
 mod dual;
+mod global;
 mod jacobian;
 mod order;
 pub mod problems;
@@ -25,12 +28,13 @@ mod scheme;
 mod structure;
 
 pub use dual::{jacobian_dual, DualScalar};
+pub use global::{measure_global_order, GlobalOrderOptions, Precision};
 pub use jacobian::{increment, jacobian_fd};
 /// The dual-number types of `num_dual` the Jacobians run on (re-exported, so a user needs
 /// no dependency of their own).
 pub use num_dual::{Dual32, Dual64};
 pub use order::{measure_order, reference_flow, OrderMeasurement, OrderOptions, Sample};
-pub use report::{report, Case, Check, Report, REVERSIBLE_FACTOR, SYMPLECTIC_FACTOR};
+pub use report::{report, Case, Check, OrderError, Report, REVERSIBLE_FACTOR, SYMPLECTIC_FACTOR};
 pub use reversibility::reversibility_defect;
 pub use scheme::Scheme;
 pub use structure::{defect_bound, symplectic_defect, Canonical, Structure};

@@ -48,19 +48,25 @@ impl Default for OrderOptions {
     }
 }
 
-/// One sample: a step size and its local error.
+/// One sample: a step size and its error.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Sample {
     /// Step size.
     pub h: f64,
-    /// The centred local error (the largest over the states), max norm.
+    /// The error: for [`measure_order`] the centred local error (the largest over the
+    /// states, max norm), for [`measure_global_order`](super::measure_global_order) the
+    /// largest relative error at the end of the run.
     pub error: f64,
+    /// The estimated rounding error of the run ([`measure_global_order`](super::measure_global_order)
+    /// only; [`measure_order`] has one floor for all samples).
+    pub rounding: Option<f64>,
 }
 
-/// The outcome of [`measure_order`].
+/// The outcome of [`measure_order`] and [`measure_global_order`](super::measure_global_order).
 #[derive(Debug, Clone, PartialEq)]
 pub struct OrderMeasurement {
-    /// The measured order: the fitted slope of the local error, minus one.
+    /// The measured order: the fitted slope of the local error minus one, or the fitted
+    /// slope of the global error.
     pub order: f64,
     /// Every sample taken, largest step first (step sizes at which the method failed or
     /// left the finite numbers are left out).
@@ -128,7 +134,11 @@ where
                 .map(|(a, b)| a.max(b));
         }
         if let Some(error) = worst {
-            samples.push(Sample { h, error });
+            samples.push(Sample {
+                h,
+                error,
+                rounding: None,
+            });
             if error < floor {
                 break;
             }
@@ -203,7 +213,7 @@ fn no_window(samples: &[Sample], floor: f64) -> Error {
 }
 
 /// The least-squares slope of `log error` against `log h`.
-fn slope(samples: &[Sample]) -> f64 {
+pub(crate) fn slope(samples: &[Sample]) -> f64 {
     let n = samples.len() as f64;
     let xs: Vec<f64> = samples.iter().map(|s| s.h.ln()).collect();
     let ys: Vec<f64> = samples.iter().map(|s| s.error.ln()).collect();

@@ -3,12 +3,13 @@
 
 use super::problems::{HenonHeiles, Pendulum, QuarticKinetic};
 use super::{
-    defect_bound, jacobian_dual, jacobian_fd, measure_order, reversibility_defect, step_once, symplectic_defect,
-    Canonical, OrderMeasurement, OrderOptions, Scheme,
+    defect_bound, jacobian_dual, jacobian_fd, measure_global_order, measure_order, reversibility_defect, step_once,
+    symplectic_defect, Canonical, GlobalOrderOptions, OrderMeasurement, OrderOptions, Precision, Scheme,
 };
 use crate::flows::Splittable;
 use crate::{lit, Error, MethodInfo, Real, Stepper};
 use num_dual::Dual64;
+use stormer_order::stability::Interval;
 
 /// A step is symplectic to round-off when `max |J^T S J - S| <= SYMPLECTIC_FACTOR eps
 /// max(1, |J|)^2` ([`defect_bound`]), `J` computed on dual numbers.
@@ -49,6 +50,16 @@ pub struct Check {
     pub case: Case,
 }
 
+/// Which error an order was measured from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum OrderError {
+    /// The centred local error of [`measure_order`] (splittings and compositions).
+    CentredLocal,
+    /// The global error at `t = 1` from `t = -1` of [`measure_global_order`] on the tree
+    /// system (Butcher tableaus).
+    Global,
+}
+
 /// What the verification suite measured on a method.
 #[derive(Debug, Clone)]
 pub struct Report {
@@ -56,9 +67,20 @@ pub struct Report {
     pub info: MethodInfo,
     /// The measured order, or why it could not be measured.
     pub order: Result<OrderMeasurement, Error>,
-    /// The problem the order was measured on: `"quartic_kinetic"` for general methods,
-    /// `"henon_heiles"` for those that need a quadratic kinetic energy.
+    /// The problem the order was measured on: `"tree_system"` for a Butcher tableau
+    /// ([`TreeSystem::for_order`](super::problems::TreeSystem::for_order) of the declared
+    /// order), `"quartic_kinetic"` for a general splitting or composition,
+    /// `"henon_heiles"` for one that needs a quadratic kinetic energy.
     pub order_problem: &'static str,
+    /// Which error [`Report::order`] was measured from.
+    pub order_error: OrderError,
+    /// For a tableau with an embedded solution, its order measured like the main one
+    /// (on the tree system of the embedded order).
+    pub embedded_order: Option<Result<OrderMeasurement, Error>>,
+    /// The linear stability interval on the imaginary axis, from the coefficients
+    /// ([`Scheme::stability_interval`]): the largest `h omega` at which a step does not
+    /// grow on the harmonic oscillator `q'' = -omega^2 q`.
+    pub stability: Interval,
     /// `max |J^T S J - S|` with the exact (dual-number) Jacobian.
     pub symplectic: Check,
     /// The largest `max |J^T S J - S|` with the central-difference Jacobian (accurate to
@@ -75,8 +97,11 @@ const STEPS: [f64; 2] = [0.1, 0.4];
 const PENDULUM_STATES: [[f64; 2]; 2] = [[1.0, 0.5], [-2.0, 0.8]];
 const PLANAR_STATES: [[f64; 4]; 2] = [[0.1, -0.2, 0.3, 0.2], [-0.2, 0.25, 0.1, -0.35]];
 
-/// Runs every check on `scheme`: the measured order (on [`QuarticKinetic`] for a general
-/// method, [`HenonHeiles`] for one that needs a quadratic kinetic energy), symplecticity
+/// Runs every check on `scheme`: the measured order (for a Butcher tableau, of the main
+/// and the embedded solution from the global error on the tree system,
+/// [`measure_global_order`]; for a splitting or composition, from the centred local error,
+/// [`measure_order`], on [`QuarticKinetic`] for a general method, [`HenonHeiles`] for one
+/// that needs a quadratic kinetic energy), the stability interval, symplecticity
 /// (exact and central-difference Jacobians) and reversibility on [`Pendulum`],
 /// [`HenonHeiles`] and (general methods) [`QuarticKinetic`], at two states each and
 /// `h = 0.1, 0.4`.
@@ -134,28 +159,41 @@ pub fn report(scheme: &Scheme) -> Result<Report, Error> {
     let symplectic = worst(|c| (c.symplectic, c.symplectic_bound));
     let reversible = worst(|c| (c.reversibility, c.reversibility_bound));
     let symplectic_defect_central = cases.iter().map(|c| c.central).fold(0.0, f64::max);
-    let (order, order_problem) = if general {
+    let tableau = scheme.tableau().transpose()?;
+    let global = |scheme: &Scheme, order: usize| {
+        measure_global_order(scheme, order, Precision::F64, &GlobalOrderOptions::default())
+    };
+    let (order, order_problem, order_error) = if tableau.is_some() {
+        (global(scheme, scheme.info().order), "tree_system", OrderError::Global)
+    } else if general {
         let y = QuarticKinetic::<f64>::initial();
         let mut stepper = scheme.stepper::<QuarticKinetic<f64>>(&y)?;
         let m = measure_order(&mut stepper, &QuarticKinetic::new(), 0.0, &y, &OrderOptions::default());
-        (m, "quartic_kinetic")
+        (m, "quartic_kinetic", OrderError::CentredLocal)
     } else {
         let y = HenonHeiles::<f64>::initial();
         let mut stepper = scheme.stepper_quadratic::<HenonHeiles<f64>>(&y)?;
         let m = measure_order(&mut stepper, &HenonHeiles::new(), 0.0, &y, &OrderOptions::default());
-        (m, "henon_heiles")
+        (m, "henon_heiles", OrderError::CentredLocal)
     };
-    let symplectic_condition_residual = match scheme.tableau() {
-        Some(t) => {
-            let t = t?;
-            Some(stormer_order::tableau::symplectic_residual(t.a(), t.b()))
+    let embedded_order = match tableau.as_ref().and_then(|t| t.embedded_as_main()) {
+        Some(embedded) => {
+            let embedded = embedded?;
+            let order = embedded.order();
+            Some(global(&Scheme::from(embedded), order))
         }
         None => None,
     };
+    let symplectic_condition_residual = tableau
+        .as_ref()
+        .map(|t| stormer_order::tableau::symplectic_residual(t.a(), t.b()));
     Ok(Report {
         info: scheme.info(),
         order,
         order_problem,
+        order_error,
+        embedded_order,
+        stability: scheme.stability_interval(),
         symplectic,
         symplectic_defect_central,
         reversible,

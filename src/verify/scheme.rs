@@ -3,7 +3,8 @@
 
 use crate::flows::{QuadraticKinetic, Splittable};
 use crate::registry::{self, MethodRef};
-use crate::{Error, ImplicitOptions, MethodInfo, RuntimeSplitting, Splitting, Stepper, Tableau};
+use crate::{Error, ImplicitOptions, MethodInfo, Problem, RuntimeSplitting, Splitting, Stepper, Tableau};
+use stormer_order::stability::{butcher_interval, splitting_interval, Interval};
 
 /// A method of any family, as the verification suite runs it.
 ///
@@ -73,6 +74,31 @@ impl Scheme {
         }
     }
 
+    /// The linear stability interval on the imaginary axis, from the coefficients: the
+    /// largest `h omega` such that a step of every `h` up to it does not grow on the
+    /// harmonic oscillator `q'' = -omega^2 q` (`|R(i h omega)| <= 1` for a tableau, the
+    /// transfer matrix's `|trace| <= 2` for a splitting or composition;
+    /// [`stormer_order::stability`]).
+    ///
+    /// ```
+    /// use stormer::order::stability::Interval;
+    /// use stormer::verify::Scheme;
+    /// let rk4 = Scheme::named("rk4").unwrap().stability_interval().value();
+    /// assert!((rk4 - 8f64.sqrt()).abs() < 1e-9);
+    /// let verlet = Scheme::named("velocity_verlet_kdk").unwrap().stability_interval().value();
+    /// assert!((verlet - 2.0).abs() < 1e-9);
+    /// assert_eq!(Scheme::named("euler").unwrap().stability_interval(), Interval::Bounded(0.0));
+    /// assert_eq!(Scheme::named("gauss_legendre4").unwrap().stability_interval(), Interval::Unbounded);
+    /// ```
+    pub fn stability_interval(&self) -> Interval {
+        match &self.kind {
+            Kind::Catalog(MethodRef::Butcher(d)) => butcher_interval(d.a, d.b),
+            Kind::Catalog(MethodRef::Splitting(d)) => splitting_interval(d.drift, d.kick),
+            Kind::Tableau(t) => butcher_interval(t.a(), t.b()),
+            Kind::Splitting(s) => splitting_interval(s.drift(), s.kick()),
+        }
+    }
+
     /// The method's stepper for a splittable problem; a method that needs a quadratic
     /// kinetic energy is refused (use [`Scheme::stepper_quadratic`]).
     pub fn stepper<P>(&self, y0: &P::State) -> Result<Box<dyn Stepper<P>>, Error>
@@ -84,6 +110,22 @@ impl Scheme {
             Kind::Catalog(MethodRef::Splitting(d)) => registry::splitting_stepper::<P>(d.name, y0),
             Kind::Tableau(t) => registry::tableau_stepper::<P>(t, y0, &self.implicit),
             Kind::Splitting(s) => registry::runtime_splitting_stepper::<P>(s, y0),
+        }
+    }
+
+    /// The stepper of a Butcher tableau for any problem (not only a splittable one); an
+    /// error for a splitting or composition, which needs the split.
+    pub fn stepper_any<P>(&self, y0: &P::State) -> Result<Box<dyn Stepper<P>>, Error>
+    where
+        P: Problem + 'static,
+    {
+        match &self.kind {
+            Kind::Catalog(MethodRef::Butcher(d)) => registry::stepper::<P>(d.name, y0, &self.implicit),
+            Kind::Tableau(t) => registry::tableau_stepper::<P>(t, y0, &self.implicit),
+            Kind::Catalog(MethodRef::Splitting(_)) | Kind::Splitting(_) => Err(Error::invalid(
+                self.info().name,
+                "a splitting or composition runs on a splittable problem only",
+            )),
         }
     }
 

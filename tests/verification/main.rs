@@ -11,6 +11,29 @@ mod order;
 mod structure;
 mod symplectic;
 
+use std::sync::OnceLock;
+use stormer::registry;
+use stormer::verify::{report, Report, Scheme};
+
+/// `stormer::verify::report` (what `stormer verify` prints) of every catalog method, in
+/// the order of `registry::names()`: computed once for the tests that read it.
+pub fn catalog_reports() -> &'static [Report] {
+    static REPORTS: OnceLock<Vec<Report>> = OnceLock::new();
+    REPORTS.get_or_init(|| {
+        registry::names()
+            .map(|name| report(&Scheme::named(name).unwrap()).unwrap())
+            .collect()
+    })
+}
+
+/// The report of one catalog method.
+pub fn catalog_report(name: &str) -> &'static Report {
+    catalog_reports()
+        .iter()
+        .find(|r| r.info.name == name)
+        .unwrap_or_else(|| panic!("{name} is not in the catalog"))
+}
+
 /// The catalog's splittings and compositions, by the class of problems they are valid
 /// for, invoked as `$callback! { general: [..], quadratic: [..] }`. Every entry of
 /// `registry::SPLITTING` must be here: `order::every_splitting_has_its_generated_tests`
