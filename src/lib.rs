@@ -9,6 +9,7 @@ pub mod driver;
 mod error;
 pub mod flows;
 pub mod hamiltonian;
+pub mod magnetic;
 pub mod method;
 mod problem;
 mod real;
@@ -16,6 +17,7 @@ pub mod registry;
 pub mod scenes;
 mod state;
 pub mod stepper;
+pub mod verify;
 
 pub use driver::{Driver, Interrupted, Solution, Stats, StepControl, StopEvent};
 pub use error::Error;
@@ -59,6 +61,10 @@ pub mod guide {
     pub mod declaring_a_method {}
     #[doc = include_str!("../docs/hamiltonian.md")]
     pub mod hamiltonian {}
+    #[doc = include_str!("../docs/verification.md")]
+    pub mod verification {}
+    #[doc = include_str!("../docs/charged-particles.md")]
+    pub mod charged_particles {}
 }
 
 /// The everyday items in one import.

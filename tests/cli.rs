@@ -474,6 +474,147 @@ fn a_failing_run_keeps_its_records() {
     assert_error(&out, "did not converge");
 }
 
+/// The numerical checks of `verify` (docs/verification.md): the acceptance of issue 3.
+#[test]
+fn verify_measures_order_symplecticity_and_reversibility() {
+    let dir = workdir("verify-checks");
+    let json = |args: &[&str]| -> serde_json::Value {
+        let out = stormer(&dir, args);
+        assert_ok(&out);
+        serde_json::from_str(&stdout(&out)).unwrap()
+    };
+    let f = |v: &serde_json::Value, key: &str| v[key].as_f64().unwrap_or_else(|| panic!("{key}: {v}"));
+    // a sixth-order composition: order 6 measured, defect at round-off, reversible
+    let v = json(&["verify", "kahan_li6", "--format", "json"]);
+    assert_eq!(v["family"], "composition");
+    assert!((f(&v, "measured_order") - 6.0).abs() <= 0.2, "{v}");
+    assert_eq!(v["measured_order_problem"], "quartic_kinetic");
+    assert_eq!(
+        (v["symplectic"].as_bool(), v["reversible"].as_bool()),
+        (Some(true), Some(true))
+    );
+    assert!(f(&v, "symplectic_defect") <= f(&v, "symplectic_defect_bound"));
+    assert!(f(&v, "symplectic_defect_bound") < 1e-13, "a round-off bound: {v}");
+    assert!(f(&v, "reversibility_defect") <= f(&v, "reversibility_defect_bound"));
+    // RK4: fourth order, neither symplectic nor reversible, by orders of magnitude
+    let v = json(&["verify", "rk4", "--format", "json"]);
+    assert!((f(&v, "measured_order") - 4.0).abs() <= 0.2, "{v}");
+    assert_eq!(
+        (v["symplectic"].as_bool(), v["reversible"].as_bool()),
+        (Some(false), Some(false))
+    );
+    assert!(f(&v, "symplectic_defect") > 1e6 * f(&v, "symplectic_defect_bound"));
+    assert_eq!(v["symplectic_condition"], false);
+    // a Runge-Kutta-Nystrom splitting is measured on a quadratic kinetic energy
+    let v = json(&["verify", "mclachlan-atela4", "--format", "json"]);
+    assert_eq!(v["measured_order_problem"], "henon_heiles");
+    assert!((f(&v, "measured_order") - 4.0).abs() <= 0.2, "{v}");
+    // the text form says it in words
+    let text = stdout(&stormer(&dir, &["verify", "kahan_li6"]));
+    assert!(text.contains("agrees with the declared 6"), "{text}");
+    assert!(text.contains("  symplectic       yes: max |J^T S J - S|"), "{text}");
+    let text = stdout(&stormer(&dir, &["verify", "rk4"]));
+    assert!(text.contains("  symplectic       no: max |J^T S J - S|"), "{text}");
+}
+
+#[test]
+fn verify_reads_splitting_and_composition_files() {
+    let dir = workdir("verify-splitting-files");
+    let leapfrog = "name = \"my_leapfrog\"\nfamily = \"splitting\"\norder = 2\ndrift = [\"1/2\", \"1/2\"]\nkick = [\"1\", \"0\"]\n";
+    std::fs::write(dir.join("leapfrog.toml"), leapfrog).unwrap();
+    let out = stormer(&dir, &["verify", "leapfrog.toml", "--format", "json"]);
+    assert_ok(&out);
+    let v: serde_json::Value = serde_json::from_str(&stdout(&out)).unwrap();
+    assert_eq!(
+        (v["name"].as_str(), v["family"].as_str()),
+        (Some("my_leapfrog"), Some("splitting"))
+    );
+    assert!((v["measured_order"].as_f64().unwrap() - 2.0).abs() <= 0.2, "{v}");
+    assert_eq!(
+        (v["symplectic"].as_bool(), v["reversible"].as_bool()),
+        (Some(true), Some(true))
+    );
+    // a composition with rounded weights is refused with the failing condition
+    let bad = "name = \"jump\"\norder = 4\ngamma = [\"1.35\", \"-1.7\", \"1.35\"]\n";
+    std::fs::write(dir.join("jump.toml"), bad).unwrap();
+    assert_error(&stormer(&dir, &["verify", "jump.toml"]), "sum gamma_i^3 = 0 fails");
+}
+
+/// The linear stability interval of `verify`, from the coefficients: the largest `h omega`
+/// with no growth on the harmonic oscillator (docs/verification.md).
+#[test]
+fn verify_reports_the_stability_interval() {
+    let dir = workdir("verify-stability");
+    let json = |args: &[&str]| -> serde_json::Value {
+        let out = stormer(&dir, args);
+        assert_ok(&out);
+        serde_json::from_str(&stdout(&out)).unwrap()
+    };
+    let interval = |method: &str| json(&["verify", method, "--format", "json"])["stability_interval"].clone();
+    let close = |v: serde_json::Value, x: f64| {
+        let got = v.as_f64().unwrap_or_else(|| panic!("a number: {v}"));
+        assert!((got - x).abs() < 1e-9, "{got} vs {x}");
+    };
+    close(interval("velocity_verlet_kdk"), 2.0);
+    close(interval("rk4"), 8f64.sqrt());
+    close(interval("euler"), 0.0);
+    assert_eq!(interval("gauss_legendre4"), "unbounded");
+    // method files: a tableau (Heun grows at every step), a splitting, a composition
+    let heun = "name = \"my_heun\"\norder = 2\nc = [\"0\", \"1\"]\na = [[\"0\", \"0\"], [\"1\", \"0\"]]\nb = [\"1/2\", \"1/2\"]\n";
+    let leapfrog = "name = \"my_leapfrog\"\nfamily = \"splitting\"\norder = 2\ndrift = [\"1/2\", \"1/2\"]\nkick = [\"1\", \"0\"]\n";
+    let w = "\"1.351207191959657634047687808971460826922\"";
+    let jump =
+        format!("name = \"my_jump\"\norder = 4\ngamma = [{w}, \"-1.702414383919315268095375617942921653844\", {w}]\n");
+    for (file, text) in [
+        ("heun.toml", heun),
+        ("leapfrog.toml", leapfrog),
+        ("jump.toml", jump.as_str()),
+    ] {
+        std::fs::write(dir.join(file), text).unwrap();
+    }
+    close(interval("heun.toml"), 0.0);
+    close(interval("leapfrog.toml"), 2.0);
+    let catalog = interval("triple_jump4").as_f64().unwrap();
+    close(interval("jump.toml"), catalog);
+    assert!((1.5..1.6).contains(&catalog), "{catalog}");
+    // the text says what the number is
+    let text = stdout(&stormer(&dir, &["verify", "rk4"]));
+    assert!(
+        text.contains(
+            "  stability        h*omega <= 2.8284: the largest h*omega with no growth on the harmonic oscillator"
+        ),
+        "{text}"
+    );
+    let text = stdout(&stormer(&dir, &["verify", "gauss_legendre4"]));
+    assert!(text.contains("  stability        unbounded: no growth"), "{text}");
+    let text = stdout(&stormer(&dir, &["verify", "euler"]));
+    assert!(text.contains("  stability        0: a step grows"), "{text}");
+}
+
+/// The order of a Butcher tableau, main and embedded solution, is measured on the tree
+/// system: Verner's pairs, whose leading error terms are tiny on other problems, measure
+/// their declared orders.
+#[test]
+fn verify_measures_tableaus_on_the_tree_system() {
+    let dir = workdir("verify-tree");
+    for (method, p, q) in [("verner6", 6.0, 5.0), ("verner9", 9.0, 8.0)] {
+        let out = stormer(&dir, &["verify", method, "--format", "json"]);
+        assert_ok(&out);
+        let v: serde_json::Value = serde_json::from_str(&stdout(&out)).unwrap();
+        assert_eq!(v["measured_order_problem"], "tree_system", "{v}");
+        assert!((v["measured_order"].as_f64().unwrap() - p).abs() <= 0.2, "{v}");
+        assert!((v["measured_embedded_order"].as_f64().unwrap() - q).abs() <= 0.2, "{v}");
+        assert!(v["measured_embedded_order_error"].is_null(), "{v}");
+        let text = stdout(&stormer(&dir, &["verify", method]));
+        assert!(text.contains(&format!("(agrees with the declared {p})")), "{text}");
+        assert!(text.contains(&format!("(agrees with the declared {q})")), "{text}");
+        assert!(!text.contains("DIFFERS"), "{text}");
+    }
+    let out = stormer(&dir, &["verify", "rk4", "--format", "json"]);
+    let v: serde_json::Value = serde_json::from_str(&stdout(&out)).unwrap();
+    assert!(v["measured_embedded_order"].is_null(), "{v}");
+}
+
 /// The summary's number after `label` (e.g. `max |dE/E0| 1.2e-5`).
 fn summary_number(summary: &str, label: &str) -> f64 {
     let rest = summary

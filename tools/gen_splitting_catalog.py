@@ -36,9 +36,14 @@ WIDTH = g.WIDTH
 CLASS_TEXT = {
     "general": "general splitting",
     "rkn": "built for quadratic kinetic energy (Runge-Kutta-Nystrom problems)",
-    "near_integrable": "near-integrable splitting (H = A + eps B)",
-    "near_integrable_rkn": "near-integrable splitting with [B,[B,[B,A]]] = 0",
+    "near_integrable": "near-integrable splitting (`H = A + eps B`)",
+    "near_integrable_rkn": "near-integrable splitting with `[B,[B,[B,A]]] = 0`",
 }
+
+def upper_first(text):
+    """The text with its first letter upper-cased (`str.capitalize` lower-cases the rest)."""
+    return text[:1].upper() + text[1:]
+
 
 TRANSCRIBED = """\
 //! Coefficients are transcribed from the project's `data/splitting.toml` by
@@ -67,7 +72,7 @@ def doc_comment(m):
         if m["order_general"] != m["order_rkn"]:
             orders += f" (measured {m['order_general']} for a general kinetic energy, {m['order_rkn']} for a quadratic one)"
         s = m["stages"]
-        summary = (f"{CLASS_TEXT[m['class']].capitalize()}, {orders}, {s} force evaluation{'s' * (s > 1)} per step"
+        summary = (f"{upper_first(CLASS_TEXT[m['class']])}, {orders}, {s} force evaluation{'s' * (s > 1)} per step"
                    f"{' (FSAL)' if m['fsal'] else ''}; {'symmetric' if m['symmetric'] else 'not symmetric'}.")
         if m["requires_quadratic_kinetic"]:
             summary += " Accepts only problems with a quadratic kinetic energy (`QuadraticKinetic`)."

@@ -16,6 +16,7 @@
 //! * [`conditions`]: order conditions `sum_i w_i Phi_i(t) = 1/gamma(t)` and their residuals;
 //! * [`tableau`]: a Butcher tableau as plain data, its validation and derived flags;
 //! * [`splitting`]: splitting sequences and composition weights, their checks and merged words;
+//! * [`stability`]: the linear stability interval on the imaginary axis;
 //! * [`number`]: how numbers are printed in messages.
 //!
 //! ```
@@ -47,6 +48,7 @@ pub mod expr;
 mod forest;
 pub mod number;
 pub mod splitting;
+pub mod stability;
 pub mod tableau;
 pub mod tree;
 

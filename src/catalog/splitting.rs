@@ -313,7 +313,7 @@ crate::splitting! {
     /// D(0.441583023616) K(0.334003603286) D(0.128846158365)
     /// ```
     ///
-    /// Built for quadratic kinetic energy (runge-kutta-nystrom problems), order 4 (measured 3 for a
+    /// Built for quadratic kinetic energy (Runge-Kutta-Nystrom problems), order 4 (measured 3 for a
     /// general kinetic energy, 4 for a quadratic one), 4 force evaluations per step; not symmetric.
     /// Accepts only problems with a quadratic kinetic energy (`QuadraticKinetic`).
     ///
@@ -355,7 +355,7 @@ crate::splitting! {
     /// K(-0.058979625498) D(0.44236379422)
     /// ```
     ///
-    /// Built for quadratic kinetic energy (runge-kutta-nystrom problems), order 5 (measured 3 for a
+    /// Built for quadratic kinetic energy (Runge-Kutta-Nystrom problems), order 5 (measured 3 for a
     /// general kinetic energy, 5 for a quadratic one), 6 force evaluations per step; not symmetric.
     /// Accepts only problems with a quadratic kinetic energy (`QuadraticKinetic`).
     ///
@@ -394,7 +394,7 @@ crate::splitting! {
     /// D(-0.120920876339) K(-0.140548014659) D(0.512721933192) K(0.125019822795)
     /// ```
     ///
-    /// Built for quadratic kinetic energy (runge-kutta-nystrom problems), order 4 (measured 3 for a
+    /// Built for quadratic kinetic energy (Runge-Kutta-Nystrom problems), order 4 (measured 3 for a
     /// general kinetic energy, 4 for a quadratic one), 4 force evaluations per step (FSAL); not
     /// symmetric. Accepts only problems with a quadratic kinetic energy (`QuadraticKinetic`).
     ///
@@ -505,7 +505,7 @@ crate::splitting! {
     /// D(-0.0215285511022) K(1) D(0.188195217769)
     /// ```
     ///
-    /// Built for quadratic kinetic energy (runge-kutta-nystrom problems), order 4, 4 force
+    /// Built for quadratic kinetic energy (Runge-Kutta-Nystrom problems), order 4, 4 force
     /// evaluations per step; symmetric.
     ///
     /// Coefficients from boostorg/odeint
@@ -544,7 +544,7 @@ crate::splitting! {
     /// D(0.405188618395)
     /// ```
     ///
-    /// Built for quadratic kinetic energy (runge-kutta-nystrom problems), order 4, 5 force
+    /// Built for quadratic kinetic energy (Runge-Kutta-Nystrom problems), order 4, 5 force
     /// evaluations per step; symmetric.
     ///
     /// Coefficients from boostorg/odeint
@@ -664,7 +664,7 @@ crate::splitting! {
     /// D(0.604872665711) K(0.396309801498) D(0.245298957184) K(0.0829844064174)
     /// ```
     ///
-    /// Built for quadratic kinetic energy (runge-kutta-nystrom problems), order 4, 6 force
+    /// Built for quadratic kinetic energy (Runge-Kutta-Nystrom problems), order 4, 6 force
     /// evaluations per step (FSAL); symmetric.
     ///
     /// Coefficients from mockingbirdnest/Principia `integrators/methods.hpp (BlanesMoan2002SRKN6B,
@@ -702,7 +702,7 @@ crate::splitting! {
     /// K(-0.0400061921042) D(0.2905537978) K(0.198128671918) D(0.123229775946) K(0.0414649985183)
     /// ```
     ///
-    /// Built for quadratic kinetic energy (runge-kutta-nystrom problems), order 6 (measured 4 for a
+    /// Built for quadratic kinetic energy (Runge-Kutta-Nystrom problems), order 6 (measured 4 for a
     /// general kinetic energy, 6 for a quadratic one), 11 force evaluations per step (FSAL);
     /// symmetric. Accepts only problems with a quadratic kinetic energy (`QuadraticKinetic`).
     ///
@@ -745,7 +745,7 @@ crate::splitting! {
     /// D(0.102635633102) K(0.0917191526245) D(0.0378593198406)
     /// ```
     ///
-    /// Built for quadratic kinetic energy (runge-kutta-nystrom problems), order 6 (measured 4 for a
+    /// Built for quadratic kinetic energy (Runge-Kutta-Nystrom problems), order 6 (measured 4 for a
     /// general kinetic energy, 6 for a quadratic one), 14 force evaluations per step; symmetric.
     /// Accepts only problems with a quadratic kinetic energy (`QuadraticKinetic`).
     ///
@@ -789,7 +789,7 @@ crate::splitting! {
     /// D(-0.0183358520965) K(-0.379624214264) D(1.18742957373) K(0.0001660069265) D(-1.01308797892)
     /// ```
     ///
-    /// Built for quadratic kinetic energy (runge-kutta-nystrom problems), order 6 (measured 4 for a
+    /// Built for quadratic kinetic energy (Runge-Kutta-Nystrom problems), order 6 (measured 4 for a
     /// general kinetic energy, 6 for a quadratic one), 7 force evaluations per step; symmetric.
     /// Accepts only problems with a quadratic kinetic energy (`QuadraticKinetic`).
     ///
@@ -824,8 +824,8 @@ crate::splitting! {
     /// D(1/2) K(1) D(1/2)
     /// ```
     ///
-    /// Near-integrable splitting (h = a + eps b), order 2, 1 force evaluation per step; symmetric.
-    /// Generalized order (2, 2) in (eps, eps^2, eps^3).
+    /// Near-integrable splitting (`H = A + eps B`), order 2, 1 force evaluation per step;
+    /// symmetric. Generalized order (2, 2) in (eps, eps^2, eps^3).
     ///
     /// Coefficients from hannorein/rebound `src/integrator_saba.c (reb_saba_c = drift
     /// half-sequence, reb_saba_d = kick half-sequence, expanded by reb_integrator_saba_step) (row
@@ -858,8 +858,8 @@ crate::splitting! {
     /// D(0.211324865405) K(1/2) D(0.57735026919) K(1/2) D(0.211324865405)
     /// ```
     ///
-    /// Near-integrable splitting (h = a + eps b), order 2, 2 force evaluations per step; symmetric.
-    /// Generalized order (4, 2) in (eps, eps^2, eps^3).
+    /// Near-integrable splitting (`H = A + eps B`), order 2, 2 force evaluations per step;
+    /// symmetric. Generalized order (4, 2) in (eps, eps^2, eps^3).
     ///
     /// Coefficients from hannorein/rebound `src/integrator_saba.c (reb_saba_c = drift
     /// half-sequence, reb_saba_d = kick half-sequence, expanded by reb_integrator_saba_step) (row
@@ -897,8 +897,8 @@ crate::splitting! {
     /// K(0.277777777778) D(0.112701665379)
     /// ```
     ///
-    /// Near-integrable splitting (h = a + eps b), order 2, 3 force evaluations per step; symmetric.
-    /// Generalized order (6, 2) in (eps, eps^2, eps^3).
+    /// Near-integrable splitting (`H = A + eps B`), order 2, 3 force evaluations per step;
+    /// symmetric. Generalized order (6, 2) in (eps, eps^2, eps^3).
     ///
     /// Coefficients from hannorein/rebound `src/integrator_saba.c (reb_saba_c = drift
     /// half-sequence, reb_saba_d = kick half-sequence, expanded by reb_integrator_saba_step) (row
@@ -939,8 +939,8 @@ crate::splitting! {
     /// K(0.326072577431) D(0.260577634005) K(0.173927422569) D(0.069431844203)
     /// ```
     ///
-    /// Near-integrable splitting (h = a + eps b), order 2, 4 force evaluations per step; symmetric.
-    /// Generalized order (8, 2) in (eps, eps^2, eps^3).
+    /// Near-integrable splitting (`H = A + eps B`), order 2, 4 force evaluations per step;
+    /// symmetric. Generalized order (8, 2) in (eps, eps^2, eps^3).
     ///
     /// Coefficients from hannorein/rebound `src/integrator_saba.c (reb_saba_c = drift
     /// half-sequence, reb_saba_d = kick half-sequence, expanded by reb_integrator_saba_step) (row
@@ -983,7 +983,7 @@ crate::splitting! {
     /// K(1/2) D(1) K(1/2)
     /// ```
     ///
-    /// Near-integrable splitting (h = a + eps b), order 2, 1 force evaluation per step (FSAL);
+    /// Near-integrable splitting (`H = A + eps B`), order 2, 1 force evaluation per step (FSAL);
     /// symmetric. Generalized order (2, 2) in (eps, eps^2, eps^3).
     ///
     /// Coefficients from closed form `not implemented in the fetched anchors (REBOUND implements
@@ -1016,7 +1016,7 @@ crate::splitting! {
     /// K(1/6) D(1/2) K(2/3) D(1/2) K(1/6)
     /// ```
     ///
-    /// Near-integrable splitting (h = a + eps b), order 2, 2 force evaluations per step (FSAL);
+    /// Near-integrable splitting (`H = A + eps B`), order 2, 2 force evaluations per step (FSAL);
     /// symmetric. Generalized order (4, 2) in (eps, eps^2, eps^3).
     ///
     /// Coefficients from closed form `not implemented in the fetched anchors (REBOUND implements
@@ -1049,7 +1049,7 @@ crate::splitting! {
     /// K(1/12) D(0.27639320225) K(5/12) D(0.4472135955) K(5/12) D(0.27639320225) K(1/12)
     /// ```
     ///
-    /// Near-integrable splitting (h = a + eps b), order 2, 3 force evaluations per step (FSAL);
+    /// Near-integrable splitting (`H = A + eps B`), order 2, 3 force evaluations per step (FSAL);
     /// symmetric. Generalized order (6, 2) in (eps, eps^2, eps^3).
     ///
     /// Coefficients from closed form `not implemented in the fetched anchors (REBOUND implements
@@ -1086,7 +1086,7 @@ crate::splitting! {
     /// D(0.172673164646) K(1/20)
     /// ```
     ///
-    /// Near-integrable splitting (h = a + eps b), order 2, 4 force evaluations per step (FSAL);
+    /// Near-integrable splitting (`H = A + eps B`), order 2, 4 force evaluations per step (FSAL);
     /// symmetric. Generalized order (8, 2) in (eps, eps^2, eps^3).
     ///
     /// Coefficients from closed form `not implemented in the fetched anchors (REBOUND implements
@@ -1127,8 +1127,8 @@ crate::splitting! {
     /// D(0.047067100646)
     /// ```
     ///
-    /// Near-integrable splitting (h = a + eps b), order 4, 7 force evaluations per step; symmetric.
-    /// Generalized order (10, 4) in (eps, eps^2, eps^3).
+    /// Near-integrable splitting (`H = A + eps B`), order 4, 7 force evaluations per step;
+    /// symmetric. Generalized order (10, 4) in (eps, eps^2, eps^3).
     ///
     /// Coefficients from hannorein/rebound `src/integrator_saba.c (reb_saba_c = drift
     /// half-sequence, reb_saba_d = kick half-sequence, expanded by reb_integrator_saba_step)
@@ -1170,8 +1170,8 @@ crate::splitting! {
     /// D(0.0711334264982)
     /// ```
     ///
-    /// Near-integrable splitting (h = a + eps b), order 4, 7 force evaluations per step; symmetric.
-    /// Generalized order (8, 6, 4) in (eps, eps^2, eps^3).
+    /// Near-integrable splitting (`H = A + eps B`), order 4, 7 force evaluations per step;
+    /// symmetric. Generalized order (8, 6, 4) in (eps, eps^2, eps^3).
     ///
     /// Coefficients from hannorein/rebound `src/integrator_saba.c (reb_saba_c = drift
     /// half-sequence, reb_saba_d = kick half-sequence, expanded by reb_integrator_saba_step)
@@ -1212,8 +1212,8 @@ crate::splitting! {
     /// D(0.145298716117) K(0.0958588808371) D(0.0380944974224)
     /// ```
     ///
-    /// Near-integrable splitting (h = a + eps b), order 4, 8 force evaluations per step; symmetric.
-    /// Generalized order (10, 6, 4) in (eps, eps^2, eps^3).
+    /// Near-integrable splitting (`H = A + eps B`), order 4, 8 force evaluations per step;
+    /// symmetric. Generalized order (10, 6, 4) in (eps, eps^2, eps^3).
     ///
     /// Coefficients from hannorein/rebound `src/integrator_saba.c (reb_saba_c = drift
     /// half-sequence, reb_saba_d = kick half-sequence, expanded by reb_integrator_saba_step)
@@ -1257,7 +1257,7 @@ crate::splitting! {
     /// D(-0.10756843844) K(0.640885795163) D(0.274140268943)
     /// ```
     ///
-    /// Near-integrable splitting with [b,[b,[b,a]]] = 0, order 4, 6 force evaluations per step;
+    /// Near-integrable splitting with `[B,[B,[B,A]]] = 0`, order 4, 6 force evaluations per step;
     /// symmetric. Generalized order (8, 4, 4) in (eps, eps^2, eps^3).
     ///
     /// Coefficients from hannorein/rebound `src/integrator_saba.c (reb_saba_c = drift
@@ -1300,7 +1300,7 @@ crate::splitting! {
     /// D(0.251136038722) K(0.168443259362) D(0.0681023565166)
     /// ```
     ///
-    /// Near-integrable splitting with [b,[b,[b,a]]] = 0, order 4, 8 force evaluations per step;
+    /// Near-integrable splitting with `[B,[B,[B,A]]] = 0`, order 4, 8 force evaluations per step;
     /// symmetric. Generalized order (8, 6, 4) in (eps, eps^2, eps^3).
     ///
     /// Coefficients from hannorein/rebound `src/integrator_saba.c (reb_saba_c = drift
@@ -1348,7 +1348,7 @@ crate::splitting! {
     /// K(0.119688462459) D(0.0473190869765)
     /// ```
     ///
-    /// Near-integrable splitting with [b,[b,[b,a]]] = 0, order 4, 9 force evaluations per step;
+    /// Near-integrable splitting with `[B,[B,[B,A]]] = 0`, order 4, 9 force evaluations per step;
     /// symmetric. Generalized order (10, 6, 4) in (eps, eps^2, eps^3).
     ///
     /// Coefficients from hannorein/rebound `src/integrator_saba.c (reb_saba_c = drift

@@ -30,19 +30,24 @@ pub enum MethodChoice {
     Theta(Tableau),
 }
 
-/// True when the method file at `path` describes a splitting or composition (it has
-/// `drift`, `kick` or `gamma`, or says so in `family`); it is read as a tableau otherwise,
-/// and that reading reports any problem with the file.
+/// A method file holding a splitting or composition: its family says so, or it has
+/// `drift`/`kick`/`gamma` keys (a file that does not parse is left to the tableau reader,
+/// which reports the TOML error).
 fn is_splitting_file(path: &Path) -> bool {
-    let Some(table) = std::fs::read_to_string(path)
-        .ok()
-        .and_then(|text| text.parse::<toml::Table>().ok())
-    else {
+    let Ok(text) = std::fs::read_to_string(path) else {
         return false;
     };
-    let family = table.get("family").and_then(|f| f.as_str());
-    ["drift", "kick", "gamma"].iter().any(|k| table.contains_key(*k))
-        || matches!(family, Some("splitting" | "composition"))
+    let Ok(table) = text.parse::<toml::Table>() else {
+        return false;
+    };
+    let entry = match table.get("method") {
+        Some(toml::Value::Array(list)) => list.first().and_then(|m| m.as_table()).cloned(),
+        _ => Some(table),
+    };
+    entry.is_some_and(|m| match m.get("family").and_then(|f| f.as_str()) {
+        Some(family) => family == "splitting" || family == "composition",
+        None => ["drift", "kick", "gamma"].iter().any(|k| m.contains_key(*k)),
+    })
 }
 
 /// True when `arg` is meant as a file: it ends in `.toml`, has a path separator, or names

@@ -3,9 +3,13 @@
 mod choice;
 mod methods;
 mod output;
+#[allow(dead_code)] // used by `run`, `compare` and `scan` as they land (issue 5)
+mod plot;
 mod run;
 mod scene;
 mod verify;
+mod verify_checks;
+mod verify_splitting;
 
 use clap::{Parser, Subcommand, ValueEnum};
 use std::io::Write;
@@ -27,8 +31,8 @@ enum Command {
         #[arg(long, value_enum, default_value_t = TableFormat::Table)]
         format: TableFormat,
     },
-    /// Check a method: flags, row sums, every order condition with its residual, and the
-    /// highest order its coefficients reach.
+    /// Check a method: flags, every order (or consistency) condition with its residual, and
+    /// the numerical checks: measured order, symplecticity (J^T S J = S) and reversibility.
     Verify {
         /// A catalog name (`-` and `_` both accepted) or a path to a TOML method file.
         method: String,

@@ -1,17 +1,23 @@
-//! `stormer verify METHOD|FILE`: flags, row sums, every order condition with its residual,
-//! and the highest order the coefficients reach.
+//! `stormer verify METHOD|FILE`: for a Butcher tableau, flags, row sums, every order
+//! condition with its residual and the highest order the coefficients reach; for a
+//! splitting or composition, its consistency conditions (`verify_splitting`); for both,
+//! the numerical checks of `stormer::verify` (`verify_checks`).
 
 use super::choice::MethodChoice;
 use super::output::{print, yes_no};
-use super::TextFormat;
+use super::verify_checks::{self, JsonChecks};
+use super::{verify_splitting, TextFormat};
 use std::fmt::Write as _;
 use stormer::order::{achieved_order, DEFAULT_TOLERANCE, MAX_ORDER};
-use stormer::Tableau;
+use stormer::registry::MethodRef;
+use stormer::verify::{self, Scheme};
+use stormer::{Splitting, Tableau};
 
 /// What `verify` reports about a tableau.
 struct Report {
     tableau: Tableau,
     source: String,
+    checks: verify::Report,
     row_sum_residual: f64,
     /// Orders checked for exactness: `min(order + 1, MAX_ORDER)`.
     limit: usize,
@@ -20,7 +26,7 @@ struct Report {
 }
 
 impl Report {
-    fn new(tableau: Tableau, source: String) -> Self {
+    fn new(tableau: Tableau, source: String, checks: verify::Report) -> Self {
         let s = tableau.stages();
         let row_sum_residual = tableau
             .c()
@@ -37,6 +43,7 @@ impl Report {
         Report {
             tableau,
             source,
+            checks,
             row_sum_residual,
             limit,
             achieved,
@@ -118,6 +125,7 @@ impl Report {
         if let (Some((q, limit)), Some(declared)) = (self.achieved_embedded, t.embedded_order()) {
             let _ = writeln!(out, "achieved embedded order {}", Report::verdict(q, declared, limit));
         }
+        out += &verify_checks::text(&self.checks, t.order(), f.symmetric);
         out.lines().map(|l| l.trim_end().to_string() + "\n").collect()
     }
 
@@ -134,7 +142,7 @@ impl Report {
             stages: t.stages(),
             explicit: f.explicit,
             fsal: f.fsal,
-            symplectic: f.symplectic,
+            symplectic: self.checks.symplectic.holds,
             symmetric: f.symmetric,
             row_sum_residual: self.row_sum_residual,
             conditions: t
@@ -153,6 +161,21 @@ impl Report {
             achieved_order: self.achieved,
             achieved_order_checked_up_to: self.limit,
             achieved_embedded_order: self.achieved_embedded.map(|(q, _)| q),
+            measured_embedded_order: self
+                .checks
+                .embedded_order
+                .as_ref()
+                .and_then(|m| m.as_ref().ok())
+                .map(|m| m.order),
+            measured_embedded_order_error: self
+                .checks
+                .embedded_order
+                .as_ref()
+                .and_then(|m| m.as_ref().err())
+                .map(|e| e.to_string()),
+            symplectic_condition: f.symplectic,
+            symplectic_condition_residual: self.checks.symplectic_condition_residual,
+            checks: JsonChecks::new(&self.checks),
         }
     }
 }
@@ -169,6 +192,8 @@ struct JsonReport<'a> {
     stages: usize,
     explicit: bool,
     fsal: bool,
+    /// The numerical verdict (`symplectic_defect` within its bound in every case); the
+    /// algebraic one is `symplectic_condition`.
     symplectic: bool,
     symmetric: bool,
     row_sum_residual: f64,
@@ -176,6 +201,15 @@ struct JsonReport<'a> {
     achieved_order: usize,
     achieved_order_checked_up_to: usize,
     achieved_embedded_order: Option<usize>,
+    /// The embedded solution's order measured like `measured_order` (`null` without one).
+    measured_embedded_order: Option<f64>,
+    /// Why the embedded order could not be measured.
+    measured_embedded_order_error: Option<String>,
+    /// `b_i a_ij + b_j a_ji = b_i b_j` holds (the derived flag).
+    symplectic_condition: bool,
+    symplectic_condition_residual: Option<f64>,
+    #[serde(flatten)]
+    checks: JsonChecks,
 }
 
 /// One order condition in `verify --format json`.
@@ -190,18 +224,59 @@ struct JsonCondition<'a> {
     ok: bool,
 }
 
+/// The report of a splitting or composition: its consistency conditions and the checks.
+fn splitting_report(method: Splitting, source: String, scheme: Scheme, format: TextFormat) -> anyhow::Result<String> {
+    let report = verify_splitting::Report {
+        checks: verify::report(&scheme)?,
+        method,
+        source,
+    };
+    Ok(match format {
+        TextFormat::Text => report.text(),
+        TextFormat::Json => serde_json::to_string_pretty(&report.json())? + "\n",
+    })
+}
+
+/// The report of a tableau: its order conditions and the checks.
+fn tableau_report(choice: &MethodChoice, source: String, scheme: Scheme, format: TextFormat) -> anyhow::Result<String> {
+    let report = Report::new(choice.tableau()?, source, verify::report(&scheme)?);
+    Ok(match format {
+        TextFormat::Text => report.text(),
+        TextFormat::Json => serde_json::to_string_pretty(&report.json())? + "\n",
+    })
+}
+
 /// Verifies a catalog method or a method file and prints the report.
 pub fn run(method: &str, format: TextFormat) -> anyhow::Result<()> {
     let choice = MethodChoice::resolve(method, None)?;
-    let source = match &choice {
-        MethodChoice::File { path, .. } | MethodChoice::SplittingFile { path, .. } => path.display().to_string(),
-        MethodChoice::Theta(_) => "the theta method (alpha = 1/2)".to_string(),
-        MethodChoice::Catalog(_) | MethodChoice::Splitting(_) => "catalog".to_string(),
-    };
-    let report = Report::new(choice.tableau()?, source);
-    let text = match format {
-        TextFormat::Text => report.text(),
-        TextFormat::Json => serde_json::to_string_pretty(&report.json())? + "\n",
+    let text = match &choice {
+        MethodChoice::Splitting(d) => splitting_report(
+            Splitting::from_data(d)?,
+            "catalog".into(),
+            Scheme::from(MethodRef::Splitting(d)),
+            format,
+        )?,
+        MethodChoice::SplittingFile { method, path } => splitting_report(
+            method.clone(),
+            path.display().to_string(),
+            Scheme::from(method.clone()),
+            format,
+        )?,
+        MethodChoice::File { path, tableau } => tableau_report(
+            &choice,
+            path.display().to_string(),
+            Scheme::from(tableau.clone()),
+            format,
+        )?,
+        MethodChoice::Theta(t) => tableau_report(
+            &choice,
+            "the theta method (alpha = 1/2)".into(),
+            Scheme::from(t.clone()),
+            format,
+        )?,
+        MethodChoice::Catalog(d) => {
+            tableau_report(&choice, "catalog".into(), Scheme::from(MethodRef::Butcher(d)), format)?
+        }
     };
     print(&text)?;
     Ok(())

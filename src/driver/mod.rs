@@ -213,7 +213,10 @@ impl<'a, T: Real, S: State<Scalar = T>> Driver<'a, T, S> {
         // Steps of exactly h; a last, shorter one when h does not divide the span.
         let ratio = to_f64(span / h);
         let whole = ratio.round();
-        let exact = (ratio - whole).abs() <= 1e-9 * ratio.abs().max(1.0);
+        // `span / h` carries the scalar's rounding: in f32 a step of 1/61 over [0, 1] gives
+        // 61 within a few epsilon, which must not become 61 steps plus one of 6e-8
+        let tolerance = f64::max(1e-9, 16.0 * to_f64(T::default_epsilon()));
+        let exact = (ratio - whole).abs() <= tolerance * ratio.abs().max(1.0);
         let n = if exact { whole } else { ratio.ceil() };
         if n > self.max_steps as f64 {
             return Err(Error::TooManySteps {

@@ -16,6 +16,7 @@
 mod newton;
 
 use super::{Counters, Stepper, Tolerances};
+use crate::real::magnitude;
 #[allow(unused_imports)]
 use crate::real::ops::*;
 use crate::{lit, to_f64, Error, MethodInfo, Problem, Real, State, Tableau};
@@ -533,7 +534,7 @@ impl<S: State> ImplicitRk<S> {
                         sum += a * self.f[j].as_slice()[m];
                     }
                     let new = h * sum;
-                    let d = (new - zi[m]).abs();
+                    let d = magnitude(new - zi[m]);
                     if !d.is_finite() {
                         bad = Some(d);
                     }

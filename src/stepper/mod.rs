@@ -2,8 +2,10 @@
 //!
 //! A stepper owns its stage buffers, so stepping never allocates for static states.
 
+mod boris;
 mod composed;
 mod error_norm;
+mod euler_cromer;
 mod explicit;
 mod implicit;
 mod runtime;
@@ -11,8 +13,10 @@ mod runtime_splitting;
 mod splitting;
 mod two_step;
 
+pub use boris::{Boris, BorisRotation};
 pub use composed::Composed;
 pub use error_norm::Tolerances;
+pub use euler_cromer::EulerCromer;
 pub use explicit::ExplicitRk;
 pub use implicit::{ImplicitOptions, ImplicitRk, ImplicitSolver};
 pub use runtime::RuntimeRk;

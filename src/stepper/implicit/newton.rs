@@ -1,6 +1,7 @@
 //! The simplified Newton iteration of Hairer & Wanner (*Solving ODEs II*, IV.8): one
 //! finite-difference Jacobian and one LU factorisation per step.
 
+use crate::real::magnitude;
 #[allow(unused_imports)]
 use crate::real::ops::*;
 use crate::{lit, Problem, Real, State};
@@ -137,7 +138,7 @@ impl<S: State> Newton<S> {
             for m in 0..n {
                 let d = self.rhs[i * n + m];
                 zi[m] += d;
-                let d = d.abs();
+                let d = magnitude(d);
                 if !d.is_finite() {
                     bad = Some(d);
                 }

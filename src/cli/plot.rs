@@ -1,0 +1,293 @@
+//! SVG line charts (plotters): trajectories, energy errors, convergence and
+//! work-precision diagrams. One function draws every kind; the caller chooses the axes.
+
+use plotters::coord::ranged1d::ValueFormatter;
+use plotters::prelude::*;
+use std::path::Path;
+
+/// One line of a chart.
+#[derive(Debug, Clone)]
+pub struct Series {
+    /// Legend text.
+    pub label: String,
+    /// The points, in drawing order; non-finite points (and non-positive ones on a log
+    /// axis) are left out.
+    pub points: Vec<(f64, f64)>,
+    /// Draw markers at the points (for short series such as convergence scans).
+    pub markers: bool,
+}
+
+impl Series {
+    /// A line without markers.
+    pub fn line(label: impl Into<String>, points: Vec<(f64, f64)>) -> Self {
+        Series {
+            label: label.into(),
+            points,
+            markers: false,
+        }
+    }
+
+    /// A line with a marker at every point.
+    pub fn marked(label: impl Into<String>, points: Vec<(f64, f64)>) -> Self {
+        Series {
+            label: label.into(),
+            points,
+            markers: true,
+        }
+    }
+}
+
+/// Axis scale.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Scale {
+    /// Linear.
+    Linear,
+    /// Base-10 logarithmic.
+    Log,
+}
+
+/// What a chart shows around its lines.
+#[derive(Debug, Clone)]
+pub struct Chart {
+    /// Caption.
+    pub title: String,
+    /// Horizontal axis label.
+    pub x_label: String,
+    /// Vertical axis label.
+    pub y_label: String,
+    /// Horizontal scale.
+    pub x_scale: Scale,
+    /// Vertical scale.
+    pub y_scale: Scale,
+    /// Same length per unit on both axes (trajectories: a circle stays round).
+    pub equal_aspect: bool,
+}
+
+impl Chart {
+    /// A chart with linear axes.
+    pub fn new(title: impl Into<String>, x_label: impl Into<String>, y_label: impl Into<String>) -> Self {
+        Chart {
+            title: title.into(),
+            x_label: x_label.into(),
+            y_label: y_label.into(),
+            x_scale: Scale::Linear,
+            y_scale: Scale::Linear,
+            equal_aspect: false,
+        }
+    }
+
+    /// With the given scales.
+    pub fn scales(mut self, x: Scale, y: Scale) -> Self {
+        self.x_scale = x;
+        self.y_scale = y;
+        self
+    }
+
+    /// With equal units on both axes.
+    pub fn equal_aspect(mut self) -> Self {
+        self.equal_aspect = true;
+        self
+    }
+}
+
+const WIDTH: u32 = 800;
+const HEIGHT: u32 = 560;
+const PALETTE: [RGBColor; 8] = [
+    RGBColor(31, 119, 180),
+    RGBColor(214, 39, 40),
+    RGBColor(44, 160, 44),
+    RGBColor(255, 127, 14),
+    RGBColor(148, 103, 189),
+    RGBColor(140, 86, 75),
+    RGBColor(227, 119, 194),
+    RGBColor(23, 190, 207),
+];
+
+fn usable(scale: Scale, v: f64) -> bool {
+    v.is_finite() && (scale == Scale::Linear || v > 0.0)
+}
+
+/// The data range of one axis, padded, never empty.
+fn range(values: impl Iterator<Item = f64>, scale: Scale) -> (f64, f64) {
+    let (lo, hi) = values.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| (lo.min(v), hi.max(v)));
+    if lo > hi {
+        return match scale {
+            Scale::Linear => (0.0, 1.0),
+            Scale::Log => (0.1, 10.0),
+        };
+    }
+    match scale {
+        Scale::Linear => {
+            let pad = if hi > lo {
+                0.05 * (hi - lo)
+            } else {
+                0.5 * lo.abs().max(1.0)
+            };
+            (lo - pad, hi + pad)
+        }
+        Scale::Log => {
+            let (llo, lhi) = (lo.log10(), hi.log10());
+            let pad = if lhi > llo { 0.05 * (lhi - llo) } else { 0.5 };
+            (10f64.powf(llo - pad), 10f64.powf(lhi + pad))
+        }
+    }
+}
+
+/// Widens the shorter range of a linear-linear chart so both axes have the same units per
+/// pixel of the plotting area (approximately: the label areas are fixed).
+fn equalize(x: (f64, f64), y: (f64, f64)) -> ((f64, f64), (f64, f64)) {
+    let (pw, ph) = (f64::from(WIDTH - 90), f64::from(HEIGHT - 100));
+    let (sx, sy) = ((x.1 - x.0) / pw, (y.1 - y.0) / ph);
+    if sx > sy {
+        let mid = 0.5 * (y.0 + y.1);
+        let half = 0.5 * sx * ph;
+        (x, (mid - half, mid + half))
+    } else {
+        let mid = 0.5 * (x.0 + x.1);
+        let half = 0.5 * sy * pw;
+        ((mid - half, mid + half), y)
+    }
+}
+
+/// Draws `series` on `chart` into the SVG file `path`.
+pub fn draw(path: &Path, chart: &Chart, series: &[Series]) -> anyhow::Result<()> {
+    let kept: Vec<Vec<(f64, f64)>> = series
+        .iter()
+        .map(|s| {
+            s.points
+                .iter()
+                .copied()
+                .filter(|&(x, y)| usable(chart.x_scale, x) && usable(chart.y_scale, y))
+                .collect()
+        })
+        .collect();
+    let mut xr = range(kept.iter().flatten().map(|p| p.0), chart.x_scale);
+    let mut yr = range(kept.iter().flatten().map(|p| p.1), chart.y_scale);
+    if chart.equal_aspect && chart.x_scale == Scale::Linear && chart.y_scale == Scale::Linear {
+        (xr, yr) = equalize(xr, yr);
+    }
+    let root = SVGBackend::new(path, (WIDTH, HEIGHT)).into_drawing_area();
+    root.fill(&WHITE).map_err(plot_error)?;
+    let mut builder = ChartBuilder::on(&root);
+    builder
+        .caption(&chart.title, ("sans-serif", 20))
+        .margin(12)
+        .x_label_area_size(45)
+        .y_label_area_size(75);
+    match (chart.x_scale, chart.y_scale) {
+        (Scale::Linear, Scale::Linear) => {
+            let mut c = builder.build_cartesian_2d(xr.0..xr.1, yr.0..yr.1).map_err(plot_error)?;
+            finish(&mut c, chart, series, &kept)
+        }
+        (Scale::Log, Scale::Linear) => {
+            let mut c = builder
+                .build_cartesian_2d((xr.0..xr.1).log_scale(), yr.0..yr.1)
+                .map_err(plot_error)?;
+            finish(&mut c, chart, series, &kept)
+        }
+        (Scale::Linear, Scale::Log) => {
+            let mut c = builder
+                .build_cartesian_2d(xr.0..xr.1, (yr.0..yr.1).log_scale())
+                .map_err(plot_error)?;
+            finish(&mut c, chart, series, &kept)
+        }
+        (Scale::Log, Scale::Log) => {
+            let mut c = builder
+                .build_cartesian_2d((xr.0..xr.1).log_scale(), (yr.0..yr.1).log_scale())
+                .map_err(plot_error)?;
+            finish(&mut c, chart, series, &kept)
+        }
+    }?;
+    root.present().map_err(plot_error)?;
+    Ok(())
+}
+
+type Context<'a, X, Y> = ChartContext<'a, SVGBackend<'a>, Cartesian2d<X, Y>>;
+
+fn finish<'a, X, Y>(
+    c: &mut Context<'a, X, Y>,
+    chart: &Chart,
+    series: &[Series],
+    kept: &[Vec<(f64, f64)>],
+) -> anyhow::Result<()>
+where
+    X: Ranged<ValueType = f64> + ValueFormatter<f64>,
+    Y: Ranged<ValueType = f64> + ValueFormatter<f64>,
+{
+    c.configure_mesh()
+        .x_desc(chart.x_label.as_str())
+        .y_desc(chart.y_label.as_str())
+        .light_line_style(WHITE.mix(0.0))
+        .draw()
+        .map_err(plot_error)?;
+    for (i, (s, points)) in series.iter().zip(kept).enumerate() {
+        let color = PALETTE[i % PALETTE.len()];
+        let style = ShapeStyle::from(&color).stroke_width(2);
+        c.draw_series(LineSeries::new(points.iter().copied(), style))
+            .map_err(plot_error)?
+            .label(s.label.as_str())
+            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], style));
+        if s.markers {
+            c.draw_series(points.iter().map(|&p| Circle::new(p, 3, color.filled())))
+                .map_err(plot_error)?;
+        }
+    }
+    if series.len() > 1 || series.first().is_some_and(|s| !s.label.is_empty()) {
+        c.configure_series_labels()
+            .background_style(WHITE.mix(0.85))
+            .border_style(BLACK)
+            .position(SeriesLabelPosition::UpperRight)
+            .draw()
+            .map_err(plot_error)?;
+    }
+    Ok(())
+}
+
+fn plot_error<E: std::fmt::Display>(e: E) -> anyhow::Error {
+    anyhow::anyhow!("cannot draw the chart: {e}")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn log_log_chart_with_markers_and_bad_points() {
+        let dir = std::env::temp_dir().join(format!("stormer-plot-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("scan.svg");
+        let chart = Chart::new("convergence", "steps", "error").scales(Scale::Log, Scale::Log);
+        let points = vec![
+            (10.0, 1e-2),
+            (20.0, 2.5e-3),
+            (40.0, 0.0),
+            (80.0, f64::NAN),
+            (160.0, 1e-5),
+        ];
+        draw(&path, &chart, &[Series::marked("rk2", points)]).unwrap();
+        let svg = std::fs::read_to_string(&path).unwrap();
+        assert!(svg.starts_with("<svg") && svg.contains("convergence") && svg.contains("rk2"));
+        // three usable points: three markers
+        assert_eq!(svg.matches("<circle").count(), 3);
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn empty_and_flat_series_still_draw() {
+        let dir = std::env::temp_dir().join(format!("stormer-plot-flat-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("flat.svg");
+        let chart = Chart::new("orbit", "x", "y").equal_aspect();
+        draw(
+            &path,
+            &chart,
+            &[
+                Series::line("a", vec![(1.0, 1.0), (1.0, 1.0)]),
+                Series::line("b", vec![]),
+            ],
+        )
+        .unwrap();
+        assert!(std::fs::read_to_string(&path).unwrap().contains("orbit"));
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+}

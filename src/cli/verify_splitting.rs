@@ -1,0 +1,172 @@
+//! `stormer verify` for a splitting or composition: flags, the word of sub-flows, every
+//! consistency condition with its value, and the numerical checks.
+
+use super::output::yes_no;
+use super::verify_checks::{self, JsonChecks};
+use std::fmt::Write as _;
+use stormer::order::splitting::Flow;
+use stormer::verify::Report as Checks;
+use stormer::Splitting;
+
+/// What `verify` reports about a splitting or composition.
+pub struct Report {
+    pub method: Splitting,
+    pub source: String,
+    pub checks: Checks,
+}
+
+impl Report {
+    fn conditions_ok(&self) -> bool {
+        self.method.conditions().iter().all(|c| c.holds())
+    }
+
+    /// The word as `D(c) K(c) ...`, shortened in the middle when long.
+    fn word(&self) -> String {
+        let ops: Vec<String> = self
+            .method
+            .word()
+            .iter()
+            .map(|op| {
+                let f = match op.flow {
+                    Flow::Drift => "D",
+                    Flow::Kick => "K",
+                };
+                format!("{f}({:.4})", op.coef)
+            })
+            .collect();
+        if ops.len() <= 12 {
+            ops.join(" ")
+        } else {
+            format!(
+                "{} ... {} ({} sub-flows)",
+                ops[..5].join(" "),
+                ops[ops.len() - 5..].join(" "),
+                ops.len()
+            )
+        }
+    }
+
+    pub fn text(&self) -> String {
+        let m = &self.method;
+        let f = m.flags();
+        let mut out = String::new();
+        let ok = if self.conditions_ok() { "hold" } else { "FAIL" };
+        let _ = writeln!(
+            out,
+            "{}: declared order {}, consistency conditions {ok}",
+            m.name(),
+            m.order()
+        );
+        let rows = [
+            ("source", self.source.clone()),
+            ("family", m.family().to_string()),
+            ("stages", format!("{} force evaluations per step", m.stages())),
+            ("explicit", yes_no(f.explicit).into()),
+            ("FSAL", yes_no(f.fsal).into()),
+            ("symplectic", "yes (a composition of exact flows)".into()),
+            ("symmetric", yes_no(f.symmetric).into()),
+            (
+                "kinetic energy",
+                if m.requires_quadratic_kinetic() {
+                    "must be quadratic (a Runge-Kutta-Nystrom method)".into()
+                } else {
+                    "any (a general method)".into()
+                },
+            ),
+            ("word", self.word()),
+        ];
+        for (key, value) in rows {
+            let _ = writeln!(out, "  {key:<15} {value}");
+        }
+        let conditions = m.conditions();
+        let _ = writeln!(out, "consistency conditions ({}):", conditions.len());
+        let width = conditions.iter().map(|c| c.text.len()).max().unwrap_or(0).max(9);
+        let _ = writeln!(
+            out,
+            "  {:<5}  {:<width$}  {:<22}  {:<22}  {:<9}",
+            "order", "condition", "expected", "got", "bound"
+        );
+        for c in conditions {
+            let _ = writeln!(
+                out,
+                "  {:<5}  {:<width$}  {:<22}  {:<22}  {:<9.1e}  {}",
+                c.order,
+                c.text,
+                format!("{:?}", c.expected),
+                format!("{:?}", c.value),
+                c.bound,
+                if c.holds() { "ok" } else { "FAILS" }
+            );
+        }
+        out += &verify_checks::text(&self.checks, m.order(), f.symmetric);
+        out.lines().map(|l| l.trim_end().to_string() + "\n").collect()
+    }
+
+    pub fn json(&self) -> JsonReport<'_> {
+        let m = &self.method;
+        let f = m.flags();
+        JsonReport {
+            name: m.name(),
+            source: &self.source,
+            family: m.family(),
+            declared_order: m.order(),
+            conditions_ok: self.conditions_ok(),
+            stages: m.stages(),
+            explicit: f.explicit,
+            fsal: f.fsal,
+            symplectic: self.checks.symplectic.holds,
+            symmetric: f.symmetric,
+            requires_quadratic_kinetic: m.requires_quadratic_kinetic(),
+            drift: m.drift(),
+            kick: m.kick(),
+            gamma: m.gamma(),
+            conditions: m
+                .conditions()
+                .iter()
+                .map(|c| JsonCondition {
+                    order: c.order,
+                    condition: &c.text,
+                    expected: c.expected,
+                    got: c.value,
+                    bound: c.bound,
+                    ok: c.holds(),
+                })
+                .collect(),
+            checks: JsonChecks::new(&self.checks),
+        }
+    }
+}
+
+/// `verify --format json` for a splitting or composition, keys in this order.
+#[derive(serde::Serialize)]
+pub struct JsonReport<'a> {
+    name: &'a str,
+    source: &'a str,
+    family: &'a str,
+    declared_order: usize,
+    conditions_ok: bool,
+    stages: usize,
+    explicit: bool,
+    fsal: bool,
+    /// The numerical verdict (`symplectic_defect` within its bound in every case).
+    symplectic: bool,
+    symmetric: bool,
+    requires_quadratic_kinetic: bool,
+    drift: &'a [f64],
+    kick: &'a [f64],
+    gamma: Option<&'a [f64]>,
+    conditions: Vec<JsonCondition<'a>>,
+    #[serde(flatten)]
+    checks: JsonChecks,
+}
+
+/// One consistency condition in `verify --format json`.
+#[derive(serde::Serialize)]
+struct JsonCondition<'a> {
+    order: usize,
+    condition: &'a str,
+    expected: f64,
+    got: f64,
+    bound: f64,
+    ok: bool,
+}

@@ -1,0 +1,15 @@
+//! Charged particles in magnetic fields (and bodies in rotating frames): the magnetic
+//! rotation as its own exact sub-flow.
+//!
+//! A velocity-dependent force `omega x v` breaks the drift/kick factorization that
+//! splitting methods rely on: applied as a kick it silently gives wrong results. Here the
+//! gyration `q' = v, v' = omega x v` is the *drift*, solved exactly ([`Gyration`], Rodrigues
+//! form, stable for any angle and for zero field), and the remaining forces are the
+//! kick. With [`Charged`], velocity Verlet becomes the magnetic Verlet of the scenes, and
+//! every composition of the catalog gives a higher order with no new code.
+
+mod gyration;
+mod lorentz;
+
+pub use gyration::{cross, gyration_coefficients, Gyration, GyrationCache};
+pub use lorentz::{Charged, Lorentz};
