@@ -133,7 +133,7 @@ where
         true
     }
 
-    #[inline]
+    #[inline(always)]
     fn step_in_place(&mut self, p: &P, t: P::Scalar, h: P::Scalar, y: &mut P::State) -> Result<(), Error> {
         let cached = self.cached && M::DATA.flags.fsal;
         self.flows(p, t, h, y, cached);
