@@ -1,12 +1,12 @@
 //! The Boris-Buneman method for charged particles, with the classic Cayley rotation or
 //! with the exact rotation angle.
 
-use super::{Counters, Stepper, Tolerances};
+use super::{Counters, ParticleMethod, Stepper, Tolerances};
 use crate::hamiltonian::halves_mut;
 use crate::magnetic::{cross, Charged, Lorentz};
 #[allow(unused_imports)]
 use crate::real::ops::*;
-use crate::{lit, Error, Flags, MethodInfo, State};
+use crate::{lit, Error, MethodInfo, State};
 
 /// How Boris turns the velocity over a step `h` (rotation vector `omega`, angle
 /// `|omega| h`).
@@ -70,8 +70,12 @@ impl<S: State> Boris<S> {
     /// A stepper with buffers shaped like `y0 = (q, v)`, of length `6N`.
     pub fn new(rotation: BorisRotation, y0: &S) -> Result<Self, Error> {
         if y0.dim() == 0 || y0.dim() % 6 != 0 {
+            let method = match rotation {
+                BorisRotation::Cayley => ParticleMethod::Boris,
+                BorisRotation::ExactPhase => ParticleMethod::BorisExactPhase,
+            };
             return Err(Error::Unsupported {
-                name: "boris".into(),
+                name: method.name().into(),
                 reason: format!(
                     "it moves particles in 3-D: the state (q, v) needs 6 components per particle, not {}",
                     y0.dim()
@@ -85,13 +89,6 @@ impl<S: State> Boris<S> {
             fresh: false,
             counters: Counters::default(),
         })
-    }
-
-    fn name(&self) -> &'static str {
-        match self.rotation {
-            BorisRotation::Cayley => "boris",
-            BorisRotation::ExactPhase => "boris_exact_phase",
-        }
     }
 }
 
@@ -140,18 +137,9 @@ fn too_fast<T: crate::Real>(t: T) -> Error {
 
 impl<L: Lorentz> Stepper<Charged<L>> for Boris<L::State> {
     fn info(&self) -> MethodInfo {
-        MethodInfo {
-            name: self.name().into(),
-            family: "charged-particle",
-            order: 2,
-            stages: 1,
-            embedded_order: None,
-            flags: Flags {
-                explicit: true,
-                fsal: true,
-                symplectic: false,
-                symmetric: true,
-            },
+        match self.rotation {
+            BorisRotation::Cayley => ParticleMethod::Boris.info(),
+            BorisRotation::ExactPhase => ParticleMethod::BorisExactPhase.info(),
         }
     }
 
