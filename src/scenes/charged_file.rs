@@ -415,8 +415,8 @@ mod tests {
             ),
             (
                 9,
-                "ratio = 1.0",
-                "line 9: particles[0].ratio (A): give the charge or the charge-to-mass ratio, not both",
+                "charge = 2.0\nratio = 1.0",
+                "line 10: particles[0].ratio (A): give the charge or the charge-to-mass ratio, not both",
             ),
             (
                 15,
@@ -452,7 +452,7 @@ mod tests {
             (
                 4,
                 "E = [1, 2, 3, 4]",
-                "line 4: parameters.E must have 3 coordinates, got 4",
+                "line 4: parameters.E must have 3 coordinates (particles move in 3-D), got 4",
             ),
             (
                 4,
