@@ -531,6 +531,7 @@ impl<T: Real, S: State<Scalar = T>> Structure for ChargedParticles<T, S> {
 }
 
 #[cfg(test)]
+#[allow(clippy::float_cmp)] // exact values compared exactly
 mod tests {
     use super::*;
     use crate::magnetic::Charged;

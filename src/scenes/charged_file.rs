@@ -226,7 +226,7 @@ impl Scene for ChargedScene {
             let (mass, charge) = mass_and_charge(src, k, &name, entry)?;
             let q = vector3(src, &format!("particles[{k}].position ({name})"), &p.position)?;
             let v = vector3(src, &format!("particles[{k}].velocity ({name})"), &p.velocity)?;
-            if centre.is_some() && q == [0.0; 3] {
+            if centre.is_some() && q.iter().all(|&x| x == 0.0) {
                 return Err(src.error_at(
                     p.position.span(),
                     format!(
