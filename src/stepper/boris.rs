@@ -135,31 +135,17 @@ fn too_fast<T: crate::Real>(t: T) -> Error {
     )
 }
 
-impl<L: Lorentz> Stepper<Charged<L>> for Boris<L::State> {
-    fn info(&self) -> MethodInfo {
-        match self.rotation {
-            BorisRotation::Cayley => ParticleMethod::Boris.info(),
-            BorisRotation::ExactPhase => ParticleMethod::BorisExactPhase.info(),
-        }
-    }
-
-    fn error_order(&self) -> Option<usize> {
-        None
-    }
-
-    fn step(
+impl<S: State> Boris<S> {
+    /// One step in place; `cached`: the acceleration buffer holds `a(t, q)`.
+    fn advance<L: Lorentz<State = S, Scalar = S::Scalar>>(
         &mut self,
         p: &Charged<L>,
         t: L::Scalar,
         h: L::Scalar,
-        y: &L::State,
-        y_new: &mut L::State,
-        _tol: Option<&Tolerances<L::Scalar>>,
-    ) -> Result<Option<L::Scalar>, Error> {
-        let cached = self.cached;
-        self.cached = false;
-        y_new.copy_from(y);
-        let (q, v) = halves_mut(y_new.as_mut_slice());
+        y: &mut S,
+        cached: bool,
+    ) -> Result<(), Error> {
+        let (q, v) = halves_mut(y.as_mut_slice());
         let (_, a) = halves_mut(self.work.as_mut_slice());
         if !cached {
             p.0.acceleration(t, q, a);
@@ -188,8 +174,50 @@ impl<L: Lorentz> Stepper<Charged<L>> for Boris<L::State> {
             }
             solve_turn(&w, vk);
         }
+        Ok(())
+    }
+}
+
+impl<L: Lorentz> Stepper<Charged<L>> for Boris<L::State> {
+    fn info(&self) -> MethodInfo {
+        match self.rotation {
+            BorisRotation::Cayley => ParticleMethod::Boris.info(),
+            BorisRotation::ExactPhase => ParticleMethod::BorisExactPhase.info(),
+        }
+    }
+
+    fn error_order(&self) -> Option<usize> {
+        None
+    }
+
+    fn step(
+        &mut self,
+        p: &Charged<L>,
+        t: L::Scalar,
+        h: L::Scalar,
+        y: &L::State,
+        y_new: &mut L::State,
+        _tol: Option<&Tolerances<L::Scalar>>,
+    ) -> Result<Option<L::Scalar>, Error> {
+        let cached = self.cached;
+        self.cached = false;
+        y_new.copy_from(y);
+        self.advance(p, t, h, y_new, cached)?;
         self.fresh = true;
         Ok(None)
+    }
+
+    fn steps_in_place(&self) -> bool {
+        true
+    }
+
+    fn step_in_place(&mut self, p: &Charged<L>, t: L::Scalar, h: L::Scalar, y: &mut L::State) -> Result<(), Error> {
+        let cached = self.cached;
+        self.cached = false;
+        self.advance(p, t, h, y, cached)?;
+        self.cached = true;
+        self.fresh = false;
+        Ok(())
     }
 
     fn accept(&mut self) {
