@@ -34,7 +34,8 @@ pub enum BorisRotation {
 /// half-step velocity), and the velocity update of a pure magnetic field is the Cayley
 /// rotation of SCENES.md 6: `v+ = v- + w h/(1 + (w h/2)^2) (v- x e + (w h/2)(v- x e) x e)`.
 /// Explicit, symmetric, second order, one force evaluation per step (the last one is
-/// reused); it preserves phase-space volume but is not symplectic; in a pure magnetic
+/// reused); in a uniform field it preserves phase-space volume but is not symplectic (in a
+/// non-uniform one, this synchronized form does not keep the volume either); in a pure magnetic
 /// field it keeps `|v|` exactly for any `h`, and with crossed uniform fields it moves
 /// along the E x B drift exactly.
 ///
