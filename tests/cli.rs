@@ -176,7 +176,7 @@ fn methods_json_lists_the_catalog() {
     assert_ok(&out);
     let list: serde_json::Value = serde_json::from_str(&stdout(&out)).unwrap();
     let list = list.as_array().unwrap();
-    assert_eq!(list.len(), 31 + 37 + 21);
+    assert_eq!(list.len(), 31 + 37 + 21 + 3);
     for m in list {
         for key in [
             "name",
@@ -214,11 +214,31 @@ fn methods_json_lists_the_catalog() {
         (verlet["fsal"].as_bool(), verlet["symplectic"].as_bool()),
         (Some(true), Some(true))
     );
+    // the charged-particle steppers close the list
+    let particle: Vec<(&str, u64, bool)> = list[list.len() - 3..]
+        .iter()
+        .map(|m| {
+            assert_eq!(m["family"], "charged-particle");
+            (
+                m["name"].as_str().unwrap(),
+                m["order"].as_u64().unwrap(),
+                m["symmetric"].as_bool().unwrap(),
+            )
+        })
+        .collect();
+    assert_eq!(
+        particle,
+        [
+            ("boris", 2, true),
+            ("boris_exact_phase", 2, true),
+            ("euler_cromer", 1, false)
+        ]
+    );
     let table = stormer(&dir, &["methods"]);
     assert_ok(&table);
     let text = stdout(&table);
     assert!(text.lines().next().unwrap().starts_with("name"));
-    assert_eq!(text.lines().count(), 1 + 31 + 37 + 21);
+    assert_eq!(text.lines().count(), 1 + 31 + 37 + 21 + 3);
 }
 
 #[test]
@@ -824,4 +844,214 @@ fn neptune_and_pluto_are_added_by_editing_the_scene_file() {
         &stormer(&dir, &["run", "broken.toml"]),
         "bodies[5].mass (Pluto) must be > 0",
     );
+}
+
+/// The users' magnetic Verlet of SCENES.md 5 written out with its matrices exp(Omega h)
+/// and F(h) (closed forms, field along axis 3 of strength `w`, `grad V = q/|q|^3`): the
+/// positions and velocities after each of `steps` steps of `h` from `q0`, `v0 = 0`.
+fn users_magnetic_verlet(w: f64, h: f64, q0: [f64; 3], steps: usize) -> Vec<[f64; 6]> {
+    let om = [[0.0, -w, 0.0], [w, 0.0, 0.0], [0.0, 0.0, 0.0]];
+    let mut om2 = [[0.0; 3]; 3];
+    for i in 0..3 {
+        for j in 0..3 {
+            om2[i][j] = (0..3).map(|k| om[i][k] * om[k][j]).sum();
+        }
+    }
+    let (s, c) = ((w * h).sin(), (w * h).cos());
+    let id = |i: usize, j: usize| if i == j { 1.0 } else { 0.0 };
+    let e: [[f64; 3]; 3] = std::array::from_fn(|i| {
+        std::array::from_fn(|j| id(i, j) + s / w * om[i][j] + 2.0 * ((w * h / 2.0).sin() / w).powi(2) * om2[i][j])
+    });
+    let f: [[f64; 3]; 3] = std::array::from_fn(|i| {
+        std::array::from_fn(|j| id(i, j) * h + (1.0 - c) / (w * w) * om[i][j] - (s - w * h) / (w * w * w) * om2[i][j])
+    });
+    let grad = |q: [f64; 3]| {
+        let r3 = (q[0] * q[0] + q[1] * q[1] + q[2] * q[2]).powf(1.5);
+        q.map(|x| x / r3)
+    };
+    let (mut q, mut v) = (q0, [0.0; 3]);
+    let mut states = vec![[q[0], q[1], q[2], 0.0, 0.0, 0.0]];
+    for _ in 0..steps {
+        let g = grad(q);
+        let half: [f64; 3] = std::array::from_fn(|i| v[i] - h / 2.0 * g[i]);
+        q = std::array::from_fn(|i| q[i] + (0..3).map(|j| f[i][j] * half[j]).sum::<f64>());
+        let g = grad(q);
+        v = std::array::from_fn(|i| (0..3).map(|j| e[i][j] * half[j]).sum::<f64>() - h / 2.0 * g[i]);
+        states.push([q[0], q[1], q[2], v[0], v[1], v[2]]);
+    }
+    states
+}
+
+#[test]
+fn coulomb_magnetic_with_velocity_verlet_is_the_users_magnetic_verlet() {
+    // SCENES.md 5's reference run, spelled out as the issue does
+    let dir = workdir("coulomb-magnetic");
+    let out = stormer(
+        &dir,
+        &[
+            "run",
+            "coulomb-magnetic",
+            "--method",
+            "velocity_verlet_kdk",
+            "--dt",
+            "0.01",
+            "--t-end",
+            "100",
+            "--every",
+            "10",
+        ],
+    );
+    assert_ok(&out);
+    let summary = stderr(&out);
+    assert!(
+        summary.starts_with("velocity_verlet_kdk on coulomb-magnetic: 10000 steps, 10001 evaluations"),
+        "{summary}"
+    );
+    let (header, rows) = read_csv(&dir.join("out/coulomb-magnetic-velocity_verlet_kdk.csv"));
+    assert_eq!(header, ["t", "x", "y", "z", "vx", "vy", "vz", "energy"]);
+    assert_eq!(rows.len(), 1001, "1000 records after the initial one");
+    // the same sequence of operations as the users' loop: the same numbers to round-off
+    let users = users_magnetic_verlet(1.0, 0.01, [1.0, 1.0, 1.0], 10000);
+    let mut deviation = 0.0f64;
+    for (k, row) in rows.iter().enumerate() {
+        assert!((row[0] - k as f64 * 0.1).abs() < 1e-12, "record {k} at t = {}", row[0]);
+        for (a, b) in row[1..7].iter().zip(&users[10 * k]) {
+            deviation = deviation.max((a - b).abs());
+        }
+    }
+    assert!(deviation < 1e-10, "CSV against the users' loop: {deviation:e}"); // measured 2.9e-12
+                                                                              // energy: -1/sqrt(3) at t = 0, max |dH| about 1e-4 (measured 1.07e-4)
+    let e0 = -1.0 / 3f64.sqrt();
+    assert!((rows[0][7] - e0).abs() <= f64::EPSILON);
+    let worst = rows.iter().map(|r| (r[7] - e0).abs()).fold(0.0, f64::max);
+    assert!(worst > 5e-5 && worst < 2e-4, "max |dH| {worst:e}");
+    let relative = summary_number(&summary, "max |dE/E0|");
+    assert!((relative - worst / e0.abs()).abs() < 1e-3 * relative, "{summary}");
+}
+
+#[test]
+fn charged_particle_methods_run_on_charged_particle_scenes_only() {
+    let dir = workdir("charged-methods");
+    // every family runs on a charged-particle scene: Boris, Euler-Cromer, splittings,
+    // compositions, Runge-Kutta methods fixed and adaptive
+    for (method, extra) in [
+        ("boris", &[][..]),
+        ("boris-exact-phase", &[][..]),
+        ("euler_cromer", &[][..]),
+        ("stormer_verlet_dkd", &[][..]),
+        ("kahan_li6", &[][..]),
+        ("rk4", &[][..]),
+        ("dop853", &["--rtol", "1e-8"][..]),
+    ] {
+        let mut args = vec!["run", "penning-trap", "--method", method, "--t-end", "1"];
+        args.extend_from_slice(extra);
+        let out = stormer(&dir, &args);
+        assert_ok(&out);
+        // (Euler-Cromer, first order, is at 4e-2)
+        assert!(
+            summary_number(&stderr(&out), "max |dE/E0|") < 0.1,
+            "{method}: {}",
+            stderr(&out)
+        );
+    }
+    let (header, _) = read_csv(&dir.join("out/penning-trap-boris.csv"));
+    assert_eq!(header.len(), 1 + 18 + 1);
+    assert_eq!((header[1].as_str(), header[10].as_str()), ("ion1_x", "ion1_vx"));
+    // and nowhere else
+    assert_error(
+        &stormer(&dir, &["run", "pendulum", "--method", "boris"]),
+        "method boris cannot be used here: it is a charged-particle method, for scenes of the charged-particles \
+         model, not of the pendulum model",
+    );
+    assert_error(
+        &stormer(&dir, &["run", "kepler", "--method", "euler-cromer"]),
+        "not of the n-body model",
+    );
+    // Runge-Kutta-Nystrom methods need a free-flight drift
+    assert_error(
+        &stormer(&dir, &["run", "coulomb-magnetic", "--method", "blanes_moan_srkn11b"]),
+        "it is a Runge-Kutta-Nystrom method, which reaches its order only when the drift is a free flight",
+    );
+    // no error estimate, no adaptive steps; not catalog data, nothing to verify
+    assert_error(
+        &stormer(&dir, &["run", "exb-drift", "--method", "boris", "--rtol", "1e-6"]),
+        "embedded error estimate",
+    );
+    assert_error(
+        &stormer(&dir, &["verify", "boris"]),
+        "it is a charged-particle stepper, not catalog data",
+    );
+}
+
+#[test]
+fn exb_drift_with_boris_moves_with_the_drift_velocity() {
+    // B = (0, 0, 1), E = (0.5, 0, 0), unit ratio: omega = -B, a = E. The guiding centre
+    // R = q + (omega x v + a)/|omega|^2 moves with E x B/|B|^2 = (0, -0.5, 0).
+    let dir = workdir("exb-drift");
+    let out = stormer(&dir, &["run", "exb-drift"]);
+    assert_ok(&out);
+    assert!(
+        stderr(&out).starts_with("boris on exb-drift: 6284 steps"),
+        "{}",
+        stderr(&out)
+    );
+    let (header, rows) = read_csv(&dir.join("out/exb-drift-boris.csv"));
+    assert_eq!(header, ["t", "x", "y", "z", "vx", "vy", "vz", "energy"]);
+    let centre = |r: &[f64]| [r[1] + r[5] + 0.5, r[2] - r[4], r[3]];
+    // it oscillates with Boris's discrete gyration (amplitude measured 2.5e-5) about a
+    // point moving with the drift velocity (measured to 5e-10 over the ten turns)
+    let (r0, end) = (centre(&rows[0]), rows.last().unwrap());
+    let t_end = end[0];
+    let velocity: Vec<f64> = (0..3).map(|i| (centre(end)[i] - r0[i]) / t_end).collect();
+    assert!(
+        velocity[0].abs() < 1e-6 && (velocity[1] + 0.5).abs() < 1e-6 && velocity[2] == 0.0,
+        "guiding centre velocity {velocity:?}"
+    );
+    let worst = rows.iter().fold(0.0f64, |m, r| {
+        let c = centre(r);
+        m.max((c[0] - r0[0]).abs()).max((c[1] - r0[1] + 0.5 * r[0]).abs())
+    });
+    assert!(worst < 5e-5, "guiding centre off the E x B drift by {worst:e}");
+    // and the particle itself follows the exact cycloid to Boris's phase error
+    assert!(
+        summary_number(&stderr(&out), "max error vs exact") < 1e-3,
+        "{}",
+        stderr(&out)
+    );
+
+    // PERFORMANCE.md's trade-off at omega h = 1: started on the drift velocity, Boris moves
+    // exactly with it, Boris with the exact phase lags by u t (1 - (x/2)/tan(x/2)), x = 1
+    let show = stormer(&dir, &["scene", "show", "exb-drift"]);
+    let text = stdout(&show).replace("velocity = [0.0, 0.0, 0.0]", "velocity = [0.0, -0.5, 0.0]");
+    std::fs::write(dir.join("on-drift.toml"), text).unwrap();
+    let error = |method: &str| {
+        let out = stormer(
+            &dir,
+            &["run", "on-drift.toml", "--method", method, "--dt", "1", "--t-end", "10"],
+        );
+        assert_ok(&out);
+        summary_number(&stderr(&out), "max error vs exact")
+    };
+    assert!(error("boris") < 1e-12);
+    let lag = 0.5 * 10.0 * (1.0 - 0.5 / 0.5f64.tan());
+    let exact_phase = error("boris_exact_phase");
+    assert!(
+        (exact_phase - lag).abs() < 0.1,
+        "exact phase {exact_phase}, predicted lag {lag}"
+    );
+}
+
+#[test]
+fn the_cyclotron_follows_its_exact_helix() {
+    let dir = workdir("cyclotron");
+    for dt in ["0.1", "1", "5"] {
+        let out = stormer(&dir, &["run", "cyclotron", "--dt", dt]);
+        assert_ok(&out);
+        let summary = stderr(&out);
+        assert!(
+            summary_number(&summary, "max error vs exact") < 1e-12,
+            "dt {dt}: {summary}"
+        );
+        assert!(summary_number(&summary, "max |dE/E0|") < 1e-14, "dt {dt}: {summary}");
+    }
 }

@@ -4,6 +4,7 @@ use std::path::{Path, PathBuf};
 use stormer::method::SplittingData;
 use stormer::registry::{self, normalize, MethodRef};
 use stormer::scenes::{Scene, SplittingChoice};
+use stormer::stepper::ParticleMethod;
 use stormer::{Error, ImplicitOptions, Splitting, Stepper, Tableau, TableauData};
 
 /// A method chosen on the command line.
@@ -28,6 +29,9 @@ pub enum MethodChoice {
     },
     /// The theta method with weight `alpha` (`registry::theta`).
     Theta(Tableau),
+    /// A charged-particle stepper (Boris, Euler-Cromer): not catalog data, a stepper
+    /// for the charged-particle scenes.
+    Particle(ParticleMethod),
 }
 
 /// A method file holding a splitting or composition: its family says so, or it has
@@ -57,8 +61,8 @@ pub fn looks_like_path(arg: &str) -> bool {
 }
 
 impl MethodChoice {
-    /// Resolves `name`: `theta` (with `alpha`, default 1/2), a method file, or a catalog
-    /// name (an unknown name is an error suggesting the nearest ones).
+    /// Resolves `name`: `theta` (with `alpha`, default 1/2), a charged-particle stepper
+    /// (`boris`, `boris_exact_phase`, `euler_cromer`), a method file, or a catalog name (an unknown name is an error suggesting the nearest ones).
     pub fn resolve(name: &str, alpha: Option<f64>) -> Result<Self, Error> {
         if normalize(name) == "theta" {
             return Ok(MethodChoice::Theta(registry::theta(alpha.unwrap_or(0.5))?));
@@ -68,6 +72,9 @@ impl MethodChoice {
                 "--alpha",
                 format!("it applies to --method theta only, not to {name}"),
             ));
+        }
+        if let Some(method) = ParticleMethod::find(name) {
+            return Ok(MethodChoice::Particle(method));
         }
         if looks_like_path(name) {
             let path = PathBuf::from(name);
@@ -92,6 +99,7 @@ impl MethodChoice {
             MethodChoice::File { tableau, .. } => tableau.name().to_string(),
             MethodChoice::SplittingFile { method, .. } => method.name().to_string(),
             MethodChoice::Theta(t) => t.name().to_string(),
+            MethodChoice::Particle(m) => m.name().to_string(),
         }
     }
 
@@ -103,6 +111,10 @@ impl MethodChoice {
                 name: self.label(),
                 reason: "it is a splitting or composition, not a Butcher tableau".into(),
             }),
+            MethodChoice::Particle(_) => Err(Error::Unsupported {
+                name: self.label(),
+                reason: "it is a charged-particle stepper, not a Butcher tableau".into(),
+            }),
             MethodChoice::File { tableau, .. } | MethodChoice::Theta(tableau) => Ok(tableau.clone()),
         }
     }
@@ -110,7 +122,8 @@ impl MethodChoice {
     /// A stepper for the scene's model: the compiled stepper of a catalog method, the
     /// run-time one of a file or theta tableau. A splitting goes through the model
     /// ([`Scene::splitting_stepper`]), which refuses it with the reason when the model is
-    /// not a Hamiltonian of the kind the method needs.
+    /// not a Hamiltonian of the kind the method needs; so does a charged-particle stepper
+    /// ([`Scene::particle_stepper`]), which needs a charged-particle model.
     pub fn stepper<S: Scene>(
         &self,
         model: &S,
@@ -124,6 +137,7 @@ impl MethodChoice {
             MethodChoice::File { tableau, .. } | MethodChoice::Theta(tableau) => {
                 registry::tableau_stepper::<S>(tableau, y0, implicit)
             }
+            MethodChoice::Particle(m) => model.particle_stepper(*m, y0),
         }
     }
 }

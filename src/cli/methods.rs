@@ -1,8 +1,9 @@
-//! `stormer methods`: the catalog as a table or as JSON.
+//! `stormer methods`: the catalog as a table or as JSON, then the charged-particle steppers.
 
 use super::output::{print, yes_no};
 use super::TableFormat;
 use stormer::registry::{BUTCHER, SPLITTING};
+use stormer::stepper::PARTICLE_METHODS;
 use stormer::MethodInfo;
 
 /// The table's columns, in order.
@@ -92,6 +93,7 @@ pub fn run(format: TableFormat) -> anyhow::Result<()> {
         .iter()
         .map(|d| d.info())
         .chain(SPLITTING.iter().map(|d| d.info()))
+        .chain(PARTICLE_METHODS.iter().map(|m| m.info()))
         .collect();
     let text = match format {
         TableFormat::Table => table(&infos.iter().map(cells).collect::<Vec<_>>()),

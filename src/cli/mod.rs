@@ -25,7 +25,8 @@ struct Cli {
 
 #[derive(Debug, Subcommand)]
 enum Command {
-    /// List the methods of the catalog with their order, stages and derived flags.
+    /// List the methods of the catalog with their order, stages and derived flags, and the
+    /// charged-particle steppers (Boris, Euler-Cromer).
     Methods {
         /// Output format.
         #[arg(long, value_enum, default_value_t = TableFormat::Table)]

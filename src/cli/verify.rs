@@ -11,7 +11,7 @@ use std::fmt::Write as _;
 use stormer::order::{achieved_order, DEFAULT_TOLERANCE, MAX_ORDER};
 use stormer::registry::MethodRef;
 use stormer::verify::{self, Scheme};
-use stormer::{Splitting, Tableau};
+use stormer::{Error, Splitting, Tableau};
 
 /// What `verify` reports about a tableau.
 struct Report {
@@ -276,6 +276,16 @@ pub fn run(method: &str, format: TextFormat) -> anyhow::Result<()> {
         )?,
         MethodChoice::Catalog(d) => {
             tableau_report(&choice, "catalog".into(), Scheme::from(MethodRef::Butcher(d)), format)?
+        }
+        MethodChoice::Particle(m) => {
+            return Err(Error::Unsupported {
+                name: m.name().into(),
+                reason: "it is a charged-particle stepper, not catalog data: `stormer verify` checks tableaus, \
+                         splittings and compositions (run it on a charged-particle scene with `stormer run`; \
+                         docs/charged-particles.md gives its properties)"
+                    .into(),
+            }
+            .into())
         }
     };
     print(&text)?;

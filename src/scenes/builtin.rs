@@ -2,7 +2,7 @@
 //! scene by name or from a file.
 
 use super::file::{model_name, parse_as, Source};
-use super::{AnyScene, CentralForce, DampedOscillator, Harmonic, NBody, Pendulum, Scene, MODELS};
+use super::{AnyScene, CentralForce, ChargedScene, DampedOscillator, Harmonic, NBody, Pendulum, Scene, MODELS};
 use crate::Error;
 use nalgebra::DVector;
 use std::path::Path;
@@ -41,6 +41,26 @@ pub const BUILTIN: &[BuiltinScene] = &[
     BuiltinScene {
         name: "outer-solar-system",
         text: include_str!("../../scenes/outer-solar-system.toml"),
+    },
+    BuiltinScene {
+        name: "coulomb-magnetic",
+        text: include_str!("../../scenes/coulomb-magnetic.toml"),
+    },
+    BuiltinScene {
+        name: "cyclotron",
+        text: include_str!("../../scenes/cyclotron.toml"),
+    },
+    BuiltinScene {
+        name: "exb-drift",
+        text: include_str!("../../scenes/exb-drift.toml"),
+    },
+    BuiltinScene {
+        name: "penning-trap",
+        text: include_str!("../../scenes/penning-trap.toml"),
+    },
+    BuiltinScene {
+        name: "magnetic-bottle",
+        text: include_str!("../../scenes/magnetic-bottle.toml"),
     },
 ];
 
@@ -116,6 +136,7 @@ pub fn parse(text: &str, origin: &str, name: &str) -> Result<AnyScene, Error> {
         Pendulum::MODEL => AnyScene::Pendulum(parse_as(&src, name)?),
         CentralForce::<f64, DVector<f64>>::MODEL => AnyScene::CentralForce(parse_as(&src, name)?),
         NBody::<f64, DVector<f64>>::MODEL => AnyScene::NBody(parse_as(&src, name)?),
+        ChargedScene::MODEL => AnyScene::ChargedParticles(parse_as(&src, name)?),
         other => {
             return Err(src.error_at(
                 model.span(),
@@ -139,6 +160,11 @@ mod tests {
             ("kepler", "n-body"),
             ("kepler-e06", "central-force"),
             ("outer-solar-system", "n-body"),
+            ("coulomb-magnetic", "charged-particles"),
+            ("cyclotron", "charged-particles"),
+            ("exb-drift", "charged-particles"),
+            ("penning-trap", "charged-particles"),
+            ("magnetic-bottle", "charged-particles"),
         ];
         assert_eq!(BUILTIN.len(), models.len());
         for (s, (name, model)) in BUILTIN.iter().zip(models) {

@@ -92,8 +92,9 @@ struct SceneFile<P, I> {
     description: Option<String>,
     #[serde(default = "none")]
     parameters: Option<P>,
-    // the N-body model writes its initial state as a list of `[[bodies]]`
-    #[serde(default = "none", alias = "bodies")]
+    // the N-body model writes its initial state as a list of `[[bodies]]`, the
+    // charged-particle model as a list of `[[particles]]`
+    #[serde(default = "none", alias = "bodies", alias = "particles")]
     initial: Option<I>,
     run: RunTable,
 }

@@ -43,6 +43,8 @@
 
 mod builtin;
 mod central_force;
+mod charged;
+mod charged_file;
 mod damped;
 mod file;
 mod harmonic;
@@ -54,6 +56,8 @@ mod splitting;
 
 pub use builtin::{builtin, load, parse, BuiltinScene, BUILTIN};
 pub use central_force::{CentralForce, CentralForceInitial, CentralForceParameters};
+pub use charged::{ChargedParticles, MagneticField};
+pub use charged_file::{BottleTable, ChargedParameters, ChargedScene, ParticleEntry};
 pub use damped::{DampedOscillator, DampedParameters};
 pub use file::{Number, RunSettings, Source};
 pub use harmonic::{Harmonic, HarmonicParameters, OscillatorInitial};
@@ -63,6 +67,7 @@ pub use orbit::{eccentric_anomaly, Orbit};
 pub use pendulum::{NoParameters, Pendulum, PendulumInitial, PENDULUM_PERIOD_45_DEGREES};
 pub use splitting::{general_splitting, not_splittable, quadratic_splitting, SplittingChoice};
 
+use crate::stepper::ParticleMethod;
 use crate::{Error, Problem, Stepper};
 use nalgebra::DVector;
 use serde::de::DeserializeOwned;
@@ -124,6 +129,20 @@ pub trait Scene: Problem<Scalar = f64> + Sized + 'static {
             ),
         ))
     }
+
+    /// A charged-particle stepper (Boris, Euler-Cromer) on this model, or the sentence
+    /// saying why it does not apply. The default refuses: only the `charged-particles`
+    /// model has a magnetic field for them to turn in.
+    fn particle_stepper(&self, method: ParticleMethod, _y0: &Self::State) -> Result<Box<dyn Stepper<Self>>, Error> {
+        Err(Error::Unsupported {
+            name: method.name().to_string(),
+            reason: format!(
+                "it is a charged-particle method, for scenes of the charged-particles model, not of the {} model; \
+                 use a Runge-Kutta method or a splitting (`stormer methods`)",
+                Self::MODEL
+            ),
+        })
+    }
 }
 
 /// A scene ready to run: the model, its initial state and the run's defaults.
@@ -177,6 +196,8 @@ pub enum AnyScene {
     CentralForce(Setup<CentralForce<f64, DVector<f64>>>),
     /// `model = "n-body"`: gravitating bodies read from the file.
     NBody(Setup<NBody<f64, DVector<f64>>>),
+    /// `model = "charged-particles"`: charged particles in electric and magnetic fields.
+    ChargedParticles(Setup<ChargedScene>),
 }
 
 /// The model names a scene file can give, in the order of [`AnyScene`].
@@ -186,6 +207,7 @@ pub const MODELS: &[&str] = &[
     Pendulum::MODEL,
     CentralForce::<f64, DVector<f64>>::MODEL,
     NBody::<f64, DVector<f64>>::MODEL,
+    ChargedScene::MODEL,
 ];
 
 /// `$body` with `$s` bound to the setup of whichever model `$scene` holds.
@@ -197,6 +219,7 @@ macro_rules! each {
             AnyScene::Pendulum($s) => $body,
             AnyScene::CentralForce($s) => $body,
             AnyScene::NBody($s) => $body,
+            AnyScene::ChargedParticles($s) => $body,
         }
     };
 }

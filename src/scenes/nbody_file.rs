@@ -46,24 +46,31 @@ pub struct BodyEntry {
     pub velocity: Spanned<Vec<Number>>,
 }
 
-/// The CSV column prefix of a body: its name in lower case, spaces as `_`.
-fn column(name: &str) -> String {
+/// The CSV column prefix of a body (or particle): its name in lower case, spaces as `_`.
+pub(super) fn column(name: &str) -> String {
     name.trim().to_lowercase().replace(' ', "_")
 }
 
-/// The name of body `k`, checked: not empty, usable in a CSV header, not taken.
-fn checked_name(src: &Source<'_>, k: usize, name: &Spanned<String>, taken: &[String]) -> Result<String, Error> {
+/// The name of entry `k` of the list `list` (`bodies`, `particles`), checked: not empty,
+/// usable in a CSV header, not taken.
+pub(super) fn checked_name(
+    src: &Source<'_>,
+    list: &str,
+    k: usize,
+    name: &Spanned<String>,
+    taken: &[String],
+) -> Result<String, Error> {
     let text = name.get_ref().trim();
     if text.is_empty() || text.chars().any(|c| c == ',' || c == '"' || c.is_control()) {
         return Err(src.error_at(
             name.span(),
-            format!("bodies[{k}].name must be a non-empty name without commas or quotes, got {text:?}"),
+            format!("{list}[{k}].name must be a non-empty name without commas or quotes, got {text:?}"),
         ));
     }
     if let Some(other) = taken.iter().position(|t| column(t) == column(text)) {
         return Err(src.error_at(
             name.span(),
-            format!("bodies[{k}].name \"{text}\" is already the name of bodies[{other}]"),
+            format!("{list}[{k}].name \"{text}\" is already the name of {list}[{other}]"),
         ));
     }
     Ok(text.to_string())
@@ -92,7 +99,7 @@ impl Scene for NBody<f64, DVector<f64>> {
         let (mut positions, mut velocities) = (Vec::new(), Vec::new());
         let mut dim = None;
         for (k, body) in bodies.get_ref().iter().enumerate() {
-            let name = checked_name(src, k, &body.name, &names)?;
+            let name = checked_name(src, "bodies", k, &body.name, &names)?;
             masses.push(src.positive(&format!("bodies[{k}].mass ({name})"), &body.mass)?);
             let q = coordinates(src, &format!("bodies[{k}].position ({name})"), &body.position)?;
             let v = coordinates(src, &format!("bodies[{k}].velocity ({name})"), &body.velocity)?;

@@ -1,12 +1,12 @@
 //! The Boris-Buneman method for charged particles, with the classic Cayley rotation or
 //! with the exact rotation angle.
 
-use super::{Counters, Stepper, Tolerances};
+use super::{Counters, ParticleMethod, Stepper, Tolerances};
 use crate::hamiltonian::halves_mut;
 use crate::magnetic::{cross, Charged, Lorentz};
 #[allow(unused_imports)]
 use crate::real::ops::*;
-use crate::{lit, Error, Flags, MethodInfo, State};
+use crate::{lit, Error, MethodInfo, State};
 
 /// How Boris turns the velocity over a step `h` (rotation vector `omega`, angle
 /// `|omega| h`).
@@ -34,7 +34,8 @@ pub enum BorisRotation {
 /// half-step velocity), and the velocity update of a pure magnetic field is the Cayley
 /// rotation of SCENES.md 6: `v+ = v- + w h/(1 + (w h/2)^2) (v- x e + (w h/2)(v- x e) x e)`.
 /// Explicit, symmetric, second order, one force evaluation per step (the last one is
-/// reused); it preserves phase-space volume but is not symplectic; in a pure magnetic
+/// reused); in a uniform field it preserves phase-space volume but is not symplectic (in a
+/// non-uniform one, this synchronized form does not keep the volume either); in a pure magnetic
 /// field it keeps `|v|` exactly for any `h`, and with crossed uniform fields it moves
 /// along the E x B drift exactly.
 ///
@@ -70,8 +71,12 @@ impl<S: State> Boris<S> {
     /// A stepper with buffers shaped like `y0 = (q, v)`, of length `6N`.
     pub fn new(rotation: BorisRotation, y0: &S) -> Result<Self, Error> {
         if y0.dim() == 0 || y0.dim() % 6 != 0 {
+            let method = match rotation {
+                BorisRotation::Cayley => ParticleMethod::Boris,
+                BorisRotation::ExactPhase => ParticleMethod::BorisExactPhase,
+            };
             return Err(Error::Unsupported {
-                name: "boris".into(),
+                name: method.name().into(),
                 reason: format!(
                     "it moves particles in 3-D: the state (q, v) needs 6 components per particle, not {}",
                     y0.dim()
@@ -85,13 +90,6 @@ impl<S: State> Boris<S> {
             fresh: false,
             counters: Counters::default(),
         })
-    }
-
-    fn name(&self) -> &'static str {
-        match self.rotation {
-            BorisRotation::Cayley => "boris",
-            BorisRotation::ExactPhase => "boris_exact_phase",
-        }
     }
 }
 
@@ -183,18 +181,9 @@ impl<S: State> Boris<S> {
 
 impl<L: Lorentz> Stepper<Charged<L>> for Boris<L::State> {
     fn info(&self) -> MethodInfo {
-        MethodInfo {
-            name: self.name().into(),
-            family: "charged-particle",
-            order: 2,
-            stages: 1,
-            embedded_order: None,
-            flags: Flags {
-                explicit: true,
-                fsal: true,
-                symplectic: false,
-                symmetric: true,
-            },
+        match self.rotation {
+            BorisRotation::Cayley => ParticleMethod::Boris.info(),
+            BorisRotation::ExactPhase => ParticleMethod::BorisExactPhase.info(),
         }
     }
 

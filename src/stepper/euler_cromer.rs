@@ -1,10 +1,10 @@
 //! Euler-Cromer for charged particles: each velocity component is updated with the
 //! components already updated, then the positions with the new velocities.
 
-use super::{Counters, Stepper, Tolerances};
+use super::{Counters, ParticleMethod, Stepper, Tolerances};
 use crate::hamiltonian::halves_mut;
 use crate::magnetic::{Charged, Lorentz};
-use crate::{Error, Flags, MethodInfo, State};
+use crate::{Error, MethodInfo, State};
 
 /// Euler-Cromer (semi-implicit Euler of the users' E x B study, SCENES.md 6):
 ///
@@ -62,17 +62,7 @@ impl<S: State> EulerCromer<S> {
 
 impl<L: Lorentz> Stepper<Charged<L>> for EulerCromer<L::State> {
     fn info(&self) -> MethodInfo {
-        MethodInfo {
-            name: "euler_cromer".into(),
-            family: "charged-particle",
-            order: 1,
-            stages: 1,
-            embedded_order: None,
-            flags: Flags {
-                explicit: true,
-                ..Flags::default()
-            },
-        }
+        ParticleMethod::EulerCromer.info()
     }
 
     fn error_order(&self) -> Option<usize> {
