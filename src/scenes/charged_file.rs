@@ -313,6 +313,18 @@ impl Scene for ChargedScene {
             SplittingChoice::Compiled(d) => d.requires_quadratic_kinetic,
             SplittingChoice::Runtime(s) => s.requires_quadratic_kinetic(),
         };
+        if !crate::magnetic::Lorentz::uniform(&self.0) {
+            // the drift freezes the field at the start of each drift (SCENES.md 5): first
+            // order, and not a flow, so no splitting or composition keeps its order here
+            return Err(Error::Unsupported {
+                name: method.name().to_string(),
+                reason: "the magnetic field of this scene is not uniform, and the splittings' drift (the gyration \
+                         in the field frozen at the start of the drift) is then only first-order accurate and not \
+                         an exact flow: every splitting and composition drops to order 1; use boris (order 2) \
+                         or a Runge-Kutta method such as rk4 or dop853"
+                    .into(),
+            });
+        }
         if rkn {
             return Err(Error::Unsupported {
                 name: method.name().to_string(),
