@@ -1,20 +1,30 @@
 #![allow(unsafe_code)] // the counting allocator below; the library itself forbids unsafe code
 //! Stepping a static state never allocates: 1000 RK4 steps allocate exactly as much as 1.
 //!
-//! A counting global allocator (this test binary only) counts every allocation.
+//! A counting global allocator (this test binary only) counts every allocation made by the
+//! calling thread (the test harness's own threads allocate at any time: a process-wide
+//! count made this test flaky on a loaded machine).
 
 use std::alloc::{GlobalAlloc, Layout, System};
-use std::sync::atomic::{AtomicUsize, Ordering};
+use std::cell::Cell;
 
 use stormer::{catalog::Rk4, Driver, ExplicitRk, Problem, Stepper};
 
 struct Counting;
 
-static ALLOCATIONS: AtomicUsize = AtomicUsize::new(0);
+thread_local! {
+    // const-initialized: reading it never allocates (no lazy initialization)
+    static ALLOCATIONS: Cell<usize> = const { Cell::new(0) };
+}
+
+fn allocations() -> usize {
+    ALLOCATIONS.with(Cell::get)
+}
 
 unsafe impl GlobalAlloc for Counting {
     unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
-        ALLOCATIONS.fetch_add(1, Ordering::SeqCst);
+        // `try_with`: the thread's slot may already be gone while it shuts down
+        let _ = ALLOCATIONS.try_with(|n| n.set(n.get() + 1));
         System.alloc(layout)
     }
     unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
@@ -40,7 +50,7 @@ fn allocations_for(steps: usize) -> usize {
     let y0 = nalgebra::SVector::<f64, 2>::new(0.5, 0.0);
     let mut stepper = ExplicitRk::<Rk4, _>::new(&y0);
     let (mut y, mut y_new) = (y0, y0);
-    let before = ALLOCATIONS.load(Ordering::SeqCst);
+    let before = allocations();
     for i in 0..steps {
         stepper
             .step(&Pendulum, i as f64 * 0.01, 0.01, &y, &mut y_new, None)
@@ -48,7 +58,7 @@ fn allocations_for(steps: usize) -> usize {
         Stepper::<Pendulum>::accept(&mut stepper);
         core::mem::swap(&mut y, &mut y_new);
     }
-    let after = ALLOCATIONS.load(Ordering::SeqCst);
+    let after = allocations();
     assert!(y.iter().all(|x| x.is_finite()));
     after - before
 }
@@ -56,13 +66,13 @@ fn allocations_for(steps: usize) -> usize {
 fn driver_allocations_for(steps: u64) -> usize {
     let y0 = nalgebra::SVector::<f64, 2>::new(0.5, 0.0);
     let mut stepper = ExplicitRk::<Rk4, _>::new(&y0);
-    let before = ALLOCATIONS.load(Ordering::SeqCst);
+    let before = allocations();
     // Recording only the start and the end: the loop itself must not allocate.
     let solution = Driver::fixed(0.01)
         .every(u64::MAX)
         .run(&Pendulum, &mut stepper, 0.0, &y0, steps as f64 * 0.01)
         .unwrap();
-    let after = ALLOCATIONS.load(Ordering::SeqCst);
+    let after = allocations();
     assert_eq!(solution.stats.steps, steps);
     after - before
 }

@@ -3,11 +3,11 @@
 //! allocate nothing on a static state, and as much as one step on the scene file's
 //! `DVector` state (the driver allocates its records, never per step).
 //!
-//! A counting global allocator (this test binary only) counts every allocation; one test
-//! function, so that no other test allocates concurrently.
+//! A counting global allocator (this test binary only) counts every allocation made by the
+//! calling thread (the test harness's threads allocate at any time).
 
 use std::alloc::{GlobalAlloc, Layout, System};
-use std::sync::atomic::{AtomicUsize, Ordering};
+use std::cell::Cell;
 
 use stormer::catalog::{TripleJump4, VelocityVerletKdk};
 use stormer::scenes::{self, AnyScene, NBody};
@@ -15,11 +15,18 @@ use stormer::{Driver, SplittingMethod, SplittingStepper, Stepper};
 
 struct Counting;
 
-static ALLOCATIONS: AtomicUsize = AtomicUsize::new(0);
+thread_local! {
+    // const-initialized: reading it never allocates
+    static ALLOCATIONS: Cell<usize> = const { Cell::new(0) };
+}
+
+fn allocations() -> usize {
+    ALLOCATIONS.with(Cell::get)
+}
 
 unsafe impl GlobalAlloc for Counting {
     unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
-        ALLOCATIONS.fetch_add(1, Ordering::SeqCst);
+        let _ = ALLOCATIONS.try_with(|n| n.set(n.get() + 1));
         System.alloc(layout)
     }
     unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
@@ -38,13 +45,13 @@ where
 {
     let mut stepper = SplittingStepper::<M, [f64; 24]>::new(y0).unwrap();
     let (mut y, mut y_new) = (*y0, *y0);
-    let before = ALLOCATIONS.load(Ordering::SeqCst);
+    let before = allocations();
     for i in 0..steps {
         stepper.step(nb, i as f64 * 10.0, 10.0, &y, &mut y_new, None).unwrap();
         stepper.accept();
         core::mem::swap(&mut y, &mut y_new);
     }
-    let after = ALLOCATIONS.load(Ordering::SeqCst);
+    let after = allocations();
     assert!(y.iter().all(|x| x.is_finite()));
     after - before
 }
@@ -61,12 +68,12 @@ fn n_body_steps_do_not_allocate() {
     // the file scene: the driver's records allocate, the steps do not
     let driver = |steps: u64| {
         let mut stepper = SplittingStepper::<TripleJump4, _>::new(&scene.y0).unwrap();
-        let before = ALLOCATIONS.load(Ordering::SeqCst);
+        let before = allocations();
         let sol = Driver::fixed(10.0)
             .every(u64::MAX)
             .run(&scene.model, &mut stepper, 0.0, &scene.y0, 10.0 * steps as f64)
             .unwrap();
-        let after = ALLOCATIONS.load(Ordering::SeqCst);
+        let after = allocations();
         assert_eq!(sol.stats.steps, steps);
         after - before
     };
