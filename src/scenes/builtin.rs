@@ -3,6 +3,8 @@
 
 use super::file::{model_name, parse_as, Source};
 use super::{AnyScene, CentralForce, DampedOscillator, Harmonic, NBody, Pendulum, Scene, MODELS};
+use super::{RestrictedThreeBody, SpinningBall};
+use crate::magnetic::Charged;
 use crate::Error;
 use nalgebra::DVector;
 use std::path::Path;
@@ -41,6 +43,14 @@ pub const BUILTIN: &[BuiltinScene] = &[
     BuiltinScene {
         name: "outer-solar-system",
         text: include_str!("../../scenes/outer-solar-system.toml"),
+    },
+    BuiltinScene {
+        name: "arenstorf",
+        text: include_str!("../../scenes/arenstorf.toml"),
+    },
+    BuiltinScene {
+        name: "free-kick",
+        text: include_str!("../../scenes/free-kick.toml"),
     },
 ];
 
@@ -116,6 +126,8 @@ pub fn parse(text: &str, origin: &str, name: &str) -> Result<AnyScene, Error> {
         Pendulum::MODEL => AnyScene::Pendulum(parse_as(&src, name)?),
         CentralForce::<f64, DVector<f64>>::MODEL => AnyScene::CentralForce(parse_as(&src, name)?),
         NBody::<f64, DVector<f64>>::MODEL => AnyScene::NBody(parse_as(&src, name)?),
+        Charged::<RestrictedThreeBody>::MODEL => AnyScene::RestrictedThreeBody(parse_as(&src, name)?),
+        SpinningBall::MODEL => AnyScene::SpinningBall(parse_as(&src, name)?),
         other => {
             return Err(src.error_at(
                 model.span(),
@@ -139,6 +151,8 @@ mod tests {
             ("kepler", "n-body"),
             ("kepler-e06", "central-force"),
             ("outer-solar-system", "n-body"),
+            ("arenstorf", "restricted-3-body"),
+            ("free-kick", "spinning-ball"),
         ];
         assert_eq!(BUILTIN.len(), models.len());
         for (s, (name, model)) in BUILTIN.iter().zip(models) {
