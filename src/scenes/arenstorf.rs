@@ -36,15 +36,15 @@ use serde::Deserialize;
 /// Runge-Kutta-Nystrom methods are refused (the velocity-dependent force is not a kick).
 ///
 /// ```
-/// use stormer::magnetic::{Charged, Lorentz};
+/// use stormer::magnetic::Lorentz;
 /// use stormer::scenes::RestrictedThreeBody;
 /// let earth_moon = RestrictedThreeBody::new(0.012277471);
 /// assert_eq!(earth_moon.omega(0, &[0.5, 0.0, 0.0]), [0.0, 0.0, -2.0]);
-/// // on the line of the primaries, the Moon's pull balances the Earth's and the
-/// // centrifugal force near the L1 point
+/// // at the L1 point, between the primaries, the Moon's pull balances the Earth's and
+/// // the centrifugal force
 /// let mut a = [0.0; 3];
-/// earth_moon.acceleration(0.0, &[0.8369, 0.0, 0.0], &mut a);
-/// assert!(a[0].abs() < 1e-3);
+/// earth_moon.acceleration(0.0, &[0.836293, 0.0, 0.0], &mut a);
+/// assert!(a[0].abs() < 1e-4 && a[1] == 0.0);
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct RestrictedThreeBody {
