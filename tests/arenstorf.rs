@@ -3,6 +3,9 @@
 //! closes the orbit within 1e-6 with DOP853 at tolerance 1e-10 and with the magnetic
 //! Verlet composed to order 6 at a fixed step.
 
+// The run ends on the scene's end time exactly.
+#![allow(clippy::float_cmp)]
+
 use stormer::magnetic::Charged;
 use stormer::scenes::{self, AnyScene, RestrictedThreeBody, Scene, Setup, SplittingChoice};
 use stormer::{registry, Driver, ImplicitOptions, Problem, Solution, StepControl, Stepper, Tolerances};

@@ -827,6 +827,7 @@ fn neptune_and_pluto_are_added_by_editing_the_scene_file() {
 }
 
 #[test]
+#[allow(clippy::excessive_precision)] // the digits as the issue gives them, read as f64
 fn arenstorf_closes_its_orbit_from_the_command_line() {
     let dir = workdir("arenstorf");
     let period = 17.0652165601579625588917206249f64;

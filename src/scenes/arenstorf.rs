@@ -213,6 +213,7 @@ mod tests {
     use crate::Problem;
 
     #[test]
+    #[allow(clippy::excessive_precision)] // the digits as the issue gives them, read as f64
     fn the_builtin_scene_is_hairers_orbit() {
         let AnyScene::RestrictedThreeBody(s) = load("arenstorf").unwrap() else {
             panic!("model")
