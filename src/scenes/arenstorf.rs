@@ -53,8 +53,9 @@ pub struct RestrictedThreeBody {
     /// `1 - mu`.
     mu1: f64,
     /// The period of the orbit a scene starts on, when it is a known periodic orbit
-    /// (`initial.period` in a scene file): the state is then known exactly at every whole
-    /// number of periods ([`Scene::exact`]), and the run summary reports the error there.
+    /// (`initial.period` in a scene file): the state is then known exactly after every
+    /// whole number of periods ([`Scene::exact`]), and the run summary reports the error
+    /// there.
     pub period: Option<f64>,
 }
 
@@ -133,15 +134,21 @@ pub struct ThreeBodyInitial {
     /// Velocity in the rotating frame, as many coordinates.
     pub v: toml::Spanned<Vec<Number>>,
     /// The period of the orbit, when it is a known periodic orbit: the state is then
-    /// known exactly at every multiple of it (the run summary reports the error there).
+    /// known exactly after every whole number of periods (the run summary reports the
+    /// error there).
     #[serde(default)]
     pub period: Option<Number>,
 }
 
-/// The whole periods in `t - t0`, if `t` is one (relative to the period, to `1e-10`).
+/// The number of whole periods in `t - t0`, if it is one to round-off (`1e-13` relative).
+///
+/// Strict on purpose: near the Moon the velocity changes by 300 per unit time, so a
+/// record `1e-10` before the period would differ from the start by `3e-8`. (A fixed-step
+/// run whose step divides the span only to `1e-9` ends at `t0 + n h`, not on `t_end`:
+/// its end is then not a known state and the summary reports no error.)
 fn whole_periods(period: f64, t0: f64, t: f64) -> Option<f64> {
     let n = ((t - t0) / period).round();
-    (((t - t0) - n * period).abs() <= 1e-10 * period.max(n.abs() * period)).then_some(n)
+    (((t - t0) - n * period).abs() <= 1e-13 * period.max(n.abs() * period)).then_some(n)
 }
 
 impl Scene for Charged<RestrictedThreeBody> {
@@ -194,10 +201,11 @@ impl Scene for Charged<RestrictedThreeBody> {
         q.chain(v).collect()
     }
 
-    /// The initial state again at every whole number of periods, when the file declares
-    /// the orbit periodic; unknown elsewhere.
+    /// The initial state again after every whole number of periods, when the file
+    /// declares the orbit periodic; unknown elsewhere. (Not at the start itself: a run
+    /// that ends short of a period reports no error, rather than the start's zero.)
     fn exact(&self, t0: f64, y0: &[f64; 6], t: f64) -> Option<[f64; 6]> {
-        whole_periods(self.0.period?, t0, t).map(|_| *y0)
+        whole_periods(self.0.period?, t0, t).filter(|&n| n != 0.0).map(|_| *y0)
     }
 
     fn splitting_stepper(&self, method: SplittingChoice<'_>, y0: &[f64; 6]) -> Result<Box<dyn Stepper<Self>>, Error> {
@@ -231,7 +239,11 @@ mod tests {
         assert_eq!(s.exact(s.run.t_end), Some(s.y0));
         assert_eq!(s.exact(3.0 * s.run.t_end), Some(s.y0));
         assert_eq!(s.exact(0.5 * s.run.t_end), None);
+        assert_eq!(s.exact(0.0), None);
+        assert_eq!(s.exact(-s.run.t_end), Some(s.y0));
         assert_eq!(s.exact(s.run.t_end + 1e-6), None);
+        assert_eq!(s.exact(s.run.t_end * (1.0 + 1e-12)), None);
+        assert_eq!(s.exact(s.run.t_end * (1.0 + 1e-15)), Some(s.y0));
     }
 
     #[test]
