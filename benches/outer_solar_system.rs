@@ -9,7 +9,8 @@
 //!   four-body force (all sizes known at compile time), in the operation order of the
 //!   generated code (same coefficients, same pair order, same sums);
 //! - **generated**: `SplittingStepper<M, [f64; 24]>` on `NBody<f64, [f64; 24]>` through the
-//!   `Stepper` interface (what the driver calls);
+//!   `Stepper` interface, stepping in place (`Stepper::step_in_place`, what the fixed-step
+//!   driver calls);
 //! - **driver**: the same stepper run by the library's `Driver` (fixed steps, a record at
 //!   the start and at the end), the path of the CLI;
 //! - **generated_flows_copy**: the macro's unrolled word (`M::flows`) without the
@@ -231,12 +232,20 @@ fn hand_jump_nbody(s: &Setup, c: &[f64; 7], steps: usize, h: f64, y0: &[f64; 24]
     join(&q, &p)
 }
 
-/// Any stepper through the `Stepper` interface, ping-ponging between two states (no swap).
+/// Any stepper through the `Stepper` interface: in place when it steps in place (as the
+/// fixed-step driver does), else ping-ponging between two states (no swap).
 fn with_stepper<P, St>(problem: &P, stepper: &mut St, steps: usize, h: f64, y0: &P::State) -> P::State
 where
     P: stormer::Problem<Scalar = f64>,
     St: Stepper<P> + ?Sized,
 {
+    if stepper.steps_in_place() {
+        let mut y = y0.clone();
+        for i in 0..steps {
+            let _ = stepper.step_in_place(problem, i as f64 * h, h, &mut y);
+        }
+        return y;
+    }
     let (mut a, mut b) = (y0.clone(), y0.clone());
     for i in 0..steps {
         let t = i as f64 * h;

@@ -226,6 +226,9 @@ impl<'a, T: Real, S: State<Scalar = T>> Driver<'a, T, S> {
         }
         let n = n as u64;
         let mut y = y0.clone();
+        if self.stop.is_none() && stepper.steps_in_place() {
+            return self.fixed_in_place(p, stepper, t0, &mut y, t_end, h, n, exact, out, stats);
+        }
         let mut y_new = y0.clone();
         let mut g_old = self.stop.as_ref().map(|g| g(t0, y0));
         for i in 0..n {
@@ -251,6 +254,51 @@ impl<'a, T: Real, S: State<Scalar = T>> Driver<'a, T, S> {
             };
             if (i + 1) % self.every == 0 || i + 1 == n {
                 out.record(t_next, &y, p.energy(t_next, &y))?;
+            }
+        }
+        Ok(None)
+    }
+
+    /// The fixed-step loop of a stepper that steps in place (no stop condition).
+    #[allow(clippy::too_many_arguments)]
+    fn fixed_in_place<P, St, R>(
+        &self,
+        p: &P,
+        stepper: &mut St,
+        t0: T,
+        y: &mut S,
+        t_end: T,
+        h: T,
+        n: u64,
+        exact: bool,
+        out: &mut R,
+        stats: &mut Stats,
+    ) -> Result<Option<StopEvent<T, S>>, Error>
+    where
+        P: Problem<Scalar = T, State = S>,
+        St: Stepper<P> + ?Sized,
+        R: Recorder<T, S> + ?Sized,
+    {
+        // a countdown, not `(i + 1) % every`: an integer division per step is measurable
+        let mut until_record = self.every;
+        for i in 0..n {
+            let t = t0 + lit::<T>(i as f64) * h;
+            let last = i + 1 == n;
+            let hi = if last && !exact { t_end - t } else { h };
+            stepper.step_in_place(p, t, hi, y)?;
+            if !y.is_finite() {
+                return Err(Error::NonFinite { t: to_f64(t), step: i });
+            }
+            stats.steps += 1;
+            until_record -= 1;
+            if until_record == 0 || last {
+                until_record = self.every;
+                let t_next = if last && !exact {
+                    t_end
+                } else {
+                    t0 + lit::<T>((i + 1) as f64) * h
+                };
+                out.record(t_next, y, p.energy(t_next, y))?;
             }
         }
         Ok(None)

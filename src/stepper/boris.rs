@@ -138,6 +138,49 @@ fn too_fast<T: crate::Real>(t: T) -> Error {
     )
 }
 
+impl<S: State> Boris<S> {
+    /// One step in place; `cached`: the acceleration buffer holds `a(t, q)`.
+    fn advance<L: Lorentz<State = S, Scalar = S::Scalar>>(
+        &mut self,
+        p: &Charged<L>,
+        t: L::Scalar,
+        h: L::Scalar,
+        y: &mut S,
+        cached: bool,
+    ) -> Result<(), Error> {
+        let (q, v) = halves_mut(y.as_mut_slice());
+        let (_, a) = halves_mut(self.work.as_mut_slice());
+        if !cached {
+            p.0.acceleration(t, q, a);
+            self.counters.evaluations += 1;
+        }
+        let half = lit::<L::Scalar>(0.5) * h;
+        let particles = q.len() / 3;
+        for k in 0..particles {
+            let w = half_turn(self.rotation, p.0.omega(k, q), h).ok_or_else(|| too_fast(t))?;
+            let (vk, ak) = (&mut v[3 * k..3 * k + 3], &a[3 * k..3 * k + 3]);
+            let turn = cross(&w, vk);
+            for i in 0..3 {
+                vk[i] += half * ak[i] + turn[i];
+            }
+        }
+        for (q, &v) in q.iter_mut().zip(v.iter()) {
+            *q += h * v;
+        }
+        p.0.acceleration(t + h, q, a);
+        self.counters.evaluations += 1;
+        for k in 0..particles {
+            let w = half_turn(self.rotation, p.0.omega(k, q), h).ok_or_else(|| too_fast(t))?;
+            let (vk, ak) = (&mut v[3 * k..3 * k + 3], &a[3 * k..3 * k + 3]);
+            for i in 0..3 {
+                vk[i] += half * ak[i];
+            }
+            solve_turn(&w, vk);
+        }
+        Ok(())
+    }
+}
+
 impl<L: Lorentz> Stepper<Charged<L>> for Boris<L::State> {
     fn info(&self) -> MethodInfo {
         MethodInfo {
@@ -171,37 +214,22 @@ impl<L: Lorentz> Stepper<Charged<L>> for Boris<L::State> {
         let cached = self.cached;
         self.cached = false;
         y_new.copy_from(y);
-        let (q, v) = halves_mut(y_new.as_mut_slice());
-        let (_, a) = halves_mut(self.work.as_mut_slice());
-        if !cached {
-            p.0.acceleration(t, q, a);
-            self.counters.evaluations += 1;
-        }
-        let half = lit::<L::Scalar>(0.5) * h;
-        let particles = q.len() / 3;
-        for k in 0..particles {
-            let w = half_turn(self.rotation, p.0.omega(k, q), h).ok_or_else(|| too_fast(t))?;
-            let (vk, ak) = (&mut v[3 * k..3 * k + 3], &a[3 * k..3 * k + 3]);
-            let turn = cross(&w, vk);
-            for i in 0..3 {
-                vk[i] += half * ak[i] + turn[i];
-            }
-        }
-        for (q, &v) in q.iter_mut().zip(v.iter()) {
-            *q += h * v;
-        }
-        p.0.acceleration(t + h, q, a);
-        self.counters.evaluations += 1;
-        for k in 0..particles {
-            let w = half_turn(self.rotation, p.0.omega(k, q), h).ok_or_else(|| too_fast(t))?;
-            let (vk, ak) = (&mut v[3 * k..3 * k + 3], &a[3 * k..3 * k + 3]);
-            for i in 0..3 {
-                vk[i] += half * ak[i];
-            }
-            solve_turn(&w, vk);
-        }
+        self.advance(p, t, h, y_new, cached)?;
         self.fresh = true;
         Ok(None)
+    }
+
+    fn steps_in_place(&self) -> bool {
+        true
+    }
+
+    fn step_in_place(&mut self, p: &Charged<L>, t: L::Scalar, h: L::Scalar, y: &mut L::State) -> Result<(), Error> {
+        let cached = self.cached;
+        self.cached = false;
+        self.advance(p, t, h, y, cached)?;
+        self.cached = true;
+        self.fresh = false;
+        Ok(())
     }
 
     fn accept(&mut self) {

@@ -66,6 +66,24 @@ pub trait Stepper<P: Problem> {
     /// The last step's `y_new` becomes the current state.
     fn accept(&mut self);
 
+    /// True when [`Stepper::step_in_place`] is implemented: the fixed-step driver then
+    /// steps the state in place (a splitting updates `q` and `p` where they are; copying
+    /// the state into `y_new` first and back after costs as much as the step itself on a
+    /// latency-bound chain).
+    fn steps_in_place(&self) -> bool {
+        false
+    }
+
+    /// One step of size `h` from `(t, y)` that overwrites `y` and is accepted at once
+    /// (fixed steps, no error estimate). Only called when [`Stepper::steps_in_place`] is
+    /// true; the default refuses.
+    fn step_in_place(&mut self, _p: &P, _t: P::Scalar, _h: P::Scalar, _y: &mut P::State) -> Result<(), Error> {
+        Err(Error::Unsupported {
+            name: self.info().name,
+            reason: "it does not step in place".into(),
+        })
+    }
+
     /// Forgets cached stage values (the state was changed from outside).
     fn reset(&mut self);
 
@@ -94,6 +112,13 @@ impl<P: Problem, St: Stepper<P> + ?Sized> Stepper<P> for Box<St> {
     }
     fn accept(&mut self) {
         (**self).accept()
+    }
+    fn steps_in_place(&self) -> bool {
+        (**self).steps_in_place()
+    }
+    #[inline]
+    fn step_in_place(&mut self, p: &P, t: P::Scalar, h: P::Scalar, y: &mut P::State) -> Result<(), Error> {
+        (**self).step_in_place(p, t, h, y)
     }
     fn reset(&mut self) {
         (**self).reset()

@@ -74,6 +74,29 @@ impl<S: State, C: Default> RuntimeSplitting<S, C> {
     }
 }
 
+impl<S: State, C> RuntimeSplitting<S, C> {
+    /// The word applied to `y` in place.
+    fn flows<P>(&mut self, p: &P, t: S::Scalar, h: S::Scalar, y: &mut S, cached: bool)
+    where
+        P: Splittable<Scalar = S::Scalar, State = S, FlowCache = C>,
+    {
+        let (q, mom) = halves_mut(y.as_mut_slice());
+        let (v, f) = halves_mut(self.work.as_mut_slice());
+        for (i, &(flow, coef, node)) in self.ops.iter().enumerate() {
+            match flow {
+                Flow::Drift => p.drift(t + node * h, coef * h, q, mom, v, &mut self.cache),
+                Flow::Kick => {
+                    if !(i == 0 && cached) {
+                        p.force(t + node * h, q, f);
+                        self.counters.evaluations += 1;
+                    }
+                    p.kick(coef * h, f, mom);
+                }
+            }
+        }
+    }
+}
+
 impl<P: Splittable> Stepper<P> for RuntimeSplitting<P::State, P::FlowCache> {
     fn info(&self) -> MethodInfo {
         self.info.clone()
@@ -95,22 +118,21 @@ impl<P: Splittable> Stepper<P> for RuntimeSplitting<P::State, P::FlowCache> {
         let cached = self.cached && self.fsal;
         self.cached = false;
         y_new.copy_from(y);
-        let (q, mom) = halves_mut(y_new.as_mut_slice());
-        let (v, f) = halves_mut(self.work.as_mut_slice());
-        for (i, &(flow, coef, node)) in self.ops.iter().enumerate() {
-            match flow {
-                Flow::Drift => p.drift(t + node * h, coef * h, q, mom, v, &mut self.cache),
-                Flow::Kick => {
-                    if !(i == 0 && cached) {
-                        p.force(t + node * h, q, f);
-                        self.counters.evaluations += 1;
-                    }
-                    p.kick(coef * h, f, mom);
-                }
-            }
-        }
+        self.flows(p, t, h, y_new, cached);
         self.fresh = self.fsal;
         Ok(None)
+    }
+
+    fn steps_in_place(&self) -> bool {
+        true
+    }
+
+    fn step_in_place(&mut self, p: &P, t: P::Scalar, h: P::Scalar, y: &mut P::State) -> Result<(), Error> {
+        let cached = self.cached && self.fsal;
+        self.flows(p, t, h, y, cached);
+        self.cached = self.fsal;
+        self.fresh = false;
+        Ok(())
     }
 
     fn accept(&mut self) {

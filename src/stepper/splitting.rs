@@ -84,6 +84,19 @@ pub(crate) fn check_phase_space<S: State>(method: &str, y0: &S) -> Result<(), Er
     }
 }
 
+impl<M: SplittingMethod, S: State, C> SplittingStepper<M, S, C> {
+    /// The method's word applied to `y` in place.
+    #[inline(always)]
+    fn flows<P>(&mut self, p: &P, t: S::Scalar, h: S::Scalar, y: &mut S, cached: bool)
+    where
+        P: crate::Splittable<Scalar = S::Scalar, State = S, FlowCache = C>,
+    {
+        let (q, mom) = halves_mut(y.as_mut_slice());
+        let (v, f) = halves_mut(self.work.as_mut_slice());
+        self.counters.evaluations += M::flows(&self.co, p, t, h, q, mom, v, f, &mut self.cache, cached);
+    }
+}
+
 impl<M, P> Stepper<P> for SplittingStepper<M, P::State, P::FlowCache>
 where
     M: SplittingMethod,
@@ -111,11 +124,22 @@ where
         let cached = self.cached && M::DATA.flags.fsal;
         self.cached = false;
         y_new.copy_from(y);
-        let (q, mom) = halves_mut(y_new.as_mut_slice());
-        let (v, f) = halves_mut(self.work.as_mut_slice());
-        self.counters.evaluations += M::flows(&self.co, p, t, h, q, mom, v, f, &mut self.cache, cached);
+        self.flows(p, t, h, y_new, cached);
         self.fresh = M::DATA.flags.fsal;
         Ok(None)
+    }
+
+    fn steps_in_place(&self) -> bool {
+        true
+    }
+
+    #[inline(always)]
+    fn step_in_place(&mut self, p: &P, t: P::Scalar, h: P::Scalar, y: &mut P::State) -> Result<(), Error> {
+        let cached = self.cached && M::DATA.flags.fsal;
+        self.flows(p, t, h, y, cached);
+        self.cached = M::DATA.flags.fsal;
+        self.fresh = false;
+        Ok(())
     }
 
     fn accept(&mut self) {
