@@ -1055,3 +1055,105 @@ fn the_cyclotron_follows_its_exact_helix() {
         assert!(summary_number(&summary, "max |dE/E0|") < 1e-14, "dt {dt}: {summary}");
     }
 }
+
+#[test]
+#[allow(clippy::excessive_precision)] // the digits as the issue gives them, read as f64
+fn arenstorf_closes_its_orbit_from_the_command_line() {
+    let dir = workdir("arenstorf");
+    let period = 17.0652165601579625588917206249f64;
+    let start = [0.994, 0.0, 0.0, 0.0, -2.00158510637908252240537862224, 0.0];
+    // (arguments, output file, closure measured)
+    let runs: [(&[&str], &str, f64); 2] = [
+        (
+            &["run", "arenstorf", "--method", "dop853", "--rtol", "1e-10"],
+            "out/arenstorf-dop853.csv",
+            8.6e-7,
+        ),
+        (
+            &["run", "arenstorf", "--method", "kahan_li6", "--dt", "2e-4"],
+            "out/arenstorf-kahan_li6.csv",
+            5.4e-8,
+        ),
+    ];
+    for (args, file, measured) in runs {
+        let out = stormer(&dir, args);
+        assert_ok(&out);
+        let summary = stderr(&out);
+        // the summary's error is the distance from the start after the period
+        let closure = summary_number(&summary, "max error vs exact");
+        assert!(closure < 1e-6, "{summary}");
+        assert!((closure / measured - 1.0).abs() < 0.05, "{summary}");
+        assert!(summary_number(&summary, "max |dE/E0|") < 1e-9, "{summary}");
+        let (header, rows) = read_csv(&dir.join(file));
+        assert_eq!(header, ["t", "x", "y", "z", "vx", "vy", "vz", "energy"]);
+        let last = rows.last().unwrap();
+        assert_eq!(last[0], period);
+        assert!((1..7).all(|i| (last[i] - start[i - 1]).abs() < 1e-6), "{last:?}");
+    }
+    // the scene's own run is the fixed-step composition
+    let out = stormer(&dir, &["run", "arenstorf"]);
+    assert_ok(&out);
+    assert!(
+        stderr(&out).contains("kahan_li6 on arenstorf: 85327 steps"),
+        "{}",
+        stderr(&out)
+    );
+    // the Coriolis force is not a kick: RKN methods are refused
+    assert_error(
+        &stormer(&dir, &["run", "arenstorf", "--method", "blanes_moan_srkn11b"]),
+        "quadratic in p",
+    );
+}
+
+/// The landing `(t, x)` reported in a free-kick summary.
+fn landing(summary: &str) -> (f64, f64) {
+    (
+        summary_number(summary, "the ball lands at t ="),
+        summary_number(summary, "s, x ="),
+    )
+}
+
+#[test]
+fn the_free_kick_stops_when_the_ball_lands() {
+    let dir = workdir("free-kick");
+    // the users' two steps with rk4, and an adaptive dop853 reference
+    let coarse = stormer(&dir, &["run", "free-kick", "--out", "coarse.csv"]);
+    let fine = stormer(&dir, &["run", "free-kick", "--dt", "0.0125", "--out", "fine.csv"]);
+    let reference = stormer(&dir, &["run", "free-kick", "--method", "dop853", "--rtol", "1e-12"]);
+    for out in [&coarse, &fine, &reference] {
+        assert_ok(out);
+    }
+    assert!(
+        stderr(&coarse).starts_with("rk4 on free-kick: 13 steps"),
+        "{}",
+        stderr(&coarse)
+    );
+    let (t_ref, x_ref) = landing(&stderr(&reference));
+    assert!((t_ref - 1.239003388).abs() < 2e-9 && (x_ref - 17.679127633).abs() < 2e-9);
+    let (t1, x1) = landing(&stderr(&coarse));
+    let (t2, x2) = landing(&stderr(&fine));
+    // measured errors: 3.3e-7 s and 2.6e-6 m at dt = 0.1; 1e-10 and 6e-10 at 0.0125
+    assert!((t1 - t_ref).abs() < 1e-6 && (x1 - x_ref).abs() < 1e-5, "{t1} {x1}");
+    assert!((t2 - t_ref).abs() < 2e-9 && (x2 - x_ref).abs() < 2e-9, "{t2} {x2}");
+    // the landing is the last record, on the ground; the energy only decreases
+    let (header, rows) = read_csv(&dir.join("coarse.csv"));
+    assert_eq!(header, ["t", "x", "z", "vx", "vz", "energy"]);
+    assert_eq!(rows.len(), 14);
+    let last = rows.last().unwrap();
+    assert!((last[0] - t1).abs() < 1e-9 && last[2].abs() < 1e-12, "{last:?}");
+    assert!(rows.windows(2).all(|w| w[1][5] < w[0][5]));
+    // a run that ends in the air says so
+    let short = stormer(&dir, &["run", "free-kick", "--t-end", "0.5"]);
+    assert_ok(&short);
+    assert!(
+        stderr(&short).contains("no landing before t = 0.5"),
+        "{}",
+        stderr(&short)
+    );
+    // drag: no splitting, with the reason and what to use
+    for method in ["velocity_verlet_kdk", "kahan_li6"] {
+        let out = stormer(&dir, &["run", "free-kick", "--method", method]);
+        assert_error(&out, "it has air drag");
+        assert_error(&out, "use a Runge-Kutta method instead, such as rk4 or dop853");
+    }
+}

@@ -514,7 +514,11 @@ mod scenes {
         }
         // the scene refuses the splittings, saying why
         let verlet = registry::find_splitting("velocity_verlet_kdk").unwrap();
-        let refused = s.model.splitting_stepper(SplittingChoice::Compiled(verlet), &s.y0).err().unwrap();
+        let refused = s
+            .model
+            .splitting_stepper(SplittingChoice::Compiled(verlet), &s.y0)
+            .err()
+            .unwrap();
         assert!(refused.to_string().contains("not uniform"), "{refused}");
         // and the library (which allows them) shows why: order 1. If this fails, the drift
         // became a second-order flow in non-uniform fields: lift the scene's refusal and
@@ -522,7 +526,9 @@ mod scenes {
         for name in ["velocity_verlet_kdk", "kahan_li6"] {
             let run = |n: usize| {
                 let mut st = registry::splitting_stepper::<ChargedScene>(name, &s.y0).unwrap();
-                let sol = Driver::fixed(t_end / n as f64).every(u64::MAX).run(&s.model, &mut st, 0.0, &s.y0, t_end);
+                let sol = Driver::fixed(t_end / n as f64)
+                    .every(u64::MAX)
+                    .run(&s.model, &mut st, 0.0, &s.y0, t_end);
                 distance(sol.unwrap().y.last().unwrap().as_slice(), &reference)
             };
             let measured = (run(128) / run(256)).log2();

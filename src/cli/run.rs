@@ -146,13 +146,18 @@ impl SceneVisitor for Runner<'_> {
         let path = args.out.clone().unwrap_or_else(|| {
             PathBuf::from("out").join(format!("{}-{}.csv", file_safe(&setup.name), file_safe(&method.label())))
         });
-        let driver = Driver::with(control).every(every);
+        let mut driver = Driver::with(control).every(every);
+        let stop = setup.model.stop();
+        if let Some(stop) = stop {
+            let model = &setup.model;
+            driver = driver.stop_when(move |t, y| (stop.g)(model, t, y));
+        }
         let mut csv = CsvRecorder::create(&path, &setup)?;
         let result = driver.run_into(&setup.model, &mut stepper, t0, &setup.y0, t_end, &mut csv);
         let flushed = csv.flush();
-        let (stats, error) = match result {
-            Ok((stats, _)) => (stats, None),
-            Err((stats, e)) => (stats, Some(e)),
+        let (stats, stopped, error) = match result {
+            Ok((stats, stopped)) => (stats, stopped, None),
+            Err((stats, e)) => (stats, None, Some(e)),
         };
         if let Some(e) = error {
             let last = csv
@@ -166,12 +171,18 @@ impl SceneVisitor for Runner<'_> {
             return Err(anyhow!("{e}; stopped after {} steps{kept}", stats.steps));
         }
         flushed?;
+        // what the scene's stop condition found: where the run stopped, or that it did not
+        let stop = stop.map(|stop| match &stopped {
+            Some(event) => (stop.report)(&setup.model, event.t, &event.y),
+            None => format!("no {} before t = {t_end}", stop.event),
+        });
         let summary = summary(
             &format!("{} on {}", method.label(), setup.name),
             &stats,
             adaptive,
             &csv,
             &path,
+            stop,
         );
         // The summary is information, not output: a closed stderr is not an error.
         let _ = writeln!(std::io::stderr(), "{summary}");
@@ -180,7 +191,14 @@ impl SceneVisitor for Runner<'_> {
 }
 
 /// The one-line summary of a finished run.
-fn summary<S: Scene>(what: &str, stats: &Stats, adaptive: bool, csv: &CsvRecorder<'_, S>, path: &Path) -> String {
+fn summary<S: Scene>(
+    what: &str,
+    stats: &Stats,
+    adaptive: bool,
+    csv: &CsvRecorder<'_, S>,
+    path: &Path,
+    stop: Option<String>,
+) -> String {
     let mut parts = vec![format!("{what}: {} steps", stats.steps)];
     if adaptive {
         parts.push(format!("{} rejected", stats.rejected));
@@ -200,6 +218,7 @@ fn summary<S: Scene>(what: &str, stats: &Stats, adaptive: bool, csv: &CsvRecorde
     if let Some(e) = csv.max_error {
         parts.push(format!("max error vs exact {e:.3e}"));
     }
+    parts.extend(stop);
     parts.push(format!("{} records in {}", csv.records, path.display()));
     parts.join(", ")
 }

@@ -3,6 +3,8 @@
 
 use super::file::{model_name, parse_as, Source};
 use super::{AnyScene, CentralForce, ChargedScene, DampedOscillator, Harmonic, NBody, Pendulum, Scene, MODELS};
+use super::{RestrictedThreeBody, SpinningBall};
+use crate::magnetic::Charged;
 use crate::Error;
 use nalgebra::DVector;
 use std::path::Path;
@@ -61,6 +63,14 @@ pub const BUILTIN: &[BuiltinScene] = &[
     BuiltinScene {
         name: "magnetic-bottle",
         text: include_str!("../../scenes/magnetic-bottle.toml"),
+    },
+    BuiltinScene {
+        name: "arenstorf",
+        text: include_str!("../../scenes/arenstorf.toml"),
+    },
+    BuiltinScene {
+        name: "free-kick",
+        text: include_str!("../../scenes/free-kick.toml"),
     },
 ];
 
@@ -137,6 +147,8 @@ pub fn parse(text: &str, origin: &str, name: &str) -> Result<AnyScene, Error> {
         CentralForce::<f64, DVector<f64>>::MODEL => AnyScene::CentralForce(parse_as(&src, name)?),
         NBody::<f64, DVector<f64>>::MODEL => AnyScene::NBody(parse_as(&src, name)?),
         ChargedScene::MODEL => AnyScene::ChargedParticles(parse_as(&src, name)?),
+        Charged::<RestrictedThreeBody>::MODEL => AnyScene::RestrictedThreeBody(parse_as(&src, name)?),
+        SpinningBall::MODEL => AnyScene::SpinningBall(parse_as(&src, name)?),
         other => {
             return Err(src.error_at(
                 model.span(),
@@ -165,6 +177,8 @@ mod tests {
             ("exb-drift", "charged-particles"),
             ("penning-trap", "charged-particles"),
             ("magnetic-bottle", "charged-particles"),
+            ("arenstorf", "restricted-3-body"),
+            ("free-kick", "spinning-ball"),
         ];
         assert_eq!(BUILTIN.len(), models.len());
         for (s, (name, model)) in BUILTIN.iter().zip(models) {

@@ -41,12 +41,14 @@
 //! assert_eq!(pendulum.visit(Components), ["theta", "omega"]);
 //! ```
 
+mod arenstorf;
 mod builtin;
 mod central_force;
 mod charged;
 mod charged_file;
 mod damped;
 mod file;
+mod free_kick;
 mod harmonic;
 mod nbody;
 mod nbody_file;
@@ -54,12 +56,14 @@ mod orbit;
 mod pendulum;
 mod splitting;
 
+pub use arenstorf::{RestrictedThreeBody, ThreeBodyInitial, ThreeBodyParameters};
 pub use builtin::{builtin, load, parse, BuiltinScene, BUILTIN};
 pub use central_force::{CentralForce, CentralForceInitial, CentralForceParameters};
 pub use charged::{ChargedParticles, MagneticField};
 pub use charged_file::{BottleTable, ChargedParameters, ChargedScene, ParticleEntry};
 pub use damped::{DampedOscillator, DampedParameters};
 pub use file::{Number, RunSettings, Source};
+pub use free_kick::{KickInitial, SpinningBall, SpinningBallParameters};
 pub use harmonic::{Harmonic, HarmonicParameters, OscillatorInitial};
 pub use nbody::NBody;
 pub use nbody_file::{BodyEntry, GravityParameters};
@@ -67,6 +71,7 @@ pub use orbit::{eccentric_anomaly, Orbit};
 pub use pendulum::{NoParameters, Pendulum, PendulumInitial, PENDULUM_PERIOD_45_DEGREES};
 pub use splitting::{general_splitting, not_splittable, quadratic_splitting, SplittingChoice};
 
+use crate::magnetic::Charged;
 use crate::stepper::ParticleMethod;
 use crate::{Error, Problem, Stepper};
 use nalgebra::DVector;
@@ -111,6 +116,13 @@ pub trait Scene: Problem<Scalar = f64> + Sized + 'static {
         None
     }
 
+    /// The condition that ends the model's runs before `t_end`, if it has one (a ball
+    /// landing): the run stops where [`Stop::g`] changes sign, located within the step
+    /// ([`Driver::stop_when`](crate::Driver::stop_when)).
+    fn stop(&self) -> Option<Stop<Self>> {
+        None
+    }
+
     /// A stepper for the splitting or composition `method` on this model, or the sentence
     /// saying why the model does not admit one and what to use instead.
     ///
@@ -142,6 +154,35 @@ pub trait Scene: Problem<Scalar = f64> + Sized + 'static {
                 Self::MODEL
             ),
         })
+    }
+}
+
+/// A stop condition of a scene's model ([`Scene::stop`]): where the run ends, and what
+/// the run summary says about it.
+pub struct Stop<S: Scene> {
+    /// The event's name, for when it does not happen (`"landing"`: "no landing before
+    /// t = 10").
+    pub event: &'static str,
+    /// The event function: the run stops where `g(model, t, y)` changes sign.
+    pub g: fn(&S, f64, &S::State) -> f64,
+    /// The summary's sentence about the state where the run stopped ("the ball lands at
+    /// t = 1.28 s, 21.9 m away").
+    pub report: fn(&S, f64, &S::State) -> String,
+}
+
+impl<S: Scene> Clone for Stop<S> {
+    fn clone(&self) -> Self {
+        *self
+    }
+}
+
+impl<S: Scene> Copy for Stop<S> {}
+
+impl<S: Scene> core::fmt::Debug for Stop<S> {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("Stop")
+            .field("event", &self.event)
+            .finish_non_exhaustive()
     }
 }
 
@@ -198,6 +239,11 @@ pub enum AnyScene {
     NBody(Setup<NBody<f64, DVector<f64>>>),
     /// `model = "charged-particles"`: charged particles in electric and magnetic fields.
     ChargedParticles(Setup<ChargedScene>),
+    /// `model = "restricted-3-body"`: the rotating frame's Coriolis force as a uniform
+    /// field (the `arenstorf` scene).
+    RestrictedThreeBody(Setup<Charged<RestrictedThreeBody>>),
+    /// `model = "spinning-ball"`: gravity, drag and the Magnus force (the `free-kick` scene).
+    SpinningBall(Setup<SpinningBall>),
 }
 
 /// The model names a scene file can give, in the order of [`AnyScene`].
@@ -208,6 +254,8 @@ pub const MODELS: &[&str] = &[
     CentralForce::<f64, DVector<f64>>::MODEL,
     NBody::<f64, DVector<f64>>::MODEL,
     ChargedScene::MODEL,
+    Charged::<RestrictedThreeBody>::MODEL,
+    SpinningBall::MODEL,
 ];
 
 /// `$body` with `$s` bound to the setup of whichever model `$scene` holds.
@@ -220,6 +268,8 @@ macro_rules! each {
             AnyScene::CentralForce($s) => $body,
             AnyScene::NBody($s) => $body,
             AnyScene::ChargedParticles($s) => $body,
+            AnyScene::RestrictedThreeBody($s) => $body,
+            AnyScene::SpinningBall($s) => $body,
         }
     };
 }
