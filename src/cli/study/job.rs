@@ -151,7 +151,7 @@ pub struct Reference {
     pub info: ReferenceInfo,
 }
 
-const RECIPE: &str = "dop853, rtol = atol = 1e-14; uncertainty = max difference from rtol = atol = 1e-12";
+const RECIPE: &str = "dop853, rtol = atol = 1e-14; uncertainty = max difference from rtol = atol = 1e-13";
 const REFERENCE_FORMAT: &str = "stormer-reference/1";
 
 #[derive(Debug, Serialize, Deserialize)]
@@ -243,7 +243,7 @@ impl SceneVisitor for ReferenceRunner {
             Ok(last.last)
         };
         let fine = run(1e-14)?;
-        let coarse = run(1e-12)?;
+        let coarse = run(1e-13)?;
         Ok((fine.clone(), max_difference(&fine, &coarse)))
     }
 }
