@@ -100,7 +100,10 @@ impl SceneVisitor for Planner<'_> {
         let t0 = setup.run.t0;
         let t_end = self.t_end.unwrap_or(setup.run.t_end);
         if t_end == t0 {
-            return Err(Error::invalid("--t-end", format!("must differ from the start time {t0}")));
+            return Err(Error::invalid(
+                "--t-end",
+                format!("must differ from the start time {t0}"),
+            ));
         }
         let mut methods: Vec<MethodEntry> = Vec::new();
         for given in self.methods {
@@ -238,7 +241,14 @@ impl SceneVisitor for ReferenceRunner {
             let mut last = Measure::default();
             Driver::adaptive(Tolerances::new(tol, tol))
                 .every(u64::MAX)
-                .run_into(&setup.model, &mut stepper, setup.run.t0, &setup.y0, self.t_end, &mut last)
+                .run_into(
+                    &setup.model,
+                    &mut stepper,
+                    setup.run.t0,
+                    &setup.y0,
+                    self.t_end,
+                    &mut last,
+                )
                 .map_err(|(_, e)| e)?;
             Ok(last.last)
         };

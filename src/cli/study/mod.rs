@@ -257,7 +257,10 @@ fn check_common(c: &CommonArgs) -> Result<(), Error> {
         return Err(Error::invalid("--runs", "must be >= 1, got 0"));
     }
     if !(c.min_time.is_finite() && c.min_time >= 0.0) {
-        return Err(Error::invalid("--min-time", format!("must be a number >= 0, got {}", c.min_time)));
+        return Err(Error::invalid(
+            "--min-time",
+            format!("must be a number >= 0, got {}", c.min_time),
+        ));
     }
     if c.jobs == Some(0) {
         return Err(Error::invalid("--jobs", "must be >= 1, got 0"));
@@ -278,7 +281,10 @@ pub fn compare(args: &CompareArgs) -> anyhow::Result<()> {
     positive_list("--dt", &args.dt)?;
     positive_list("--tolerances", &args.tolerances)?;
     if args.dt.is_empty() && args.tolerances.is_empty() {
-        bail!(Error::invalid("--dt/--tolerances", "give step sizes (--dt), tolerances (--tolerances) or both"));
+        bail!(Error::invalid(
+            "--dt/--tolerances",
+            "give step sizes (--dt), tolerances (--tolerances) or both"
+        ));
     }
     let scene = SceneText::load(&args.scene)?;
     let plan = job::plan(&scene, &args.methods, args.common.t_end)?;
@@ -383,8 +389,12 @@ pub fn merge(args: &MergeArgs) -> anyhow::Result<()> {
     let mut parts = Vec::new();
     for path in &args.parts {
         let text = std::fs::read_to_string(path).with_context(|| format!("cannot read {}", path.display()))?;
-        let part: Part = serde_json::from_str(&text)
-            .map_err(|e| anyhow!("{} is not a partial table of `compare --shard` or `scan --shard`: {e}", path.display()))?;
+        let part: Part = serde_json::from_str(&text).map_err(|e| {
+            anyhow!(
+                "{} is not a partial table of `compare --shard` or `scan --shard`: {e}",
+                path.display()
+            )
+        })?;
         if part.format != FORMAT {
             bail!("{}: format '{}', expected '{FORMAT}'", path.display(), part.format);
         }
@@ -421,16 +431,26 @@ fn join(parts: Vec<(&PathBuf, Part)>) -> anyhow::Result<Part> {
             bail!("{}: shard {i}/{n} is out of range", path.display());
         }
         if let Some(other) = seen[i - 1] {
-            bail!("shard {i}/{n} is given twice: {} and {}", other.display(), path.display());
+            bail!(
+                "shard {i}/{n} is given twice: {} and {}",
+                other.display(),
+                path.display()
+            );
         }
         seen[i - 1] = Some(path);
         let expected = shard_jobs(part.study.jobs.len(), part.shard);
         let got: Vec<usize> = part.rows.iter().map(|r| r.job).collect();
         if got != expected {
-            bail!("{}: its rows are not those of shard {i}/{n} of the study", path.display());
+            bail!(
+                "{}: its rows are not those of shard {i}/{n} of the study",
+                path.display()
+            );
         }
     }
-    let missing: Vec<String> = (1..=n).filter(|i| seen[i - 1].is_none()).map(|i| format!("{i}/{n}")).collect();
+    let missing: Vec<String> = (1..=n)
+        .filter(|i| seen[i - 1].is_none())
+        .map(|i| format!("{i}/{n}"))
+        .collect();
     if !missing.is_empty() {
         bail!("shard {} missing: the study has {n} parts", missing.join(", "));
     }

@@ -195,7 +195,10 @@ fn table(study: &StudyId, rows: &[Row], fits: Option<&[Fit]>) -> Table {
     if failures {
         headers.push("note");
     }
-    let right = headers.iter().map(|h| !matches!(*h, "method" | "note" | "in fit")).collect();
+    let right = headers
+        .iter()
+        .map(|h| !matches!(*h, "method" | "note" | "in fit"))
+        .collect();
     let locals = local_orders(study, rows);
     let body = rows
         .iter()
@@ -227,7 +230,11 @@ fn table(study: &StudyId, rows: &[Row], fits: Option<&[Fit]>) -> Table {
             cells
         })
         .collect();
-    Table { headers, right, rows: body }
+    Table {
+        headers,
+        right,
+        rows: body,
+    }
 }
 
 fn fit_table(study: &StudyId, fits: &[Fit]) -> Table {
@@ -343,7 +350,12 @@ fn csv(study: &StudyId, rows: &[Row], fits: Option<&[Fit]>) -> String {
 }
 
 /// The lines of a compare diagram: one per method (and one more for its adaptive runs).
-fn compare_series(study: &StudyId, rows: &[Row], x: impl Fn(&Row) -> Option<f64>, y: impl Fn(&Row) -> Option<f64>) -> Vec<Series> {
+fn compare_series(
+    study: &StudyId,
+    rows: &[Row],
+    x: impl Fn(&Row) -> Option<f64>,
+    y: impl Fn(&Row) -> Option<f64>,
+) -> Vec<Series> {
     let mut series = Vec::new();
     for (k, m) in study.methods.iter().enumerate() {
         for adaptive in [false, true] {
@@ -467,7 +479,10 @@ pub fn write(part: &Part, out: &Path) -> anyhow::Result<()> {
         md += &fit_table(s, f).markdown();
     }
     for svg in &svgs {
-        let name = svg.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+        let name = svg
+            .file_name()
+            .map(|n| n.to_string_lossy().into_owned())
+            .unwrap_or_default();
         let _ = writeln!(md, "\n![{name}]({name})");
     }
     let md_path = out.join(format!("{prefix}.md"));
@@ -510,7 +525,10 @@ mod tests {
 
     #[test]
     fn slope_of_a_power_law() {
-        let points: Vec<(f64, f64)> = [10.0, 20.0, 40.0, 80.0].iter().map(|&n: &f64| (n, 3.0 * n.powi(-4))).collect();
+        let points: Vec<(f64, f64)> = [10.0, 20.0, 40.0, 80.0]
+            .iter()
+            .map(|&n: &f64| (n, 3.0 * n.powi(-4)))
+            .collect();
         assert!((slope(&points).unwrap() + 4.0).abs() < 1e-12);
         assert_eq!(slope(&points[..1]), None);
         assert_eq!(slope(&[(10.0, 1.0), (10.0, 2.0)]), None);
