@@ -99,7 +99,7 @@ impl SceneVisitor for Planner<'_> {
     fn visit<S: Scene>(self, setup: Setup<S>) -> Result<Plan, Error> {
         let t0 = setup.run.t0;
         let t_end = self.t_end.unwrap_or(setup.run.t_end);
-        if t_end == t0 {
+        if t_end - t0 == 0.0 {
             return Err(Error::invalid(
                 "--t-end",
                 format!("must differ from the start time {t0}"),

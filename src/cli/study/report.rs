@@ -63,16 +63,16 @@ pub fn fits(study: &StudyId, rows: &[Row]) -> Vec<Fit> {
 
 /// The order observed between each scan row and the previous row of the same method.
 fn local_orders(study: &StudyId, rows: &[Row]) -> Vec<Option<f64>> {
-    let mut previous: Vec<Option<(f64, f64)>> = vec![None; study.methods.len()];
+    let mut previous: Vec<Option<(u64, f64)>> = vec![None; study.methods.len()];
     rows.iter()
         .map(|r| {
             let k = study.jobs[r.job].method;
             let here = r
                 .error
                 .filter(|e| e.is_finite() && *e > 0.0)
-                .map(|e| (steps_of(study, r) as f64, e));
+                .map(|e| (steps_of(study, r), e));
             let local = match (previous[k], here) {
-                (Some((n1, e1)), Some((n2, e2))) if n1 != n2 => Some(-(e2 / e1).ln() / (n2 / n1).ln()),
+                (Some((n1, e1)), Some((n2, e2))) if n1 != n2 => Some(-(e2 / e1).ln() / (n2 as f64 / n1 as f64).ln()),
                 _ => None,
             };
             previous[k] = here;
