@@ -1157,3 +1157,432 @@ fn the_free_kick_stops_when_the_ball_lands() {
         assert_error(&out, "use a Runge-Kutta method instead, such as rk4 or dop853");
     }
 }
+
+// ---- compare, scan, merge (issue 5) ----
+
+/// Quick timings: one run each, in the tests (speed is measured in benchmarks, not tests).
+const QUICK: &[&str] = &["--runs", "1", "--min-time", "0"];
+
+fn with_quick<'a>(args: &[&'a str]) -> Vec<&'a str> {
+    args.iter().chain(QUICK).copied().collect()
+}
+
+/// The CSV as (header, rows of text cells).
+fn read_table(path: &Path) -> (Vec<String>, Vec<Vec<String>>) {
+    let text = std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    let mut lines = text.lines();
+    let header = lines.next().unwrap().split(',').map(String::from).collect();
+    let rows = lines.map(|l| l.split(',').map(String::from).collect()).collect();
+    (header, rows)
+}
+
+fn column(header: &[String], name: &str) -> usize {
+    header
+        .iter()
+        .position(|h| h == name)
+        .unwrap_or_else(|| panic!("no column {name} in {header:?}"))
+}
+
+/// An SVG diagram with its axis labels and a legend naming `names`.
+fn assert_diagram(path: &Path, labels: &[&str], names: &[&str]) {
+    let svg = std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    assert!(svg.starts_with("<svg"), "{}", path.display());
+    for needle in labels.iter().chain(names) {
+        assert!(svg.contains(needle), "{} lacks {needle:?}", path.display());
+    }
+    // the legend: a framed box holding one entry per line
+    assert!(svg.matches("<polyline").count() >= names.len(), "{}", path.display());
+}
+
+#[test]
+fn compare_runs_on_every_kind_of_scene() {
+    let dir = workdir("compare-scenes");
+    let cases: &[(&str, &str, &str, &str, &str)] = &[
+        // scene, methods, steps, t_end, what the errors are measured against
+        (
+            "pendulum",
+            "rk4,velocity_verlet_kdk,dop853",
+            "0.1,0.05",
+            "10",
+            "reference",
+        ),
+        (
+            "kepler-e06",
+            "rk4,triple_jump4",
+            "0.02,0.01",
+            "6.283185307179586",
+            "exact",
+        ),
+        ("harmonic", "rk4,velocity_verlet_kdk", "0.02,0.01", "5", "exact"),
+        ("damped-oscillator", "rk4,heun2", "0.02,0.01", "5", "exact"),
+        ("outer-solar-system", "triple_jump4,rk4", "100,50", "4000", "reference"),
+    ];
+    for &(scene, methods, dt, t_end, truth) in cases {
+        let out = stormer(
+            &dir,
+            &with_quick(&["compare", scene, "--methods", methods, "--dt", dt, "--t-end", t_end]),
+        );
+        assert_ok(&out);
+        let summary = stderr(&out);
+        let expected = if truth == "exact" {
+            "against the exact solution"
+        } else {
+            "against the reference out/references/"
+        };
+        assert!(summary.contains(expected), "{scene}: {summary}");
+        let names: Vec<&str> = methods.split(',').collect();
+        // the table on stdout: a header and one line per run
+        assert_eq!(stdout(&out).lines().count(), 1 + 2 * names.len(), "{}", stdout(&out));
+        let (header, rows) = read_table(&dir.join(format!("out/compare-{scene}.csv")));
+        assert_eq!(rows.len(), 2 * names.len());
+        let (error, evaluations) = (column(&header, "error"), column(&header, "evaluations"));
+        for pair in rows.chunks(2) {
+            let e: Vec<f64> = pair.iter().map(|r| r[error].parse().unwrap()).collect();
+            let n: Vec<u64> = pair.iter().map(|r| r[evaluations].parse().unwrap()).collect();
+            assert!(e[0].is_finite() && e[1].is_finite() && e[1] < e[0], "{scene} {pair:?}");
+            assert!(n[1] > n[0], "{scene} {pair:?}");
+        }
+        // an energy column exactly when the scene has an energy
+        let energy = column(&header, "energy_error");
+        assert_eq!(rows[0][energy].is_empty(), scene == "damped-oscillator", "{scene}");
+        let md = std::fs::read_to_string(dir.join(format!("out/compare-{scene}.md"))).unwrap();
+        assert!(md.contains("| method | dt / tol |") && md.contains("---:|"), "{md}");
+        for kind in ["evaluations", "seconds"] {
+            assert_diagram(
+                &dir.join(format!("out/compare-{scene}-{kind}.svg")),
+                &["work-precision", "error at t = "],
+                &names,
+            );
+        }
+        assert_eq!(
+            dir.join(format!("out/compare-{scene}-energy.svg")).exists(),
+            scene != "damped-oscillator"
+        );
+    }
+    assert_diagram(
+        &dir.join("out/compare-pendulum-evaluations.svg"),
+        &["evaluations (force / right-hand side)"],
+        &[],
+    );
+    assert_diagram(&dir.join("out/compare-pendulum-seconds.svg"), &["wall time, s"], &[]);
+}
+
+#[test]
+fn compare_with_tolerances_and_the_cached_reference() {
+    let dir = workdir("compare-tolerances");
+    let args = with_quick(&[
+        "compare",
+        "pendulum",
+        "--methods",
+        "dop853,rk4",
+        "--dt",
+        "0.1",
+        "--tolerances",
+        "1e-6,1e-9",
+        "--t-end",
+        "10",
+    ]);
+    let out = stormer(&dir, &args);
+    assert_ok(&out);
+    let (header, rows) = read_table(&dir.join("out/compare-pendulum.csv"));
+    // dop853 at the step and both tolerances; rk4 (no embedded pair) at the step only
+    assert_eq!(rows.len(), 4);
+    let tol = column(&header, "tolerance");
+    let tolerances: Vec<&str> = rows.iter().map(|r| r[tol].as_str()).collect();
+    assert_eq!(tolerances, ["", "1e-6", "1e-9", ""]);
+    let svg = std::fs::read_to_string(dir.join("out/compare-pendulum-evaluations.svg")).unwrap();
+    assert!(svg.contains("dop853, adaptive"));
+    // the reference is computed once, kept under out/references, and reused
+    let cached: Vec<PathBuf> = std::fs::read_dir(dir.join("out/references"))
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .collect();
+    assert_eq!(cached.len(), 1, "{cached:?}");
+    let name = cached[0].file_name().unwrap().to_string_lossy().into_owned();
+    assert!(name.starts_with("pendulum-t10.0-") && name.ends_with(".json"), "{name}");
+    let before = std::fs::metadata(&cached[0]).unwrap().modified().unwrap();
+    assert_ok(&stormer(&dir, &args));
+    assert_eq!(std::fs::metadata(&cached[0]).unwrap().modified().unwrap(), before);
+    // a reference that is not the scene's would show in the errors: replace its state by
+    // zeros and the error becomes the size of the state
+    let text = std::fs::read_to_string(&cached[0]).unwrap();
+    let mut json: serde_json::Value = serde_json::from_str(&text).unwrap();
+    for x in json["state"].as_array_mut().unwrap() {
+        *x = serde_json::json!(0.0);
+    }
+    std::fs::write(&cached[0], json.to_string()).unwrap();
+    assert_ok(&stormer(&dir, &args));
+    let (_, rows) = read_table(&dir.join("out/compare-pendulum.csv"));
+    let error: f64 = rows[0][column(&header, "error")].parse().unwrap();
+    assert!(error > 0.1, "the cached reference was not used: {error}");
+    // another span, another reference
+    let out = stormer(
+        &dir,
+        &with_quick(&["compare", "pendulum", "--methods", "rk4", "--dt", "0.1", "--t-end", "5"]),
+    );
+    assert_ok(&out);
+    assert_eq!(std::fs::read_dir(dir.join("out/references")).unwrap().count(), 2);
+}
+
+#[test]
+fn compare_and_scan_refuse_incompatible_methods_with_the_reason() {
+    let dir = workdir("compare-refused");
+    let out = stormer(
+        &dir,
+        &with_quick(&[
+            "compare",
+            "damped-oscillator",
+            "--methods",
+            "rk4,velocity_verlet_kdk",
+            "--dt",
+            "0.01",
+        ]),
+    );
+    assert_error(
+        &out,
+        "velocity_verlet_kdk cannot be used here: the damped oscillator is not a Hamiltonian system",
+    );
+    let out = stormer(
+        &dir,
+        &with_quick(&[
+            "scan",
+            "damped-oscillator",
+            "--method",
+            "triple_jump4",
+            "--steps",
+            "10,20",
+        ]),
+    );
+    assert_error(&out, "not a Hamiltonian system");
+    let out = stormer(
+        &dir,
+        &with_quick(&["compare", "pendulum", "--methods", "rk4,dop853", "--tolerances", "1e-6"]),
+    );
+    assert_error(&out, "rk4 cannot be used here: it has no embedded error estimate");
+    let out = stormer(
+        &dir,
+        &with_quick(&["compare", "pendulum", "--methods", "rk5", "--dt", "0.1"]),
+    );
+    assert_error(&out, "rk5");
+    let out = stormer(&dir, &with_quick(&["compare", "pendulum", "--methods", "rk4"]));
+    assert_error(&out, "--dt/--tolerances");
+    let out = stormer(
+        &dir,
+        &with_quick(&["compare", "pendulum", "--methods", "rk4,rk4", "--dt", "0.1"]),
+    );
+    assert_error(&out, "rk4 is given twice");
+    let out = stormer(
+        &dir,
+        &with_quick(&["scan", "pendulum", "--method", "rk4", "--steps", "0,10"]),
+    );
+    assert_error(&out, "--steps");
+    // nothing ran, nothing was written
+    assert!(!dir.join("out").exists());
+    // a run that diverges is a row of the table, not a failure of the study
+    let out = stormer(
+        &dir,
+        &with_quick(&[
+            "compare",
+            "harmonic",
+            "--methods",
+            "euler,rk4",
+            "--dt",
+            "0.5",
+            "--t-end",
+            "500",
+        ]),
+    );
+    assert_ok(&out);
+    let (header, rows) = read_table(&dir.join("out/compare-harmonic.csv"));
+    assert!(rows[0][column(&header, "failure")].contains("non-finite"), "{rows:?}");
+    assert!(rows[0][column(&header, "error")].is_empty());
+    assert!(rows[1][column(&header, "failure")].is_empty(), "{rows:?}");
+    assert!(stdout(&out).contains("note"), "{}", stdout(&out));
+}
+
+/// The fitted order of each method of a scan's CSV.
+fn fitted_orders(path: &Path) -> Vec<(String, f64, f64)> {
+    let (header, rows) = read_table(path);
+    let (method, fitted, declared) = (
+        column(&header, "method"),
+        column(&header, "fitted_order"),
+        column(&header, "declared_order"),
+    );
+    let mut orders: Vec<(String, f64, f64)> = Vec::new();
+    for r in &rows {
+        if !orders.last().is_some_and(|o| o.0 == r[method]) {
+            orders.push((
+                r[method].clone(),
+                r[fitted].parse().unwrap(),
+                r[declared].parse().unwrap(),
+            ));
+        }
+    }
+    orders
+}
+
+#[test]
+fn scan_slopes_match_the_declared_orders_on_two_scenes() {
+    let dir = workdir("scan-orders");
+    for (scene, steps, t_end) in [
+        ("harmonic", "200,400,800,1600", "10"),
+        ("pendulum", "50,100,200,400", "10"),
+    ] {
+        let out = stormer(
+            &dir,
+            &with_quick(&[
+                "scan",
+                scene,
+                "--method",
+                "rk4,velocity_verlet_kdk,triple_jump4",
+                "--steps",
+                steps,
+                "--t-end",
+                t_end,
+            ]),
+        );
+        assert_ok(&out);
+        let table = stdout(&out);
+        assert!(table.contains("observed order"), "{table}");
+        let stem = format!("out/scan-{scene}-rk4+velocity_verlet_kdk+triple_jump4");
+        let orders = fitted_orders(&dir.join(format!("{stem}.csv")));
+        let names: Vec<&str> = orders.iter().map(|o| o.0.as_str()).collect();
+        assert_eq!(names, ["rk4", "velocity_verlet_kdk", "triple_jump4"]);
+        for (name, fitted, declared) in &orders {
+            assert!(
+                (fitted - declared).abs() < 0.2,
+                "{scene} {name}: fitted {fitted}, declared {declared}"
+            );
+        }
+        assert_diagram(
+            &dir.join(format!("{stem}.svg")),
+            &["convergence", "steps", "error at t = 10"],
+            &["rk4 (order 4, observed", "velocity_verlet_kdk (order 2, observed"],
+        );
+        let md = std::fs::read_to_string(dir.join(format!("{stem}.md"))).unwrap();
+        assert!(
+            md.contains("| method | declared order | observed order | points fitted |"),
+            "{md}"
+        );
+    }
+}
+
+#[test]
+fn scan_works_on_every_kind_of_scene_and_leaves_the_rounding_floor_out_of_the_fit() {
+    let dir = workdir("scan-scenes");
+    for (scene, method, steps, t_end) in [
+        ("kepler-e06", "rk4", "400,800,1600", "6.283185307179586"),
+        ("damped-oscillator", "rk4", "100,200,400", "5"),
+        ("outer-solar-system", "velocity_verlet_kdk", "40,80,160", "4000"),
+        // so short a span that dop853's errors are rounding: no point is fitted
+        ("outer-solar-system", "dop853", "10,20", "10"),
+    ] {
+        let out = stormer(
+            &dir,
+            &with_quick(&["scan", scene, "--method", method, "--steps", steps, "--t-end", t_end]),
+        );
+        assert_ok(&out);
+        let (header, rows) = read_table(&dir.join(format!("out/scan-{scene}-{method}.csv")));
+        let fitted = column(&header, "fitted_order");
+        let in_fit = column(&header, "in_fit");
+        if t_end == "10" {
+            assert!(
+                rows.iter().all(|r| r[in_fit] == "false" && r[fitted].is_empty()),
+                "{rows:?}"
+            );
+        } else {
+            let order: f64 = rows[0][fitted].parse().unwrap();
+            let declared: f64 = rows[0][column(&header, "declared_order")].parse().unwrap();
+            assert!((order - declared).abs() < 0.5, "{scene}: {order}");
+        }
+    }
+}
+
+#[test]
+fn a_study_in_three_shards_merges_into_the_whole() {
+    let dir = workdir("shards");
+    let compare = [
+        "compare",
+        "pendulum",
+        "--methods",
+        "rk4,velocity_verlet_kdk,dop853",
+        "--dt",
+        "0.2,0.1",
+        "--tolerances",
+        "1e-7",
+        "--t-end",
+        "10",
+    ];
+    let scan = [
+        "scan",
+        "kepler-e06",
+        "--method",
+        "rk4,triple_jump4",
+        "--steps",
+        "100,200,400",
+        "--t-end",
+        "6.3",
+    ];
+    for (args, stem) in [
+        (&compare[..], "compare-pendulum"),
+        (&scan[..], "scan-kepler-e06-rk4+triple_jump4"),
+    ] {
+        let mut whole = with_quick(args);
+        whole.extend(["--out", "whole"]);
+        assert_ok(&stormer(&dir, &whole));
+        let mut parts = Vec::new();
+        for shard in ["1/3", "2/3", "3/3"] {
+            let mut part = with_quick(args);
+            part.extend(["--shard", shard, "--out", "parts"]);
+            let out = stormer(&dir, &part);
+            assert_ok(&out);
+            assert!(stderr(&out).contains("stormer merge"), "{}", stderr(&out));
+            parts.push(format!("parts/{stem}.shard-{}-of-3.json", &shard[..1]));
+        }
+        // no table from a shard alone
+        assert!(!dir.join(format!("parts/{stem}.csv")).exists());
+        let mut merge = vec!["merge", "--out", "merged"];
+        merge.extend(parts.iter().rev().map(String::as_str));
+        let out = stormer(&dir, &merge);
+        assert_ok(&out);
+        // same rows, timings aside
+        let (header, a) = read_table(&dir.join(format!("whole/{stem}.csv")));
+        let (header_b, b) = read_table(&dir.join(format!("merged/{stem}.csv")));
+        assert_eq!(header, header_b);
+        let timing = [column(&header, "seconds"), column(&header, "timing_runs")];
+        let strip = |rows: &[Vec<String>]| -> Vec<Vec<String>> {
+            rows.iter()
+                .map(|r| {
+                    r.iter()
+                        .enumerate()
+                        .filter(|(i, _)| !timing.contains(i))
+                        .map(|(_, c)| c.clone())
+                        .collect()
+                })
+                .collect()
+        };
+        assert_eq!(strip(&a), strip(&b));
+        assert!(!a.is_empty());
+        for file in std::fs::read_dir(dir.join("whole")).unwrap() {
+            let name = file.unwrap().file_name();
+            assert!(dir.join("merged").join(&name).exists(), "{name:?} missing after merge");
+        }
+        // a missing part, a part given twice
+        let out = stormer(&dir, &["merge", &parts[0], &parts[1]]);
+        assert_error(&out, "shard 3/3 missing");
+        let out = stormer(&dir, &["merge", &parts[0], &parts[0], &parts[1], &parts[2]]);
+        assert_error(&out, "shard 1/3 is given twice");
+    }
+    // parts of different studies
+    let out = stormer(
+        &dir,
+        &[
+            "merge",
+            "parts/compare-pendulum.shard-1-of-3.json",
+            "parts/scan-kepler-e06-rk4+triple_jump4.shard-2-of-3.json",
+        ],
+    );
+    assert_error(&out, "different studies");
+    let out = stormer(&dir, &["merge", "parts/none.json"]);
+    assert_error(&out, "cannot read parts/none.json");
+}

@@ -3,10 +3,10 @@
 mod choice;
 mod methods;
 mod output;
-#[allow(dead_code)] // used by `run`, `compare` and `scan` as they land (issue 5)
 mod plot;
 mod run;
 mod scene;
+mod study;
 mod verify;
 mod verify_checks;
 mod verify_splitting;
@@ -43,6 +43,13 @@ enum Command {
     },
     /// Run a scene and write its trajectory as CSV (t, the components, the energy).
     Run(run::RunArgs),
+    /// Work-precision study: each method at each step size (or tolerance), a table of
+    /// evaluations, wall time, final error and energy error, and the diagrams.
+    Compare(study::CompareArgs),
+    /// Convergence study: error against the number of steps, and the observed order.
+    Scan(study::ScanArgs),
+    /// Join the partial tables of a study run with --shard into its table and diagrams.
+    Merge(study::MergeArgs),
     /// The built-in scenes: list them, or print one's TOML to copy and edit.
     Scene {
         #[command(subcommand)]
@@ -93,6 +100,9 @@ pub fn main() -> ExitCode {
         Command::Methods { format } => methods::run(format),
         Command::Verify { method, format } => verify::run(&method, format),
         Command::Run(args) => run::run(&args),
+        Command::Compare(args) => study::compare(&args),
+        Command::Scan(args) => study::scan(&args),
+        Command::Merge(args) => study::merge(&args),
         Command::Scene { command } => match command {
             SceneCommand::List => scene::list(),
             SceneCommand::Show { name } => scene::show(&name),

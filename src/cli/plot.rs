@@ -217,6 +217,8 @@ where
     c.configure_mesh()
         .x_desc(chart.x_label.as_str())
         .y_desc(chart.y_label.as_str())
+        .x_label_formatter(&|v| tick(*v))
+        .y_label_formatter(&|v| tick(*v))
         .light_line_style(WHITE.mix(0.0))
         .draw()
         .map_err(plot_error)?;
@@ -241,6 +243,29 @@ where
             .map_err(plot_error)?;
     }
     Ok(())
+}
+
+/// A tick label with at most three significant digits: `0.001`, `250`, `1e-5`, `2.5e6`
+/// (not `9.999999999999999e-5`).
+fn tick(v: f64) -> String {
+    let a = v.abs();
+    if v == 0.0 || !v.is_finite() {
+        return format!("{v}");
+    }
+    if (1e-3..1e5).contains(&a) {
+        let decimals = (2 - a.log10().floor() as i32).max(0) as usize;
+        let s = format!("{v:.decimals$}");
+        if s.contains('.') {
+            s.trim_end_matches('0').trim_end_matches('.').to_string()
+        } else {
+            s
+        }
+    } else {
+        let s = format!("{v:.2e}");
+        let (mantissa, exponent) = s.split_once('e').unwrap_or((&s, "0"));
+        let mantissa = mantissa.trim_end_matches('0').trim_end_matches('.');
+        format!("{mantissa}e{exponent}")
+    }
 }
 
 fn plot_error<E: std::fmt::Display>(e: E) -> anyhow::Error {
@@ -270,6 +295,22 @@ mod tests {
         // three usable points: three markers
         assert_eq!(svg.matches("<circle").count(), 3);
         std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn tick_labels_are_short() {
+        let cases = [
+            (9.999999999999999e-5, "1e-4"),
+            (0.009999999999999998, "0.01"),
+            (1000.0, "1000"),
+            (2.5e6, "2.5e6"),
+            (0.25, "0.25"),
+            (-3.0, "-3"),
+            (0.0, "0"),
+        ];
+        for (v, s) in cases {
+            assert_eq!(tick(v), s);
+        }
     }
 
     #[test]
