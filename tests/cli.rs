@@ -1586,3 +1586,31 @@ fn a_study_in_three_shards_merges_into_the_whole() {
     let out = stormer(&dir, &["merge", "parts/none.json"]);
     assert_error(&out, "cannot read parts/none.json");
 }
+
+/// `run` draws its pictures beside the CSV: the orbit in the plane (one line per body)
+/// and the energy error for a Hamiltonian scene, the state against time for a pendulum.
+#[test]
+fn run_draws_its_pictures() {
+    let dir = workdir("pictures");
+    let out = stormer(&dir, &["run", "kepler", "--t-end", "3"]);
+    assert_ok(&out);
+    assert!(
+        stderr(&out).contains("pictures: out/kepler-velocity_verlet_kdk-xy.svg"),
+        "{}",
+        stderr(&out)
+    );
+    let orbit = std::fs::read_to_string(dir.join("out/kepler-velocity_verlet_kdk-xy.svg")).unwrap();
+    // title, axis labels and one legend entry per body
+    for text in ["trajectory, x-y plane", "\nx\n", "\ny\n", "\nstar\n", "\nplanet\n"] {
+        assert!(orbit.contains(text), "{text:?} missing");
+    }
+    let energy = std::fs::read_to_string(dir.join("out/kepler-velocity_verlet_kdk-energy.svg")).unwrap();
+    assert!(energy.contains("energy error") && energy.contains("|E - E0| / |E0|"));
+    let out = stormer(&dir, &["run", "pendulum", "--t-end", "5"]);
+    assert_ok(&out);
+    let state = std::fs::read_to_string(dir.join("out/pendulum-rk4-state.svg")).unwrap();
+    assert!(
+        state.contains("theta") && state.contains("omega"),
+        "legend names the components"
+    );
+}

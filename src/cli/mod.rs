@@ -3,6 +3,7 @@
 mod choice;
 mod methods;
 mod output;
+mod pictures;
 mod plot;
 mod run;
 mod scene;

@@ -186,6 +186,9 @@ impl SceneVisitor for Runner<'_> {
         );
         // The summary is information, not output: a closed stderr is not an error.
         let _ = writeln!(std::io::stderr(), "{summary}");
+        let pictures = super::pictures::draw_run(&path, &setup.name, &method.label())?;
+        let names: Vec<String> = pictures.iter().map(|p| p.display().to_string()).collect();
+        let _ = writeln!(std::io::stderr(), "pictures: {}", names.join(", "));
         Ok(())
     }
 }

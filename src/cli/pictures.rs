@@ -1,0 +1,132 @@
+//! The pictures of a run, drawn beside its CSV from the CSV itself: the trajectory
+//! projections of every body (columns `x`, `y`, `z`, or `<name>_x`, ...), the state
+//! against time when the model has no positions in the plane (a pendulum's angle), and
+//! the relative energy error on a log scale when the scene has an energy.
+
+use super::plot::{draw, Chart, Scale, Series};
+use std::path::{Path, PathBuf};
+
+/// The CSV's header and numeric rows.
+fn read(path: &Path) -> anyhow::Result<(Vec<String>, Vec<Vec<f64>>)> {
+    let text = std::fs::read_to_string(path)?;
+    let mut lines = text.lines();
+    let header: Vec<String> = lines
+        .next()
+        .unwrap_or_default()
+        .split(',')
+        .map(str::to_string)
+        .collect();
+    let rows = lines
+        .filter(|l| !l.is_empty())
+        .map(|l| l.split(',').map(|x| x.parse::<f64>().unwrap_or(f64::NAN)).collect())
+        .collect();
+    Ok((header, rows))
+}
+
+/// `(body prefix, column of x, column of the second axis, its letter)` for each body with a
+/// position in a plane: `x`-`y` (and `x`-`z` when there is a `z`), or `x`-`z` alone (a
+/// ball flying in the vertical plane).
+fn planes(header: &[String]) -> Vec<(String, usize, usize, &'static str)> {
+    let col = |name: &str| header.iter().position(|h| h == name);
+    let mut out = Vec::new();
+    for (i, h) in header.iter().enumerate() {
+        let Some(prefix) = h.strip_suffix('x') else { continue };
+        if !(prefix.is_empty() || prefix.ends_with('_')) {
+            continue;
+        }
+        for axis in ["y", "z"] {
+            if let Some(j) = col(&format!("{prefix}{axis}")) {
+                out.push((prefix.trim_end_matches('_').to_string(), i, j, axis));
+            }
+        }
+    }
+    out
+}
+
+/// Draws the pictures of the run whose CSV is `csv`; returns the files written.
+pub fn draw_run(csv: &Path, scene: &str, method: &str) -> anyhow::Result<Vec<PathBuf>> {
+    let (header, rows) = read(csv)?;
+    let stem = csv.with_extension("");
+    let named = |suffix: &str| PathBuf::from(format!("{}-{suffix}.svg", stem.display()));
+    let title = |what: &str| format!("{scene}, {method}: {what}");
+    let column = |j: usize| -> Vec<f64> { rows.iter().map(|r| r.get(j).copied().unwrap_or(f64::NAN)).collect() };
+    let mut written = Vec::new();
+    let planes = planes(&header);
+    for axis in ["y", "z"] {
+        let series: Vec<Series> = planes
+            .iter()
+            .filter(|p| p.3 == axis)
+            .map(|(body, i, j, _)| {
+                let label = if body.is_empty() {
+                    "trajectory".to_string()
+                } else {
+                    body.clone()
+                };
+                Series::line(label, column(*i).into_iter().zip(column(*j)).collect())
+            })
+            .collect();
+        if series.is_empty() {
+            continue;
+        }
+        let path = named(&format!("x{axis}"));
+        let chart = Chart::new(title(&format!("trajectory, x-{axis} plane")), "x", axis).equal_aspect();
+        draw(&path, &chart, &series)?;
+        written.push(path);
+    }
+    let energy = header.iter().position(|h| h == "energy");
+    if planes.is_empty() {
+        // no positions in a plane: every component against time
+        let t = column(0);
+        let series: Vec<Series> = header
+            .iter()
+            .enumerate()
+            .skip(1)
+            .filter(|(j, _)| Some(*j) != energy)
+            .map(|(j, name)| Series::line(name.clone(), t.iter().copied().zip(column(j)).collect()))
+            .collect();
+        let path = named("state");
+        draw(&path, &Chart::new(title("state against time"), "t", "state"), &series)?;
+        written.push(path);
+    }
+    if let Some(j) = energy {
+        let e = column(j);
+        let e0 = e.first().copied().unwrap_or(f64::NAN);
+        let scale = if e0 == 0.0 { 1.0 } else { e0.abs() };
+        let points: Vec<(f64, f64)> = column(0)
+            .into_iter()
+            .zip(&e)
+            .skip(1)
+            .map(|(t, e)| (t, (e - e0).abs() / scale))
+            .collect();
+        let path = named("energy");
+        let y_label = if e0 == 0.0 { "|E - E0|" } else { "|E - E0| / |E0|" };
+        let chart = Chart::new(title("energy error"), "t", y_label).scales(Scale::Linear, Scale::Log);
+        draw(&path, &chart, &[Series::line(method, points)])?;
+        written.push(path);
+    }
+    Ok(written)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn planes_are_found_per_body_and_for_a_ball() {
+        let h = |names: &[&str]| names.iter().map(|s| s.to_string()).collect::<Vec<_>>();
+        let p = planes(&h(&[
+            "t",
+            "Sun_x",
+            "Sun_y",
+            "Sun_z",
+            "Jupiter_x",
+            "Jupiter_y",
+            "Jupiter_z",
+        ]));
+        assert_eq!(p.len(), 4);
+        assert_eq!((p[0].0.as_str(), p[0].3), ("Sun", "y"));
+        let p = planes(&h(&["t", "x", "z", "vx", "vz", "energy"]));
+        assert_eq!(p, vec![(String::new(), 1, 2, "z")]);
+        assert!(planes(&h(&["t", "theta", "omega"])).is_empty());
+    }
+}
