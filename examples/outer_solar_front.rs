@@ -13,19 +13,24 @@
 //!   360000 days), best of `reps` runs (default 3). One call is one round: the script calls
 //!   it between REBOUND's rounds so that the two are interleaved.
 //! - `front`: for each method and each `dt` (default 100, 50, 20, 10, 5, 2, 1 days): max
-//!   |dE/E| sampled every `cadence` days (default 100), the position error at `span` against
-//!   a reference run (Kahan-Li 8 at dt = 10 days; its positions are printed too, so that
-//!   REBOUND's runs are measured against the same reference), and the run's wall time
-//!   (best of 3, no sampling).
+//!   |dE/E| sampled every `cadence` days (default 100), the positions at `span` and their
+//!   error against a reference run of ours (Kahan-Li 8 at dt = 10 days; the script measures
+//!   every run, ours and REBOUND's, against REBOUND's IAS15 instead, which has the smaller
+//!   round-off), and the run's wall time (best of 3, no sampling). Then our adaptive
+//!   `dop853` and `verner9` at tolerances `--tols` (default 1e-8, 1e-10, 1e-12, 1e-14;
+//!   energy checked at every accepted step).
 //! - `plot`: reads the combined front written by the script and draws the work-precision
 //!   diagrams (error against seconds) with plotters.
 
 use std::hint::black_box;
 use std::time::Instant;
 
-use stormer::catalog::{BlanesMoanSrkn11b, BlanesMoanSrkn6b, KahanLi6, KahanLi8, TripleJump4, VelocityVerletKdk};
+use stormer::catalog::{
+    BlanesMoanSrkn11b, BlanesMoanSrkn6b, Dop853, KahanLi6, KahanLi8, TripleJump4, VelocityVerletKdk, Verner9,
+};
+use stormer::driver::Recorder;
 use stormer::scenes::NBody;
-use stormer::{Problem, SplittingMethod, SplittingStepper, Stepper};
+use stormer::{Driver, ExplicitMethod, ExplicitRk, Problem, SplittingMethod, SplittingStepper, Stepper, Tolerances};
 
 type Nb = NBody<f64, [f64; 24]>;
 
@@ -114,6 +119,41 @@ fn methods() -> Vec<Method> {
     ]
 }
 
+/// Keeps the last state and the largest |dE/E| of the records.
+struct Watch {
+    e0: f64,
+    worst: f64,
+    last: [f64; 24],
+}
+
+impl Recorder<f64, [f64; 24]> for Watch {
+    fn record(&mut self, _t: f64, y: &[f64; 24], energy: Option<f64>) -> Result<(), stormer::Error> {
+        if let Some(e) = energy {
+            self.worst = self.worst.max(((e - self.e0) / self.e0).abs());
+        }
+        self.last = *y;
+        Ok(())
+    }
+}
+
+/// An adaptive embedded Runge-Kutta run of ours (the non-symplectic high-order competitor):
+/// `every` = 1 records (and checks the energy) at every accepted step, `u64::MAX` only at
+/// the ends. Returns the end state, max |dE/E|, steps and evaluations.
+fn adaptive<M: ExplicitMethod>(nb: &Nb, y0: &[f64; 24], tol: f64, span: f64, every: u64) -> ([f64; 24], f64, u64, u64) {
+    let mut st = ExplicitRk::<M, [f64; 24]>::new(y0);
+    let e0 = nb.energy(0.0, y0).expect("an energy");
+    let mut watch = Watch {
+        e0,
+        worst: 0.0,
+        last: *y0,
+    };
+    let (stats, _) = Driver::adaptive(Tolerances::new(tol, tol))
+        .every(every)
+        .run_into(nb, &mut st, 0.0, y0, span, &mut watch)
+        .unwrap_or_else(|(_, e)| panic!("{e}"));
+    (watch.last, watch.worst, stats.steps, stats.evaluations)
+}
+
 fn arg(args: &[String], name: &str) -> Option<String> {
     args.iter().position(|a| a == name).and_then(|i| args.get(i + 1).cloned())
 }
@@ -200,12 +240,38 @@ fn front(args: &[String]) {
             let secs = best_of(3, || (m.run)(&nb, black_box(&y0), black_box(h), steps));
             rows.push(format!(
                 "{{\"who\": \"stormer\", \"method\": \"{}\", \"order\": {}, \"evals_per_step\": {}, \"dt\": {h:e}, \
-                 \"steps\": {steps}, \"evaluations\": {}, \"seconds\": {secs:e}, \"max_dE\": {de:e}, \"pos_err\": {:e}}}",
+                 \"steps\": {steps}, \"evaluations\": {}, \"seconds\": {secs:e}, \"max_dE\": {de:e}, \"pos_err\": {:e}, \"q_end\": {}}}",
                 m.name,
                 m.order,
                 m.evals,
                 steps * m.evals,
                 position_error(&y, &reference),
+                json_list(&y[..12]),
+            ));
+        }
+    }
+    type Adaptive = fn(&Nb, &[f64; 24], f64, f64, u64) -> ([f64; 24], f64, u64, u64);
+    let adaptives: [(&str, usize, Adaptive); 2] = [("dop853", 8, adaptive::<Dop853>), ("verner9", 9, adaptive::<Verner9>)];
+    let tols: Vec<f64> = arg(args, "--tols")
+        .unwrap_or_else(|| "1e-8,1e-10,1e-12,1e-14".into())
+        .split(',')
+        .map(|s| s.trim().parse().expect("a list of tolerances"))
+        .collect();
+    for (name, order, run) in adaptives {
+        for &tol in &tols {
+            let (y, de, steps, evals) = run(&nb, &y0, tol, span, 1);
+            let mut best = f64::INFINITY;
+            for _ in 0..3 {
+                let start = Instant::now();
+                black_box(run(&nb, black_box(&y0), tol, span, u64::MAX));
+                best = best.min(start.elapsed().as_secs_f64());
+            }
+            rows.push(format!(
+                "{{\"who\": \"stormer\", \"method\": \"{name}\", \"order\": {order}, \"tol\": {tol:e}, \
+                 \"steps\": {steps}, \"evaluations\": {evals}, \"seconds\": {best:e}, \"max_dE\": {de:e}, \
+                 \"pos_err\": {:e}, \"q_end\": {}}}",
+                position_error(&y, &reference),
+                json_list(&y[..12]),
             ));
         }
     }
