@@ -324,9 +324,10 @@ fn plot(args: &[String]) {
             }
         }
     }
-    let root = SVGBackend::new(output, (1400, 620)).into_drawing_area();
+    let root = SVGBackend::new(output, (1500, 640)).into_drawing_area();
     root.fill(&WHITE).expect("draw");
-    let panels = root.split_evenly((1, 2));
+    let (plots, legend) = root.split_horizontally(1260);
+    let panels = plots.split_evenly((1, 2));
     let titles = [
         "position error at t_end (AU) vs seconds",
         "max |dE/E| vs seconds",
@@ -358,7 +359,7 @@ fn plot(args: &[String]) {
             .draw()
             .expect("mesh");
         for (i, (label, pts)) in series.iter().enumerate() {
-            let colour = Palette99::pick(i).to_rgba();
+            let colour = colour_of(label, i);
             let dashed = label.starts_with("rebound");
             let mut line: Vec<(f64, f64)> = pts
                 .iter()
@@ -370,9 +371,7 @@ fn plot(args: &[String]) {
             let style = ShapeStyle::from(&colour).stroke_width(if dashed { 1 } else { 2 });
             chart
                 .draw_series(LineSeries::new(line.clone(), style))
-                .expect("line")
-                .label(label.clone())
-                .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 18, y)], style));
+                .expect("line");
             if dashed {
                 chart
                     .draw_series(line.iter().map(|&p| Cross::new(p, 4, style)))
@@ -383,17 +382,49 @@ fn plot(args: &[String]) {
                     .expect("points");
             }
         }
-        chart
-            .configure_series_labels()
-            .background_style(WHITE.mix(0.85))
-            .border_style(BLACK)
-            .label_font(("sans-serif", 11))
-            .position(SeriesLabelPosition::LowerLeft)
-            .draw()
+    }
+    // One legend for both panels, beside them: ours solid with dots, REBOUND thin with
+    // crosses, the same colour at the same order.
+    for (i, (label, _)) in series.iter().enumerate() {
+        let colour = colour_of(label, i);
+        let y = 40 + 24 * i as i32;
+        let rebound = label.starts_with("rebound");
+        let style = ShapeStyle::from(&colour).stroke_width(if rebound { 1 } else { 2 });
+        legend
+            .draw(&PathElement::new(vec![(10, y), (40, y)], style))
+            .expect("legend");
+        if rebound {
+            legend.draw(&Cross::new((25, y), 4, style)).expect("legend");
+        } else {
+            legend.draw(&Circle::new((25, y), 3, style.filled())).expect("legend");
+        }
+        legend
+            .draw(&Text::new(label.clone(), (48, y - 7), ("sans-serif", 13)))
             .expect("legend");
     }
     root.present().expect("write the SVG");
     eprintln!("wrote {output}");
+}
+
+/// Colours by order, shared by our method and REBOUND's of the same order.
+#[cfg(feature = "cli")]
+fn colour_of(label: &str, i: usize) -> plotters::style::RGBAColor {
+    use plotters::style::{Color, Palette, Palette99, RGBColor};
+    let method = label.split_whitespace().nth(1).unwrap_or("");
+    let rgb = match method {
+        "velocity_verlet_kdk" | "leapfrog2" => RGBColor(200, 30, 30),
+        "triple_jump4" | "leapfrog4" => RGBColor(30, 140, 30),
+        "kahan_li6" | "leapfrog6" => RGBColor(20, 60, 200),
+        "kahan_li8" | "leapfrog8" => RGBColor(130, 30, 160),
+        "blanes_moan_srkn6b" => RGBColor(0, 150, 150),
+        "blanes_moan_srkn11b" => RGBColor(230, 120, 0),
+        "dop853" => RGBColor(110, 110, 110),
+        "verner9" => RGBColor(0, 0, 0),
+        "whfast" => RGBColor(150, 100, 40),
+        "ias15" => RGBColor(230, 0, 180),
+        _ => return Palette99::pick(i).to_rgba(),
+    };
+    rgb.to_rgba()
 }
 
 #[cfg(not(feature = "cli"))]
