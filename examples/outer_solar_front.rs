@@ -38,11 +38,31 @@ type Nb = NBody<f64, [f64; 24]>;
 const G: f64 = 2.95912208286e-4;
 const MASSES: [f64; 4] = [1.00000597682, 0.000954786104043, 0.000285583733151, 0.0000437273164546];
 const POSITIONS: [f64; 12] = [
-    0.0, 0.0, 0.0, -3.5023653, -3.8169847, -1.5507963, 9.0755314, -3.0458353, -1.6483708, 8.3101420, -16.2901086,
+    0.0,
+    0.0,
+    0.0,
+    -3.5023653,
+    -3.8169847,
+    -1.5507963,
+    9.0755314,
+    -3.0458353,
+    -1.6483708,
+    8.3101420,
+    -16.2901086,
     -7.2521278,
 ];
 const VELOCITIES: [f64; 12] = [
-    0.0, 0.0, 0.0, 0.00565429, -0.00412490, -0.00190589, 0.00168318, 0.00483525, 0.00192462, 0.00354178, 0.00137102,
+    0.0,
+    0.0,
+    0.0,
+    0.00565429,
+    -0.00412490,
+    -0.00190589,
+    0.00168318,
+    0.00483525,
+    0.00192462,
+    0.00354178,
+    0.00137102,
     0.00055029,
 ];
 
@@ -59,8 +79,15 @@ struct Method {
     order: usize,
     evals: usize,
     run: fn(&Nb, &[f64; 24], f64, usize) -> [f64; 24],
-    sampled: fn(&Nb, &[f64; 24], f64, usize, usize) -> ([f64; 24], f64),
+    sampled: Sampled,
 }
+
+/// A run sampling the energy: `(problem, y0, h, steps, every)` to the end state and max |dE/E|.
+type Sampled = fn(&Nb, &[f64; 24], f64, usize, usize) -> ([f64; 24], f64);
+
+/// A series of the plot: its label and its points (seconds, position error, max |dE/E|).
+#[cfg(feature = "cli")]
+type Series = (String, Vec<(f64, f64, f64)>);
 
 /// `steps` steps of `h` in place, the fixed-step driver's loop without records.
 fn run<M: SplittingMethod>(nb: &Nb, y0: &[f64; 24], h: f64, steps: usize) -> [f64; 24]
@@ -155,16 +182,23 @@ fn adaptive<M: ExplicitMethod>(nb: &Nb, y0: &[f64; 24], tol: f64, span: f64, eve
 }
 
 fn arg(args: &[String], name: &str) -> Option<String> {
-    args.iter().position(|a| a == name).and_then(|i| args.get(i + 1).cloned())
+    args.iter()
+        .position(|a| a == name)
+        .and_then(|i| args.get(i + 1).cloned())
 }
 
 fn num(args: &[String], name: &str, default: f64) -> f64 {
-    arg(args, name).map_or(default, |s| s.parse().unwrap_or_else(|_| panic!("{name}: not a number: {s}")))
+    arg(args, name).map_or(default, |s| {
+        s.parse().unwrap_or_else(|_| panic!("{name}: not a number: {s}"))
+    })
 }
 
 fn steps_for(span: f64, h: f64) -> usize {
     let n = (span / h).round();
-    assert!((n * h - span).abs() < 1e-9 * span, "dt = {h} must divide the span {span}");
+    assert!(
+        (n * h - span).abs() < 1e-9 * span,
+        "dt = {h} must divide the span {span}"
+    );
     n as usize
 }
 
@@ -181,7 +215,12 @@ fn best_of(reps: usize, mut f: impl FnMut() -> [f64; 24]) -> f64 {
 
 fn position_error(y: &[f64; 24], reference: &[f64; 24]) -> f64 {
     (0..4)
-        .map(|k| (0..3).map(|c| (y[3 * k + c] - reference[3 * k + c]).powi(2)).sum::<f64>().sqrt())
+        .map(|k| {
+            (0..3)
+                .map(|c| (y[3 * k + c] - reference[3 * k + c]).powi(2))
+                .sum::<f64>()
+                .sqrt()
+        })
         .fold(0.0, f64::max)
 }
 
@@ -209,7 +248,10 @@ fn time(args: &[String]) {
             )
         })
         .collect();
-    println!("{{\"dt\": {h:e}, \"span\": {span:e}, \"steps\": {steps}, \"rows\": [{}]}}", rows.join(", "));
+    println!(
+        "{{\"dt\": {h:e}, \"span\": {span:e}, \"steps\": {steps}, \"rows\": [{}]}}",
+        rows.join(", ")
+    );
 }
 
 fn front(args: &[String]) {
@@ -251,7 +293,8 @@ fn front(args: &[String]) {
         }
     }
     type Adaptive = fn(&Nb, &[f64; 24], f64, f64, u64) -> ([f64; 24], f64, u64, u64);
-    let adaptives: [(&str, usize, Adaptive); 2] = [("dop853", 8, adaptive::<Dop853>), ("verner9", 9, adaptive::<Verner9>)];
+    let adaptives: [(&str, usize, Adaptive); 2] =
+        [("dop853", 8, adaptive::<Dop853>), ("verner9", 9, adaptive::<Verner9>)];
     let tols: Vec<f64> = arg(args, "--tols")
         .unwrap_or_else(|| "1e-8,1e-10,1e-12,1e-14".into())
         .split(',')
@@ -296,7 +339,7 @@ fn plot(args: &[String]) {
     let data: serde_json::Value = serde_json::from_str(&text).expect("JSON");
     let rows = data["rows"].as_array().expect("rows");
     // One series per (who, method).
-    let mut series: Vec<(String, Vec<(f64, f64, f64)>)> = Vec::new();
+    let mut series: Vec<Series> = Vec::new();
     for r in rows {
         let label = format!(
             "{} {}",
@@ -328,10 +371,7 @@ fn plot(args: &[String]) {
     root.fill(&WHITE).expect("draw");
     let (plots, legend) = root.split_horizontally(1260);
     let panels = plots.split_evenly((1, 2));
-    let titles = [
-        "position error at t_end (AU) vs seconds",
-        "max |dE/E| vs seconds",
-    ];
+    let titles = ["position error at t_end (AU) vs seconds", "max |dE/E| vs seconds"];
     for (panel, (which, title)) in panels.iter().zip(titles.iter().enumerate()) {
         let (mut e_lo, mut e_hi) = (f64::INFINITY, 0.0f64);
         for (_, pts) in &series {
@@ -348,12 +388,19 @@ fn plot(args: &[String]) {
             .margin(12)
             .x_label_area_size(40)
             .y_label_area_size(70)
-            .build_cartesian_2d((t_lo * 0.7..t_hi * 1.4).log_scale(), (e_lo * 0.3..e_hi * 3.0).log_scale())
+            .build_cartesian_2d(
+                (t_lo * 0.7..t_hi * 1.4).log_scale(),
+                (e_lo * 0.3..e_hi * 3.0).log_scale(),
+            )
             .expect("axes");
         chart
             .configure_mesh()
             .x_desc("wall time of the run (s)")
-            .y_desc(if which == 0 { "max position error (AU)" } else { "max |dE/E|" })
+            .y_desc(if which == 0 {
+                "max position error (AU)"
+            } else {
+                "max |dE/E|"
+            })
             .x_label_formatter(&|x| format!("{x:.0e}"))
             .y_label_formatter(&|y| format!("{y:.0e}"))
             .draw()
@@ -369,9 +416,7 @@ fn plot(args: &[String]) {
                 .collect();
             line.sort_by(|a, b| a.0.total_cmp(&b.0));
             let style = ShapeStyle::from(&colour).stroke_width(if dashed { 1 } else { 2 });
-            chart
-                .draw_series(LineSeries::new(line.clone(), style))
-                .expect("line");
+            chart.draw_series(LineSeries::new(line.clone(), style)).expect("line");
             if dashed {
                 chart
                     .draw_series(line.iter().map(|&p| Cross::new(p, 4, style)))
