@@ -5,6 +5,7 @@ mod methods;
 mod output;
 mod pictures;
 mod plot;
+mod progress;
 mod run;
 mod scene;
 mod study;

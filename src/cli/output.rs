@@ -82,6 +82,8 @@ pub struct CsvRecorder<'a, S: Scene> {
     pub max_de: f64,
     /// max over records and components of |y - y_exact|, when there is an exact solution.
     pub max_error: Option<f64>,
+    /// The progress bar, when the run has one.
+    pub progress: Option<super::progress::Progress>,
     line: String,
 }
 
@@ -97,6 +99,7 @@ impl<'a, S: Scene> CsvRecorder<'a, S> {
             path: path.to_path_buf(),
             setup,
             records: 0,
+            progress: None,
             last_t: None,
             e0: None,
             max_de: 0.0,
@@ -166,6 +169,9 @@ impl<S: Scene> Recorder<f64, S::State> for CsvRecorder<'_, S> {
             self.max_error = Some(self.max_error.map_or(dev, |m| m.max(dev)));
         }
         self.records += 1;
+        if let Some(progress) = &mut self.progress {
+            progress.update(t);
+        }
         self.last_t = Some(t);
         Ok(())
     }

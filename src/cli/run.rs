@@ -153,7 +153,11 @@ impl SceneVisitor for Runner<'_> {
             driver = driver.stop_when(move |t, y| (stop.g)(model, t, y));
         }
         let mut csv = CsvRecorder::create(&path, &setup)?;
+        csv.progress = Some(super::progress::Progress::new(t0, t_end));
         let result = driver.run_into(&setup.model, &mut stepper, t0, &setup.y0, t_end, &mut csv);
+        if let Some(progress) = &mut csv.progress {
+            progress.finish();
+        }
         let flushed = csv.flush();
         let (stats, stopped, error) = match result {
             Ok((stats, stopped)) => (stats, stopped, None),
