@@ -35,7 +35,11 @@ fn the_binary_refuses_every_bad_file_without_panicking() {
         } else {
             vec!["verify", &path]
         };
-        let out = Command::new(env!("CARGO_BIN_EXE_stormer")).args(&args).current_dir(&dir).output().unwrap();
+        let out = Command::new(env!("CARGO_BIN_EXE_stormer"))
+            .args(&args)
+            .current_dir(&dir)
+            .output()
+            .unwrap();
         let stderr = String::from_utf8_lossy(&out.stderr);
         assert!(!out.status.success(), "{name}: accepted\n{stderr}");
         assert!(!stderr.contains("panicked"), "{name}: {stderr}");
