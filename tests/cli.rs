@@ -1614,3 +1614,56 @@ fn run_draws_its_pictures() {
         "legend names the components"
     );
 }
+
+/// `stormer tour`: the report, every picture it references, and verdicts that say what
+/// SCENES.md says.
+#[test]
+fn tour_writes_the_report_with_verdicts() {
+    let dir = workdir("tour");
+    let out = stormer(&dir, &["tour", "--out", "report"]);
+    assert_ok(&out);
+    let report = dir.join("report");
+    let html = std::fs::read_to_string(report.join("index.html")).expect("index.html");
+    assert!(report.join("summary.md").is_file());
+    let mut pictures = 0;
+    for img in html.split("<img ").skip(1) {
+        let attr = |name: &str| {
+            let start = img.find(&format!("{name}=\"")).map(|i| i + name.len() + 2)?;
+            let end = img[start..].find('"')?;
+            Some(img[start..start + end].replace("&amp;", "&"))
+        };
+        let src = attr("src").expect("src");
+        let svg = std::fs::read_to_string(report.join(&src)).unwrap_or_else(|e| panic!("{src}: {e}"));
+        assert!(svg.contains("<svg") && svg.len() > 1000, "{src} is not a drawn SVG");
+        assert!(svg.matches("<text").count() >= 5, "{src}: title, axis labels, legend");
+        for key in ["alt", "data-x", "data-y"] {
+            let text = attr(key).unwrap_or_default();
+            assert!(
+                text.is_empty() || svg.contains(&text),
+                "{src}: {key} {text:?} not drawn"
+            );
+        }
+        for label in attr("data-legend")
+            .unwrap_or_default()
+            .split(';')
+            .filter(|l| !l.is_empty())
+        {
+            assert!(svg.contains(label), "{src}: legend {label:?} not drawn");
+        }
+        pictures += 1;
+    }
+    assert!(pictures >= 12, "{pictures} pictures");
+    let verdicts: Vec<&str> = html.lines().filter(|l| l.contains("class=\"verdict\"")).collect();
+    assert_eq!(verdicts.len(), 7, "{verdicts:?}");
+    let has = |i: usize, needle: &str| assert!(verdicts[i].contains(needle), "expected {needle:?} in {}", verdicts[i]);
+    has(0, "Explicit Euler's energy drifts upward");
+    has(0, "Stormer-Verlet's stays bounded");
+    has(1, "RK4's energy drifts");
+    has(1, "velocity Verlet's stays bounded");
+    has(2, "Explicit Euler's H drifts");
+    has(2, "symplectic Euler's stays bounded");
+    has(2, "Stormer-Verlet's stays bounded with a smaller oscillation");
+    has(3, "energy stays bounded");
+    has(4, "least accurate: explicit Euler");
+    has(5, "the energy decreases");
+}

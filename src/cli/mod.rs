@@ -9,6 +9,7 @@ mod progress;
 mod run;
 mod scene;
 mod study;
+mod tour;
 mod verify;
 mod verify_checks;
 mod verify_splitting;
@@ -52,6 +53,8 @@ enum Command {
     Scan(study::ScanArgs),
     /// Join the partial tables of a study run with --shard into its table and diagrams.
     Merge(study::MergeArgs),
+    /// Reproduce the experiments of SCENES.md: pictures, verdicts, index.html and summary.md.
+    Tour(tour::TourArgs),
     /// The built-in scenes: list them, or print one's TOML to copy and edit.
     Scene {
         #[command(subcommand)]
@@ -105,6 +108,7 @@ pub fn main() -> ExitCode {
         Command::Compare(args) => study::compare(&args),
         Command::Scan(args) => study::scan(&args),
         Command::Merge(args) => study::merge(&args),
+        Command::Tour(args) => tour::tour(&args),
         Command::Scene { command } => match command {
             SceneCommand::List => scene::list(),
             SceneCommand::Show { name } => scene::show(&name),
