@@ -1,6 +1,7 @@
 //! Methods as data: Butcher tableaus, splittings and compositions.
 
 mod butcher;
+mod file;
 mod info;
 mod splitting;
 mod splitting_file;

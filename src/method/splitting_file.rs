@@ -195,39 +195,15 @@ impl Splitting {
     /// Reads every splitting and composition of TOML text in the catalog's format (a
     /// `[[method]]` array; Butcher tableaus are skipped), or the one method at top level.
     pub fn all_from_toml_str(text: &str, origin: &str) -> Result<Vec<Self>, Error> {
-        let fail = |reason: String| Error::InvalidMethod {
-            name: origin.to_string(),
-            reason,
-        };
-        let value: toml::Table = text.parse().map_err(|e: toml::de::Error| fail(e.to_string()))?;
-        let entries = match value.get("method") {
-            Some(toml::Value::Array(list)) => list
-                .iter()
-                .filter(|m| m.get("family").and_then(|f| f.as_str()) != Some("butcher"))
-                .cloned()
-                .collect(),
-            Some(_) => return Err(fail("`method` must be an array of tables ([[method]])".into())),
-            None => vec![toml::Value::Table(value)],
-        };
-        entries
-            .into_iter()
-            .enumerate()
-            .map(|(i, entry)| {
-                let file: SplittingFile = entry
-                    .try_into()
-                    .map_err(|e: toml::de::Error| fail(format!("method {}: {}", i + 1, e.to_string().trim())))?;
-                file.into_splitting(origin)
-            })
-            .collect()
+        let not_butcher = |family: Option<&str>| family != Some("butcher");
+        super::file::read_entries(text, origin, not_butcher, |file: SplittingFile| {
+            file.into_splitting(origin)
+        })
     }
 
     /// Reads a method file from disk.
     pub fn from_file(path: &std::path::Path) -> Result<Self, Error> {
-        let origin = path.display().to_string();
-        let text = std::fs::read_to_string(path).map_err(|e| Error::InvalidMethod {
-            name: origin.clone(),
-            reason: format!("cannot read the file: {e}"),
-        })?;
+        let (text, origin) = super::file::read_file(path)?;
         Splitting::from_toml_str(&text, &origin)
     }
 }
