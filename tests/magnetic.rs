@@ -536,3 +536,35 @@ mod scenes {
         }
     }
 }
+
+/// A non-uniform field is read at the positions at the start of the drift for every
+/// particle, even when a particle's field depends on where the others are.
+#[test]
+fn the_drift_reads_every_field_before_moving_any_particle() {
+    use stormer::Splittable;
+    /// Particle 1 turns about z at a rate equal to particle 0's x coordinate.
+    #[derive(Clone, Copy)]
+    struct Coupled;
+    impl Lorentz for Coupled {
+        type Scalar = f64;
+        type State = [f64; 12];
+        fn omega(&self, k: usize, q: &[f64]) -> [f64; 3] {
+            if k == 0 {
+                [0.0; 3]
+            } else {
+                [0.0, 0.0, q[0]]
+            }
+        }
+        fn acceleration(&self, _t: f64, _q: &[f64], a: &mut [f64]) {
+            a.fill(0.0);
+        }
+    }
+    let (mut q, mut v) = ([1.0, 0.0, 0.0, 0.0, 0.0, 0.0], [1.0, 0.0, 0.0, 0.0, 1.0, 0.0]);
+    let mut scratch = [0.0; 6];
+    let mut cache = Default::default();
+    Charged(Coupled).drift(0.0, 0.5, &mut q, &mut v, &mut scratch, &mut cache);
+    // particle 1 turned at rate 1 (particle 0's x before the drift), not 1.5 (after)
+    let (mut q1, mut v1) = ([0.0, 0.0, 0.0], [0.0, 1.0, 0.0]);
+    Gyration::new([0.0, 0.0, 1.0], 0.5).apply(&mut q1, &mut v1);
+    assert!(distance(&q[3..], &q1) < 1e-15 && distance(&v[3..], &v1) < 1e-15);
+}

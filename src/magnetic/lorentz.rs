@@ -103,7 +103,7 @@ impl<L: Lorentz> Splittable for Charged<L> {
         tau: Self::Scalar,
         q: &mut [Self::Scalar],
         v: &mut [Self::Scalar],
-        _scratch: &mut [Self::Scalar],
+        scratch: &mut [Self::Scalar],
         cache: &mut Self::FlowCache,
     ) {
         if self.0.uniform() {
@@ -112,9 +112,15 @@ impl<L: Lorentz> Splittable for Charged<L> {
                 g.apply(q, v);
             }
         } else {
-            for k in 0..q.len() / 3 {
-                let g = Gyration::new(self.0.omega(k, q), tau);
-                g.apply(&mut q[3 * k..3 * k + 3], &mut v[3 * k..3 * k + 3]);
+            // every field first, at the positions at the start of the drift (a particle's
+            // field may depend on the others), kept in the scratch: 3 values per particle
+            let particles = q.len() / 3;
+            for k in 0..particles {
+                scratch[3 * k..3 * k + 3].copy_from_slice(&self.0.omega(k, q));
+            }
+            for k in 0..particles {
+                let w = [scratch[3 * k], scratch[3 * k + 1], scratch[3 * k + 2]];
+                Gyration::new(w, tau).apply(&mut q[3 * k..3 * k + 3], &mut v[3 * k..3 * k + 3]);
             }
         }
     }
