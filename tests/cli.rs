@@ -1667,3 +1667,28 @@ fn tour_writes_the_report_with_verdicts() {
     has(4, "least accurate: explicit Euler");
     has(5, "the energy decreases");
 }
+
+/// A blow-up is caught at the step where the state stops being finite; the records up to
+/// there stay in the CSV and the message says where it stopped (issue 6: nothing lost).
+#[test]
+fn a_blow_up_keeps_the_records_and_says_where() {
+    let dir = workdir("blow-up");
+    // explicit Euler on the oscillator grows by sqrt(1 + h^2) per step: 1.8x at h = 1.5
+    let out = stormer(
+        &dir,
+        &[
+            "run", "harmonic", "--method", "euler", "--dt", "1.5", "--t-end", "100000",
+        ],
+    );
+    assert_error(&out, "the state became non-finite at t = 553.5 (step 369)");
+    assert_error(
+        &out,
+        "370 records kept in out/harmonic-euler.csv, the last at t = 553.5",
+    );
+    let (header, rows) = read_csv(&dir.join("out/harmonic-euler.csv"));
+    assert_eq!(header, ["t", "x", "v", "energy"]);
+    assert_eq!(rows.len(), 370);
+    // the state is finite in every record kept (its square, the energy, overflows first)
+    assert!(rows.iter().all(|r| r[..3].iter().all(|x| x.is_finite())));
+    assert!((rows.last().unwrap()[0] - 553.5).abs() < 1e-9);
+}
