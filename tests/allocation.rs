@@ -1,39 +1,13 @@
-#![allow(unsafe_code)] // the counting allocator below; the library itself forbids unsafe code
+#![allow(unsafe_code)] // the counting allocator (tests/support/counting_alloc.rs); the library itself forbids unsafe code
 //! Stepping a static state never allocates: 1000 RK4 steps allocate exactly as much as 1.
 //!
-//! A counting global allocator (this test binary only) counts every allocation made by the
-//! calling thread (the test harness's own threads allocate at any time: a process-wide
-//! count made this test flaky on a loaded machine).
+//! A counting global allocator (tests/support/counting_alloc.rs) counts the calling
+//! thread's allocations (a process-wide count made this test flaky on a loaded machine).
 
-use std::alloc::{GlobalAlloc, Layout, System};
-use std::cell::Cell;
-
+#[path = "support/counting_alloc.rs"]
+mod counting_alloc;
+use counting_alloc::allocations;
 use stormer::{catalog::Rk4, Driver, ExplicitRk, Problem, Stepper};
-
-struct Counting;
-
-thread_local! {
-    // const-initialized: reading it never allocates (no lazy initialization)
-    static ALLOCATIONS: Cell<usize> = const { Cell::new(0) };
-}
-
-fn allocations() -> usize {
-    ALLOCATIONS.with(Cell::get)
-}
-
-unsafe impl GlobalAlloc for Counting {
-    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
-        // `try_with`: the thread's slot may already be gone while it shuts down
-        let _ = ALLOCATIONS.try_with(|n| n.set(n.get() + 1));
-        System.alloc(layout)
-    }
-    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
-        System.dealloc(ptr, layout)
-    }
-}
-
-#[global_allocator]
-static GLOBAL: Counting = Counting;
 
 struct Pendulum;
 

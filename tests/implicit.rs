@@ -1,4 +1,4 @@
-#![allow(unsafe_code)] // the counting allocator below; the library itself forbids unsafe code
+#![allow(unsafe_code)] // the counting allocator (tests/support/counting_alloc.rs); the library itself forbids unsafe code
 //! The implicit Runge-Kutta stepper: what the stage-equation solvers must guarantee.
 //!
 //! - symplectic (Gauss) methods keep quadratic invariants to round-off with both solvers,
@@ -13,8 +13,6 @@
 //! (The measured order of all 31 catalog methods is `tests/convergence.rs`; this file is
 //! about the solvers.)
 
-use std::alloc::{GlobalAlloc, Layout, System};
-use std::cell::Cell;
 use std::marker::PhantomData;
 
 use stormer::catalog::{
@@ -30,28 +28,9 @@ use stormer::{
 // ---------------------------------------------------------------------------------------
 // Allocation counting, per thread (tests run in parallel threads of this binary).
 
-struct Counting;
-
-thread_local! {
-    static ALLOCATIONS: Cell<usize> = const { Cell::new(0) };
-}
-
-unsafe impl GlobalAlloc for Counting {
-    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
-        let _ = ALLOCATIONS.try_with(|n| n.set(n.get() + 1));
-        System.alloc(layout)
-    }
-    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
-        System.dealloc(ptr, layout)
-    }
-}
-
-#[global_allocator]
-static GLOBAL: Counting = Counting;
-
-fn allocations() -> usize {
-    ALLOCATIONS.with(Cell::get)
-}
+#[path = "support/counting_alloc.rs"]
+mod counting_alloc;
+use counting_alloc::allocations;
 
 // ---------------------------------------------------------------------------------------
 // Problems.

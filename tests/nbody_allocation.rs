@@ -1,41 +1,17 @@
-#![allow(unsafe_code)] // the counting allocator below; the library itself forbids unsafe code
+#![allow(unsafe_code)] // the counting allocator (tests/support/counting_alloc.rs); the library itself forbids unsafe code
 //! N-body stepping never allocates: 1000 splitting steps on the outer solar system
 //! allocate nothing on a static state, and as much as one step on the scene file's
 //! `DVector` state (the driver allocates its records, never per step).
 //!
-//! A counting global allocator (this test binary only) counts every allocation made by the
-//! calling thread (the test harness's threads allocate at any time).
+//! A counting global allocator (tests/support/counting_alloc.rs) counts the calling
+//! thread's allocations.
 
-use std::alloc::{GlobalAlloc, Layout, System};
-use std::cell::Cell;
-
+#[path = "support/counting_alloc.rs"]
+mod counting_alloc;
+use counting_alloc::allocations;
 use stormer::catalog::{TripleJump4, VelocityVerletKdk};
 use stormer::scenes::{self, AnyScene, NBody};
 use stormer::{Driver, SplittingMethod, SplittingStepper, Stepper};
-
-struct Counting;
-
-thread_local! {
-    // const-initialized: reading it never allocates
-    static ALLOCATIONS: Cell<usize> = const { Cell::new(0) };
-}
-
-fn allocations() -> usize {
-    ALLOCATIONS.with(Cell::get)
-}
-
-unsafe impl GlobalAlloc for Counting {
-    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
-        let _ = ALLOCATIONS.try_with(|n| n.set(n.get() + 1));
-        System.alloc(layout)
-    }
-    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
-        System.dealloc(ptr, layout)
-    }
-}
-
-#[global_allocator]
-static GLOBAL: Counting = Counting;
 
 type Static = NBody<f64, [f64; 24]>;
 

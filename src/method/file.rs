@@ -42,6 +42,17 @@ where
         .collect()
 }
 
+/// The one method of `all`, or an error saying how many `what` the file holds.
+pub(super) fn exactly_one<M>(mut all: Vec<M>, origin: &str, what: &str) -> Result<M, Error> {
+    match all.len() {
+        1 => Ok(all.remove(0)),
+        n => Err(Error::InvalidMethod {
+            name: origin.to_string(),
+            reason: format!("the file holds {n} {what}; give a file with one"),
+        }),
+    }
+}
+
 /// The text of the method file at `path` and its name for messages.
 pub(super) fn read_file(path: &std::path::Path) -> Result<(String, String), Error> {
     let origin = path.display().to_string();

@@ -182,14 +182,8 @@ impl Splitting {
     /// assert!(bad.unwrap_err().to_string().contains("sum gamma_i = 1 fails"));
     /// ```
     pub fn from_toml_str(text: &str, origin: &str) -> Result<Self, Error> {
-        let mut all = Splitting::all_from_toml_str(text, origin)?;
-        match all.len() {
-            1 => Ok(all.remove(0)),
-            n => Err(Error::InvalidMethod {
-                name: origin.to_string(),
-                reason: format!("expected one splitting or composition, found {n}"),
-            }),
-        }
+        let all = Splitting::all_from_toml_str(text, origin)?;
+        super::file::exactly_one(all, origin, "splittings or compositions")
     }
 
     /// Reads every splitting and composition of TOML text in the catalog's format (a

@@ -75,14 +75,7 @@ impl Tableau {
     /// method at top level, or a `[[method]]` array holding exactly one Butcher method.
     /// `origin` (a file name) is used in error messages.
     pub fn from_toml_str(text: &str, origin: &str) -> Result<Self, Error> {
-        let mut all = Tableau::all_from_toml_str(text, origin)?;
-        match all.len() {
-            1 => Ok(all.remove(0)),
-            n => Err(Error::InvalidMethod {
-                name: origin.to_string(),
-                reason: format!("the file holds {n} Butcher methods; give a file with one"),
-            }),
-        }
+        super::file::exactly_one(Tableau::all_from_toml_str(text, origin)?, origin, "Butcher methods")
     }
 
     /// Reads every Butcher method of TOML text in the catalog's format (a `[[method]]`
