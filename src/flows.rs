@@ -37,11 +37,62 @@ pub trait Splittable: Problem {
         cache: &mut Self::FlowCache,
     );
 
+    /// The drift's increment, for compensated summation: ADDS to `(dq, dp)` what
+    /// [`Splittable::drift`] for time `tau` from `t` would add to `(q, p)`, leaving `q` and
+    /// `p` as they are. `scratch` is `3n` values of workspace.
+    ///
+    /// A compensated stepper ([`crate::Stepper::set_compensated`]) sums a step's
+    /// increments apart from the state and adds them once, with Kahan's carry; the benefit
+    /// comes from increments computed without forming the new state. The provided form
+    /// does form it (the drift applied to a copy, minus the start), so the rounding of the
+    /// new state stays in the increment: a problem that keeps this default gets no
+    /// compensation benefit for its drift. Every [`crate::Hamiltonian`] and
+    /// [`crate::magnetic::Charged`] model has an exact increment form.
+    ///
+    /// ```
+    /// use stormer::{Hamiltonian, Splittable};
+    /// struct Free;
+    /// impl Hamiltonian for Free {
+    ///     type Scalar = f64;
+    ///     type State = [f64; 2];
+    ///     fn force(&self, _t: f64, _q: &[f64], f: &mut [f64]) { f[0] = 0.0; }
+    /// }
+    /// let (mut dq, mut dp, mut scratch) = ([1.0], [0.0], [0.0; 3]);
+    /// Free.drift_increment(0.0, 0.5, &[10.0], &[2.0], &mut dq, &mut dp, &mut scratch, &mut ());
+    /// assert_eq!((dq, dp), ([2.0], [0.0])); // 1 + 0.5 * 2
+    /// ```
+    #[allow(clippy::too_many_arguments)]
+    fn drift_increment(
+        &self,
+        t: Self::Scalar,
+        tau: Self::Scalar,
+        q: &[Self::Scalar],
+        p: &[Self::Scalar],
+        dq: &mut [Self::Scalar],
+        dp: &mut [Self::Scalar],
+        scratch: &mut [Self::Scalar],
+        cache: &mut Self::FlowCache,
+    ) {
+        let n = q.len();
+        let (moved_q, rest) = scratch.split_at_mut(n);
+        let (moved_p, drift_scratch) = rest.split_at_mut(n);
+        moved_q.copy_from_slice(q);
+        moved_p.copy_from_slice(p);
+        self.drift(t, tau, moved_q, moved_p, drift_scratch, cache);
+        for (d, (&new, &old)) in dq.iter_mut().zip(moved_q.iter().zip(q)) {
+            *d += new - old;
+        }
+        for (d, (&new, &old)) in dp.iter_mut().zip(moved_p.iter().zip(p)) {
+            *d += new - old;
+        }
+    }
+
     /// The force (the rate of `p` under the kick) at `(t, q)`, written into `f`.
     fn force(&self, t: Self::Scalar, q: &[Self::Scalar], f: &mut [Self::Scalar]);
 
     /// The exact flow of the second part: `p += tau f`, `f` being [`Splittable::force`] at
-    /// the current `(t, q)`.
+    /// the current `(t, q)`. A compensated stepper applies it to the step's momentum
+    /// increment instead of `p`, so it must add a term that does not depend on `p`.
     #[inline(always)]
     fn kick(&self, tau: Self::Scalar, f: &[Self::Scalar], p: &mut [Self::Scalar]) {
         kick(tau, f, p)

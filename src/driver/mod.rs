@@ -63,6 +63,7 @@ pub struct Driver<'a, T: Real, S> {
     every: u64,
     max_steps: u64,
     stop: Option<StopFn<'a, T, S>>,
+    compensated: bool,
 }
 
 impl<'a, T: Real, S: State<Scalar = T>> Driver<'a, T, S> {
@@ -87,6 +88,7 @@ impl<'a, T: Real, S: State<Scalar = T>> Driver<'a, T, S> {
             every: 1,
             max_steps: 100_000_000,
             stop: None,
+            compensated: false,
         }
     }
 
@@ -99,6 +101,29 @@ impl<'a, T: Real, S: State<Scalar = T>> Driver<'a, T, S> {
     /// Give up after `n` steps (default 1e8).
     pub fn max_steps(mut self, n: u64) -> Self {
         self.max_steps = n;
+        self
+    }
+
+    /// Compensated (Kahan) summation: the run turns it on in the stepper
+    /// ([`Stepper::set_compensated`]) and fails at once, before any step, if the stepper
+    /// has no compensated form. For long runs with small steps, where round-off dominates
+    /// the error (docs/stability-and-limits.md).
+    ///
+    /// ```
+    /// use stormer::{registry, Driver, SecondOrder};
+    /// struct Oscillator;
+    /// impl SecondOrder for Oscillator {
+    ///     type Scalar = f64;
+    ///     type State = [f64; 2];
+    ///     fn acceleration(&self, _t: f64, q: &[f64], a: &mut [f64]) { a[0] = -q[0]; }
+    /// }
+    /// let y0 = [1.0, 0.0];
+    /// let mut verlet = registry::splitting_stepper::<Oscillator>("velocity_verlet_kdk", &y0).unwrap();
+    /// let solution = Driver::fixed(1.0 / 64.0).compensated().run(&Oscillator, &mut verlet, 0.0, &y0, 10.0).unwrap();
+    /// assert_eq!(solution.stats.steps, 640);
+    /// ```
+    pub fn compensated(mut self) -> Self {
+        self.compensated = true;
         self
     }
 
@@ -161,6 +186,13 @@ impl<'a, T: Real, S: State<Scalar = T>> Driver<'a, T, S> {
                     Ok(())
                 } else {
                     Err(Error::invalid("initial state", "has a non-finite component"))
+                }
+            })
+            .and_then(|_| {
+                if self.compensated {
+                    stepper.set_compensated(true)
+                } else {
+                    Ok(())
                 }
             })
             .and_then(|_| out.record(t0, y0, p.energy(t0, y0)));

@@ -101,6 +101,26 @@ impl<H: Hamiltonian> Splittable for H {
         }
     }
 
+    /// `dq += tau dT/dp(p)`, the velocity in the first `n` values of `scratch`.
+    #[inline(always)]
+    fn drift_increment(
+        &self,
+        _t: Self::Scalar,
+        tau: Self::Scalar,
+        _q: &[Self::Scalar],
+        p: &[Self::Scalar],
+        dq: &mut [Self::Scalar],
+        _dp: &mut [Self::Scalar],
+        scratch: &mut [Self::Scalar],
+        _cache: &mut (),
+    ) {
+        let v = &mut scratch[..p.len()];
+        self.kinetic_gradient(p, v);
+        for (dq, &v) in dq.iter_mut().zip(v.iter()) {
+            *dq += tau * v;
+        }
+    }
+
     #[inline(always)]
     fn force(&self, t: Self::Scalar, q: &[Self::Scalar], f: &mut [Self::Scalar]) {
         Hamiltonian::force(self, t, q, f)

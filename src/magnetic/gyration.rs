@@ -117,6 +117,32 @@ impl<T: Real> Gyration<T> {
             v[i] += e1 * a[i] + e2 * b[i];
         }
     }
+
+    /// The flow's increment for one particle at velocity `v`, ADDED to `dq` and `dv`
+    /// (what [`Gyration::apply`] adds to `q` and `v`, without forming the new state; the
+    /// form compensated summation needs).
+    ///
+    /// ```
+    /// use stormer::magnetic::Gyration;
+    /// let g = Gyration::new([0.0, 0.0, 1.0], 0.3);
+    /// let (mut q, mut v) = ([1.0, 2.0, 3.0], [0.5, -0.25, 1.0]);
+    /// let (mut dq, mut dv) = ([0.0; 3], [0.0; 3]);
+    /// g.increment(&v, &mut dq, &mut dv);
+    /// let (q0, v0) = (q, v);
+    /// g.apply(&mut q, &mut v);
+    /// assert!((0..3).all(|i| (q0[i] + dq[i] - q[i]).abs() < 1e-15 && (v0[i] + dv[i] - v[i]).abs() < 1e-15));
+    /// ```
+    #[inline(always)]
+    pub fn increment(&self, v: &[T], dq: &mut [T], dv: &mut [T]) {
+        let w = self.omega;
+        let a = cross(&w, v);
+        let b = cross(&w, &a);
+        let [e1, e2, e3] = self.weights;
+        for i in 0..3 {
+            dq[i] += self.tau * v[i] + e2 * a[i] + e3 * b[i];
+            dv[i] += e1 * a[i] + e2 * b[i];
+        }
+    }
 }
 
 /// `u x v` for 3-vectors.

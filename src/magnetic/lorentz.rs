@@ -125,6 +125,34 @@ impl<L: Lorentz> Splittable for Charged<L> {
         }
     }
 
+    /// The gyration's increments (compensated summation): [`Gyration::increment`] of every
+    /// particle, the field read at `q`.
+    fn drift_increment(
+        &self,
+        _t: Self::Scalar,
+        tau: Self::Scalar,
+        q: &[Self::Scalar],
+        v: &[Self::Scalar],
+        dq: &mut [Self::Scalar],
+        dv: &mut [Self::Scalar],
+        _scratch: &mut [Self::Scalar],
+        cache: &mut Self::FlowCache,
+    ) {
+        let particles = q.len() / 3;
+        let (dq, dv) = (dq.chunks_exact_mut(3), dv.chunks_exact_mut(3));
+        if self.0.uniform() {
+            let gyrations = cache.get(tau, particles, |k| Gyration::new(self.0.omega(k, q), tau));
+            for ((g, v), (dq, dv)) in gyrations.iter().zip(v.chunks_exact(3)).zip(dq.zip(dv)) {
+                g.increment(v, dq, dv);
+            }
+        } else {
+            // `q` does not move here, so each field can be read as it is needed
+            for (k, (v, (dq, dv))) in v.chunks_exact(3).zip(dq.zip(dv)).enumerate() {
+                Gyration::new(self.0.omega(k, q), tau).increment(v, dq, dv);
+            }
+        }
+    }
+
     #[inline(always)]
     fn force(&self, t: Self::Scalar, q: &[Self::Scalar], f: &mut [Self::Scalar]) {
         self.0.acceleration(t, q, f)

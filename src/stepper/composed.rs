@@ -108,6 +108,12 @@ impl<P: Problem> Stepper<P> for Composed<P> {
         self.base.reset();
     }
 
+    /// Compensated summation of the base: each substep starts from the state the previous
+    /// one produced, so the base's carry runs through the whole composition.
+    fn set_compensated(&mut self, on: bool) -> Result<(), Error> {
+        self.base.set_compensated(on)
+    }
+
     fn counters(&self) -> Counters {
         self.base.counters()
     }

@@ -1,6 +1,7 @@
 //! The stepper of a compiled explicit tableau: the macro's unrolled stages, plus FSAL
 //! bookkeeping and the error estimate.
 
+use super::compensated::CompensatedCombination;
 use super::{Counters, Stepper, Tolerances};
 use crate::method::ExplicitMethod;
 #[allow(unused_imports)]
@@ -29,6 +30,8 @@ pub struct ExplicitRk<M: ExplicitMethod, S: State> {
     err: Option<S>,
     err3: Option<S>,
     k0_valid: bool,
+    /// The final combination summed with a carry, when turned on.
+    compensated: Option<CompensatedCombination<S>>,
     counters: Counters,
 }
 
@@ -42,6 +45,7 @@ impl<M: ExplicitMethod, S: State> ExplicitRk<M, S> {
             err: data.b_hat.map(|_| y0.zeros_like()),
             err3: data.b_hat3.map(|_| y0.zeros_like()),
             k0_valid: false,
+            compensated: None,
             counters: Counters::default(),
         }
     }
@@ -92,6 +96,9 @@ where
         tol: Option<&Tolerances<P::Scalar>>,
     ) -> Result<Option<P::Scalar>, Error> {
         self.advance(p, t, h, y, y_new);
+        if let Some(sum) = self.compensated.as_mut() {
+            sum.combine(h, y, &self.k, y_new);
+        }
         let (Some(tol), Some(err)) = (tol, self.err.as_mut()) else {
             return Ok(None);
         };
@@ -107,7 +114,11 @@ where
     }
 
     fn accept(&mut self) {
-        if M::DATA.flags.fsal {
+        if let Some(sum) = self.compensated.as_mut() {
+            // the last stage was evaluated at the uncompensated y_new: no FSAL reuse
+            sum.accept();
+            self.k0_valid = false;
+        } else if M::DATA.flags.fsal {
             let s = self.k.len();
             self.k.swap(0, s - 1);
         } else {
@@ -117,6 +128,18 @@ where
 
     fn reset(&mut self) {
         self.k0_valid = false;
+        if let Some(sum) = self.compensated.as_mut() {
+            sum.reset();
+        }
+    }
+
+    fn set_compensated(&mut self, on: bool) -> Result<(), Error> {
+        match (on, &self.compensated) {
+            (true, None) => self.compensated = Some(CompensatedCombination::new(M::DATA.b, &self.k[0])),
+            (false, _) => self.compensated = None,
+            (true, Some(_)) => {}
+        }
+        Ok(())
     }
 
     fn counters(&self) -> Counters {

@@ -15,6 +15,7 @@
 
 mod newton;
 
+use super::compensated::CompensatedSum;
 use super::{Counters, Stepper, Tolerances};
 use crate::real::magnitude;
 #[allow(unused_imports)]
@@ -314,6 +315,8 @@ pub struct ImplicitRk<S: State> {
     newton: Option<Newton<S>>,
     /// `h` of the last successful step (what [`Stepper::accept`] keeps).
     last_h: Option<S::Scalar>,
+    /// The final update added with a carry, when compensated summation is on.
+    compensated: Option<CompensatedSum<S>>,
     counters: Counters,
 }
 
@@ -399,6 +402,7 @@ impl<S: State> ImplicitRk<S> {
             },
             newton: None,
             last_h: None,
+            compensated: None,
             counters: Counters::default(),
         }
     }
@@ -605,32 +609,43 @@ impl<S: State> ImplicitRk<S> {
     }
 
     /// `y_new` from the converged stages.
-    fn finish(&self, h: S::Scalar, y: &S, y_new: &mut S) {
-        let out = y_new.as_mut_slice();
-        let y = y.as_slice();
+    fn finish(&mut self, h: S::Scalar, y: &S, y_new: &mut S) {
+        if let Some(mut sum) = self.compensated.take() {
+            sum.add_with(y, y_new, |delta| self.increment(h, |m, inc| delta[m] = inc));
+            self.compensated = Some(sum);
+        } else {
+            let (out, y) = (y_new.as_mut_slice(), y.as_slice());
+            self.increment(h, |m, inc| out[m] = y[m] + inc);
+        }
+    }
+
+    /// The step's increment `y_new - y`, component `m` handed to `put(m, increment)`.
+    #[inline(always)]
+    fn increment(&self, h: S::Scalar, mut put: impl FnMut(usize, S::Scalar)) {
+        let dim = self.stage.dim();
         match &self.update {
             Update::LastStage => {
                 let zs = self.z[self.z.len() - 1].as_slice();
-                for m in 0..out.len() {
-                    out[m] = y[m] + zs[m];
+                for (m, &z) in zs.iter().enumerate() {
+                    put(m, z);
                 }
             }
             Update::Weights => {
-                for m in 0..out.len() {
+                for m in 0..dim {
                     let mut sum = S::Scalar::zero();
                     for &(i, b) in &self.b {
                         sum += b * self.f[i].as_slice()[m];
                     }
-                    out[m] = y[m] + h * sum;
+                    put(m, h * sum);
                 }
             }
             Update::Inverse(d) => {
-                for m in 0..out.len() {
+                for m in 0..dim {
                     let mut sum = S::Scalar::zero();
                     for (i, &d) in d.iter().enumerate() {
                         sum += d * self.z[i].as_slice()[m];
                     }
-                    out[m] = y[m] + sum;
+                    put(m, sum);
                 }
             }
         }
@@ -692,6 +707,9 @@ impl<P: Problem> Stepper<P> for ImplicitRk<P::State> {
     }
 
     fn accept(&mut self) {
+        if let Some(sum) = self.compensated.as_mut() {
+            sum.accept();
+        }
         if let Some(h) = self.last_h.take() {
             let g = &mut self.guess;
             for (prev, z) in g.previous.iter_mut().zip(&self.z) {
@@ -705,6 +723,18 @@ impl<P: Problem> Stepper<P> for ImplicitRk<P::State> {
     fn reset(&mut self) {
         self.guess.valid = false;
         self.last_h = None;
+        if let Some(sum) = self.compensated.as_mut() {
+            sum.reset();
+        }
+    }
+
+    fn set_compensated(&mut self, on: bool) -> Result<(), Error> {
+        match (on, &self.compensated) {
+            (true, None) => self.compensated = Some(CompensatedSum::new(&self.stage)),
+            (false, _) => self.compensated = None,
+            (true, Some(_)) => {}
+        }
+        Ok(())
     }
 
     fn counters(&self) -> Counters {

@@ -3,6 +3,7 @@
 //! A stepper owns its stage buffers, so stepping never allocates for static states.
 
 mod boris;
+mod compensated;
 mod composed;
 mod error_norm;
 mod euler_cromer;
@@ -89,6 +90,41 @@ pub trait Stepper<P: Problem> {
     /// Forgets cached stage values (the state was changed from outside).
     fn reset(&mut self);
 
+    /// Turns compensated (Kahan) summation on or off: the step's increment is summed
+    /// apart from the state and added with a carry of what rounding lost, so that in long
+    /// runs with small steps the round-off per step is of order `eps h |y|` instead of
+    /// `eps |y|` (Brouwer's law; see docs/stability-and-limits.md). The carry is kept
+    /// only while each step starts from the state the previous one produced; a change
+    /// from outside or [`Stepper::reset`] drops it. Costlier per step than the plain form.
+    ///
+    /// Explicit and implicit Runge-Kutta steppers, splittings and compositions have a
+    /// compensated form; the default refuses to turn it on.
+    ///
+    /// ```
+    /// use stormer::{catalog::Rk4, ExplicitRk, Problem, Stepper};
+    /// struct Decay;
+    /// impl Problem for Decay {
+    ///     type Scalar = f64;
+    ///     type State = [f64; 1];
+    ///     fn rhs(&self, _t: f64, y: &[f64; 1], dy: &mut [f64; 1]) { dy[0] = -y[0]; }
+    /// }
+    /// let mut rk4 = ExplicitRk::<Rk4, [f64; 1]>::new(&[1.0]);
+    /// Stepper::<Decay>::set_compensated(&mut rk4, true).unwrap();
+    /// let mut y = [0.0];
+    /// rk4.step(&Decay, 0.0, 0.1, &[1.0], &mut y, None).unwrap();
+    /// assert!((y[0] - (-0.1f64).exp()).abs() < 1e-7);
+    /// ```
+    fn set_compensated(&mut self, on: bool) -> Result<(), Error> {
+        if on {
+            Err(Error::Unsupported {
+                name: self.info().name,
+                reason: "it has no compensated form (set_compensated, --compensated)".into(),
+            })
+        } else {
+            Ok(())
+        }
+    }
+
     /// Work counters.
     fn counters(&self) -> Counters;
 }
@@ -124,6 +160,9 @@ impl<P: Problem, St: Stepper<P> + ?Sized> Stepper<P> for Box<St> {
     }
     fn reset(&mut self) {
         (**self).reset()
+    }
+    fn set_compensated(&mut self, on: bool) -> Result<(), Error> {
+        (**self).set_compensated(on)
     }
     fn counters(&self) -> Counters {
         (**self).counters()

@@ -1,5 +1,6 @@
 //! The generic explicit stepper over a tableau known only at run time.
 
+use super::compensated::CompensatedCombination;
 use super::{Counters, Stepper, Tolerances};
 #[allow(unused_imports)]
 use crate::real::ops::*;
@@ -35,6 +36,10 @@ pub struct RuntimeRk<S: State> {
     err: S,
     err3: S,
     k0_valid: bool,
+    /// The weights `b` as declared, for the compensated combination.
+    b_declared: Vec<f64>,
+    /// The final combination summed with a carry, when turned on.
+    compensated: Option<CompensatedCombination<S>>,
     counters: Counters,
 }
 
@@ -65,6 +70,8 @@ impl<S: State> RuntimeRk<S> {
             err: y0.zeros_like(),
             err3: y0.zeros_like(),
             k0_valid: false,
+            b_declared: tableau.b().to_vec(),
+            compensated: None,
             counters: Counters::default(),
         })
     }
@@ -123,7 +130,10 @@ impl<P: Problem> Stepper<P> for RuntimeRk<P::State> {
             p.rhs(ti, y_new, &mut self.k[i]);
             self.counters.evaluations += 1;
         }
-        combine(y_new, Some(y), h, &self.b, &self.k);
+        match self.compensated.as_mut() {
+            Some(sum) => sum.combine(h, y, &self.k, y_new),
+            None => combine(y_new, Some(y), h, &self.b, &self.k),
+        }
         self.k0_valid = true;
         let (Some(tol), Some(d)) = (tol, self.d.as_ref()) else {
             return Ok(None);
@@ -140,7 +150,11 @@ impl<P: Problem> Stepper<P> for RuntimeRk<P::State> {
     }
 
     fn accept(&mut self) {
-        if self.fsal {
+        if let Some(sum) = self.compensated.as_mut() {
+            // the last stage was evaluated at the uncompensated y_new: no FSAL reuse
+            sum.accept();
+            self.k0_valid = false;
+        } else if self.fsal {
             let s = self.k.len();
             self.k.swap(0, s - 1);
         } else {
@@ -150,6 +164,18 @@ impl<P: Problem> Stepper<P> for RuntimeRk<P::State> {
 
     fn reset(&mut self) {
         self.k0_valid = false;
+        if let Some(sum) = self.compensated.as_mut() {
+            sum.reset();
+        }
+    }
+
+    fn set_compensated(&mut self, on: bool) -> Result<(), Error> {
+        match (on, &self.compensated) {
+            (true, None) => self.compensated = Some(CompensatedCombination::new(&self.b_declared, &self.k[0])),
+            (false, _) => self.compensated = None,
+            (true, Some(_)) => {}
+        }
+        Ok(())
     }
 
     fn counters(&self) -> Counters {

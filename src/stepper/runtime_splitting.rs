@@ -2,6 +2,7 @@
 //! sub-flows as a generated stepper, read from a list (same operation order, so the
 //! trajectories are bitwise equal).
 
+use super::compensated::CompensatedWord;
 use super::splitting::check_phase_space;
 use super::{Counters, Stepper, Tolerances};
 use crate::flows::Splittable;
@@ -35,6 +36,8 @@ pub struct RuntimeSplitting<S: State, C = ()> {
     work: S,
     cached: bool,
     fresh: bool,
+    /// The word in increment form with Kahan's carry, when compensated summation is on.
+    compensated: Option<CompensatedWord<S>>,
     counters: Counters,
 }
 
@@ -69,6 +72,7 @@ impl<S: State, C: Default> RuntimeSplitting<S, C> {
             work: y0.zeros_like(),
             cached: false,
             fresh: false,
+            compensated: None,
             counters: Counters::default(),
         })
     }
@@ -115,6 +119,10 @@ impl<P: Splittable> Stepper<P> for RuntimeSplitting<P::State, P::FlowCache> {
         y_new: &mut P::State,
         _tol: Option<&Tolerances<P::Scalar>>,
     ) -> Result<Option<P::Scalar>, Error> {
+        if let Some(word) = self.compensated.as_mut() {
+            self.counters.evaluations += word.step(p, t, h, y, y_new, &mut self.cache);
+            return Ok(None);
+        }
         let cached = self.cached && self.fsal;
         self.cached = false;
         y_new.copy_from(y);
@@ -128,6 +136,10 @@ impl<P: Splittable> Stepper<P> for RuntimeSplitting<P::State, P::FlowCache> {
     }
 
     fn step_in_place(&mut self, p: &P, t: P::Scalar, h: P::Scalar, y: &mut P::State) -> Result<(), Error> {
+        if let Some(word) = self.compensated.as_mut() {
+            self.counters.evaluations += word.step_in_place(p, t, h, y, &mut self.cache);
+            return Ok(());
+        }
         let cached = self.cached && self.fsal;
         self.flows(p, t, h, y, cached);
         self.cached = self.fsal;
@@ -137,11 +149,29 @@ impl<P: Splittable> Stepper<P> for RuntimeSplitting<P::State, P::FlowCache> {
 
     fn accept(&mut self) {
         self.cached = self.fresh;
+        if let Some(word) = self.compensated.as_mut() {
+            word.accept();
+        }
     }
 
     fn reset(&mut self) {
         self.cached = false;
         self.fresh = false;
+        if let Some(word) = self.compensated.as_mut() {
+            word.reset();
+        }
+    }
+
+    fn set_compensated(&mut self, on: bool) -> Result<(), Error> {
+        // the compensated form evaluates every force of the word: no cached one is reused
+        self.cached = false;
+        self.fresh = false;
+        match (on, &self.compensated) {
+            (true, None) => self.compensated = Some(CompensatedWord::new(self.ops.clone(), &self.work)),
+            (false, _) => self.compensated = None,
+            (true, Some(_)) => {}
+        }
+        Ok(())
     }
 
     fn counters(&self) -> Counters {

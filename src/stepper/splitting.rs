@@ -1,6 +1,7 @@
 //! The stepper of a compiled splitting or composition: the macro's unrolled word of
 //! sub-flows, plus the reuse of the last force of a step by the next (FSAL).
 
+use super::compensated::CompensatedWord;
 use super::{Counters, Stepper, Tolerances};
 use crate::flows::Admits;
 use crate::hamiltonian::halves_mut;
@@ -38,6 +39,8 @@ pub struct SplittingStepper<M: SplittingMethod, S: State, C = ()> {
     cached: bool,
     /// The last step left the force at its `y_new` in `f`.
     fresh: bool,
+    /// The word in increment form with Kahan's carry, when compensated summation is on.
+    compensated: Option<CompensatedWord<S>>,
     counters: Counters,
 }
 
@@ -51,6 +54,7 @@ impl<M: SplittingMethod, S: State, C: Default> SplittingStepper<M, S, C> {
             work: y0.zeros_like(),
             cached: false,
             fresh: false,
+            compensated: None,
             counters: Counters::default(),
         })
     }
@@ -120,6 +124,10 @@ where
         y_new: &mut P::State,
         _tol: Option<&Tolerances<P::Scalar>>,
     ) -> Result<Option<P::Scalar>, Error> {
+        if let Some(word) = self.compensated.as_mut() {
+            self.counters.evaluations += word.step(p, t, h, y, y_new, &mut self.cache);
+            return Ok(None);
+        }
         // the cached force is valid for this step only if nothing ran since `accept`
         let cached = self.cached && M::DATA.flags.fsal;
         self.cached = false;
@@ -135,6 +143,10 @@ where
 
     #[inline(always)]
     fn step_in_place(&mut self, p: &P, t: P::Scalar, h: P::Scalar, y: &mut P::State) -> Result<(), Error> {
+        if let Some(word) = self.compensated.as_mut() {
+            self.counters.evaluations += word.step_in_place(p, t, h, y, &mut self.cache);
+            return Ok(());
+        }
         let cached = self.cached && M::DATA.flags.fsal;
         self.flows(p, t, h, y, cached);
         self.cached = M::DATA.flags.fsal;
@@ -144,11 +156,29 @@ where
 
     fn accept(&mut self) {
         self.cached = self.fresh;
+        if let Some(word) = self.compensated.as_mut() {
+            word.accept();
+        }
     }
 
     fn reset(&mut self) {
         self.cached = false;
         self.fresh = false;
+        if let Some(word) = self.compensated.as_mut() {
+            word.reset();
+        }
+    }
+
+    fn set_compensated(&mut self, on: bool) -> Result<(), Error> {
+        // the compensated form evaluates every force of the word: no cached one is reused
+        self.cached = false;
+        self.fresh = false;
+        match (on, &self.compensated) {
+            (true, None) => self.compensated = Some(CompensatedWord::from_word(&M::DATA.word(), &self.work)),
+            (false, _) => self.compensated = None,
+            (true, Some(_)) => {}
+        }
+        Ok(())
     }
 
     fn counters(&self) -> Counters {
