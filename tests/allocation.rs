@@ -7,7 +7,8 @@
 #[path = "support/counting_alloc.rs"]
 mod counting_alloc;
 use counting_alloc::allocations;
-use stormer::{catalog::Rk4, Driver, ExplicitRk, Problem, Stepper};
+use stormer::catalog::{Rk4, TripleJump4};
+use stormer::{Driver, ExplicitRk, Problem, SecondOrder, SplittingStepper, Stepper};
 
 struct Pendulum;
 
@@ -59,4 +60,65 @@ fn a_thousand_steps_allocate_as_much_as_one() {
     assert_eq!(one, 0);
     // The driver allocates its records, never per step.
     assert_eq!(driver_allocations_for(1), driver_allocations_for(1000));
+}
+
+/// The pendulum in second-order form, for the splittings.
+struct Swing;
+
+impl SecondOrder for Swing {
+    type Scalar = f64;
+    type State = nalgebra::SVector<f64, 2>;
+    fn acceleration(&self, _t: f64, q: &[f64], a: &mut [f64]) {
+        a[0] = -q[0].sin();
+    }
+}
+
+/// Compensated steps of RK4 and of a composition (step and accept, and in place), the
+/// buffers made when compensation is turned on.
+fn compensated_allocations_for(steps: usize) -> usize {
+    let y0 = nalgebra::SVector::<f64, 2>::new(0.5, 0.0);
+    let mut rk4 = ExplicitRk::<Rk4, _>::new(&y0);
+    Stepper::<Pendulum>::set_compensated(&mut rk4, true).unwrap();
+    let mut jump = SplittingStepper::<TripleJump4, _>::new(&y0).unwrap();
+    Stepper::<Swing>::set_compensated(&mut jump, true).unwrap();
+    let (mut y, mut y_new, mut z) = (y0, y0, y0);
+    let before = allocations();
+    for i in 0..steps {
+        let t = i as f64 * 0.01;
+        rk4.step(&Pendulum, t, 0.01, &y, &mut y_new, None).unwrap();
+        Stepper::<Pendulum>::accept(&mut rk4);
+        core::mem::swap(&mut y, &mut y_new);
+        jump.step(&Swing, t, 0.01, &z, &mut y_new, None).unwrap();
+        Stepper::<Swing>::accept(&mut jump);
+        z = y_new;
+        jump.step_in_place(&Swing, t, 0.01, &mut z).unwrap();
+    }
+    let after = allocations();
+    assert!(y.iter().chain(z.iter()).all(|x| x.is_finite()));
+    after - before
+}
+
+fn compensated_driver_allocations_for(steps: u64) -> usize {
+    let y0 = nalgebra::SVector::<f64, 2>::new(0.5, 0.0);
+    let mut jump = SplittingStepper::<TripleJump4, _>::new(&y0).unwrap();
+    Stepper::<Swing>::set_compensated(&mut jump, true).unwrap();
+    let before = allocations();
+    let solution = Driver::fixed(0.01)
+        .every(u64::MAX)
+        .compensated()
+        .run(&Swing, &mut jump, 0.0, &y0, steps as f64 * 0.01)
+        .unwrap();
+    let after = allocations();
+    assert_eq!(solution.stats.steps, steps);
+    after - before
+}
+
+#[test]
+fn compensated_steps_do_not_allocate() {
+    assert_eq!(compensated_allocations_for(1), 0);
+    assert_eq!(compensated_allocations_for(1000), 0);
+    assert_eq!(
+        compensated_driver_allocations_for(1),
+        compensated_driver_allocations_for(1000)
+    );
 }

@@ -1692,3 +1692,34 @@ fn a_blow_up_keeps_the_records_and_says_where() {
     assert!(rows.iter().all(|r| r[..3].iter().all(|x| x.is_finite())));
     assert!((rows.last().unwrap()[0] - 553.5).abs() < 1e-9);
 }
+
+#[test]
+fn compensated_summation_keeps_round_off_down_on_a_long_run() {
+    let dir = workdir("compensated");
+    // The cyclotron's magnetic Verlet is exact but for round-off: 1000 turns in 1e5 steps
+    let run = |extra: &[&str]| {
+        let mut args = vec!["run", "cyclotron", "--dt", "0.0625", "--t-end", "6283.185307179586"];
+        args.extend_from_slice(&["--every", "100000"]);
+        args.extend_from_slice(extra);
+        let out = stormer(&dir, &args);
+        assert_ok(&out);
+        let summary = stderr(&out);
+        assert!(summary.contains("100531 steps"), "{summary}");
+        summary_number(&summary, "max error vs exact")
+    };
+    let plain = run(&[]);
+    let compensated = run(&["--compensated"]);
+    // measured: 1.2e-9 plain (linear growth), 4.7e-13 compensated
+    assert!(
+        compensated * 100.0 < plain,
+        "compensated {compensated:e}, plain {plain:e}"
+    );
+    assert!(compensated < 1e-11, "{compensated:e}");
+    // a method without a compensated form is refused before any step
+    let out = stormer(&dir, &["run", "cyclotron", "--method", "boris", "--compensated"]);
+    assert_error(&out, "has no compensated form");
+    assert!(
+        !dir.join("out/cyclotron-boris.csv").exists(),
+        "refused before any output"
+    );
+}

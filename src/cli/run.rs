@@ -48,6 +48,11 @@ pub struct RunArgs {
     /// 0 backward Euler, 1/2 trapezoidal [default: 0.5].
     #[arg(long, value_name = "A", allow_negative_numbers = true)]
     pub alpha: Option<f64>,
+    /// Compensated (Kahan) summation of each step's increment, for long runs with small
+    /// steps: round-off per step of order eps*h instead of eps (Runge-Kutta methods,
+    /// splittings and compositions).
+    #[arg(long)]
+    pub compensated: bool,
 }
 
 /// `--solver`.
@@ -120,6 +125,10 @@ impl SceneVisitor for Runner<'_> {
             implicit.max_iterations = n;
         }
         let mut stepper = method.stepper::<S>(&setup.model, &setup.y0, &implicit)?;
+        if args.compensated {
+            // refused here, before an output file is created (the driver turns it on too)
+            stepper.set_compensated(true)?;
+        }
         let (t0, t_end) = (setup.run.t0, args.t_end.unwrap_or(setup.run.t_end));
         let every = args.every.unwrap_or(setup.run.every);
         let adaptive = args.rtol.is_some() || args.atol.is_some();
@@ -147,6 +156,9 @@ impl SceneVisitor for Runner<'_> {
             PathBuf::from("out").join(format!("{}-{}.csv", file_safe(&setup.name), file_safe(&method.label())))
         });
         let mut driver = Driver::with(control).every(every);
+        if args.compensated {
+            driver = driver.compensated();
+        }
         let stop = setup.model.stop();
         if let Some(stop) = stop {
             let model = &setup.model;
