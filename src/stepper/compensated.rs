@@ -303,6 +303,7 @@ impl<S: State> WordIncrement<S> {
 }
 
 #[cfg(test)]
+#[allow(clippy::float_cmp)] // exact sums, compared bit for bit
 mod tests {
     use super::*;
 
