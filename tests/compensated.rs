@@ -291,3 +291,39 @@ impl Lorentz for Cyclotron {
         a.fill(0.0);
     }
 }
+
+/// `q'' = 0` in `f32`.
+struct Free32;
+
+impl SecondOrder for Free32 {
+    type Scalar = f32;
+    type State = [f32; 2];
+    fn acceleration(&self, _t: f32, _q: &[f32], a: &mut [f32]) {
+        a[0] = 0.0;
+    }
+}
+
+#[test]
+fn in_f32_too() {
+    let y0 = [0.0f32, 1.0];
+    let steps = 20_000u32;
+    let h = 0.1f32;
+    let exact = steps as f64 * h as f64;
+    for name in ["rk4", "velocity_verlet_kdk"] {
+        let error = |compensated: bool| {
+            let mut stepper = if name == "rk4" {
+                registry::stepper::<Free32>(name, &y0, &ImplicitOptions::default()).unwrap()
+            } else {
+                registry::splitting_stepper::<Free32>(name, &y0).unwrap()
+            };
+            let driver = Driver::fixed(h).every(u64::MAX);
+            let driver = if compensated { driver.compensated() } else { driver };
+            let solution = driver.run(&Free32, &mut stepper, 0.0, &y0, steps as f32 * h).unwrap();
+            assert_eq!(solution.stats.steps, steps as u64);
+            (solution.y.last().unwrap()[0] as f64 - exact).abs() / exact
+        };
+        let (plain, compensated) = (error(false), error(true));
+        assert!(compensated <= 4.0 * f32::EPSILON as f64, "{name}: {compensated:.2e}");
+        assert!(plain >= 100.0 * f32::EPSILON as f64, "{name}: plain {plain:.2e}");
+    }
+}
