@@ -125,8 +125,8 @@ impl<T: Real> Gyration<T> {
     /// ```
     /// use stormer::magnetic::Gyration;
     /// let g = Gyration::new([0.0, 0.0, 1.0], 0.3);
-    /// let (mut q, mut v) = ([1.0, 2.0, 3.0], [0.5, -0.25, 1.0]);
-    /// let (mut dq, mut dv) = ([0.0; 3], [0.0; 3]);
+    /// let (mut q, mut v) = ([1.0f64, 2.0, 3.0], [0.5f64, -0.25, 1.0]);
+    /// let (mut dq, mut dv) = ([0.0f64; 3], [0.0f64; 3]);
     /// g.increment(&v, &mut dq, &mut dv);
     /// let (q0, v0) = (q, v);
     /// g.apply(&mut q, &mut v);
