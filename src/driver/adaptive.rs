@@ -79,6 +79,12 @@ impl<T: Real, S: State<Scalar = T>> Driver<'_, T, S> {
                     steps: stats.steps,
                 });
             }
+            if self.cancelled(stats.steps + stats.rejected) {
+                return Err(Error::Cancelled {
+                    t: to_f64(t),
+                    step: stats.steps,
+                });
+            }
             let last = (t + h - t_end) * dir >= T::zero();
             if last {
                 h = t_end - t;
