@@ -283,3 +283,43 @@ fn masses_of_1e30_and_1e_30_in_f32() {
         assert!(dq < 2e-4, "{what}");
     }
 }
+
+/// The stability limits of the charged-particle methods (not catalog data, so not in
+/// tests/stability.rs), in the field of strength 1 at 0.99 and 1.01 times the limit:
+/// Euler-Cromer's map `[[1, a], [-a, 1 - a^2]]` (`a = w h`) is bounded for `a <= 2`
+/// (measured max |v| 10.0 at a = 1.98, from |v0| = 1.005: the map is far from a rotation
+/// there) and grows at its eigenvalue's rate above; Boris keeps `|v|` at any step (w h = 100
+/// here); Boris with the exact phase works up to `w h < pi` and refuses larger steps.
+#[test]
+fn charged_particle_methods_at_their_stability_limits() {
+    let s = field_scene(1.0);
+    let speed = |y: &DVector<f64>| y.rows(3, 3).norm();
+    let v0 = speed(&s.y0);
+    let largest = |name: &str, h: f64, steps: f64| {
+        let mut st = charged_stepper(&s, name);
+        let sol = Driver::fixed(h).run(&s.model, &mut st, 0.0, &s.y0, h * steps).unwrap();
+        sol.y.iter().map(speed).fold(0.0, f64::max)
+    };
+    assert!(largest("euler_cromer", 0.99 * 2.0, 2000.0) < 30.0 * v0);
+    let a: f64 = 1.01 * 2.0;
+    let half_trace = (2.0 - a * a).abs() / 2.0;
+    let rate = (half_trace + (half_trace * half_trace - 1.0).sqrt()).ln();
+    let measured = (largest("euler_cromer", a, 200.0) / v0).ln() / 200.0;
+    assert!((measured / rate - 1.0).abs() < 0.05, "rate {measured} vs {rate}");
+    // |v| kept to round-off over the 2000 steps: measured 1.2e-13 for both
+    let round_off = 2.0 * 2000.0 * f64::EPSILON;
+    let boris = largest("boris", 100.0, 2000.0);
+    assert!((boris - v0).abs() <= round_off, "{boris}");
+    let pi = std::f64::consts::PI;
+    let exact_phase = largest("boris_exact_phase", 0.99 * pi, 2000.0);
+    assert!((exact_phase - v0).abs() <= round_off, "{exact_phase}");
+    let mut st = charged_stepper(&s, "boris_exact_phase");
+    let refused = Driver::fixed(1.01 * pi)
+        .run(&s.model, &mut st, 0.0, &s.y0, 10.0)
+        .unwrap_err();
+    assert!(
+        matches!(refused.error, Error::InvalidArgument { .. }),
+        "{}",
+        refused.error
+    );
+}
