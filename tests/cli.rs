@@ -1762,3 +1762,31 @@ fn ctrl_c_stops_a_run_and_keeps_its_records() {
         assert!((r[0] - 0.01 * i as f64).abs() < 1e-9, "record {i} at t = {}", r[0]);
     }
 }
+
+/// A close encounter at a fixed step (Kepler with e = 0.99, 1000 steps per orbit) loses
+/// the orbit, and `stormer run` says so instead of hiding it: the summary's energy drift
+/// is 1.2e3 and the CSV's energy column ends far from E0 = -1/2 (tests/extremes has the
+/// library side and the adaptive run).
+#[test]
+fn a_close_encounter_at_a_fixed_step_reports_its_energy_error() {
+    let dir = workdir("close-encounter");
+    let scene = dir.join("kepler-e099.toml");
+    std::fs::write(
+        &scene,
+        "model = \"central-force\"\n[parameters]\nmu = 1.0\n[initial]\nq = [0.01, 0.0]\n\
+         p = [0.0, 14.106735979665885]\n[run]\nmethod = \"velocity_verlet_kdk\"\n\
+         dt = 0.006283185307179587\nt_end = 6.283185307179586\nevery = 1\n",
+    )
+    .unwrap();
+    let out = stormer(&dir, &["run", "kepler-e099.toml", "--out", "e099.csv"]);
+    assert_ok(&out);
+    let drift = summary_number(&stderr(&out), "max |dE/E0|");
+    assert!(drift > 300.0, "{}", stderr(&out));
+    let error = summary_number(&stderr(&out), "max error vs exact");
+    assert!(error > 1.0, "{}", stderr(&out));
+    let (header, rows) = read_csv(&dir.join("e099.csv"));
+    assert_eq!(header.last().unwrap(), "energy");
+    assert_eq!(rows.len(), 1001);
+    let last_energy = *rows.last().unwrap().last().unwrap();
+    assert!((last_energy + 0.5).abs() > 100.0, "{last_energy}");
+}
