@@ -23,12 +23,19 @@ use stormer::{lit, registry, Driver, Error, Problem, Real, SecondOrder, State, S
 /// Steps per run: enough for round-off to accumulate, few enough for a debug build.
 const STEPS: usize = 100;
 
-/// How an `f32` stepper is made for the `f32` twin of a scene's model.
+/// A stepper of `P` for a splitting's name, or the error refusing it.
+type SplittingStepperFn<P> = fn(&str, &<P as Problem>::State) -> Result<Box<dyn Stepper<P>>, Error>;
+
+/// A stepper of `P` for a charged-particle method, or the error refusing it.
+type ParticleStepperFn<P> = fn(ParticleMethod, &<P as Problem>::State) -> Result<Box<dyn Stepper<P>>, Error>;
+
+/// The `f32` model of a scene, its initial state, and how its splitting and
+/// charged-particle steppers are made.
 struct Twin<P: Problem<Scalar = f32>> {
     problem: P,
     y0: P::State,
-    splitting: fn(&str, &P::State) -> Result<Box<dyn Stepper<P>>, Error>,
-    particle: Option<fn(ParticleMethod, &P::State) -> Result<Box<dyn Stepper<P>>, Error>>,
+    splitting: SplittingStepperFn<P>,
+    particle: Option<ParticleStepperFn<P>>,
 }
 
 /// Two tableaus lose one to two more digits than the rest in f32 (measured on every
@@ -77,6 +84,7 @@ fn deviation<A: State<Scalar = f32>, B: State<Scalar = f64>>(a: &[A], b: &[B]) -
         .fold(0.0, f64::max)
 }
 
+/// The `f32` stepper of `name` for the twin (the scene admits the method).
 fn f32_stepper<P: Problem<Scalar = f32> + 'static>(twin: &Twin<P>, name: &str) -> Box<dyn Stepper<P>> {
     if let Some(m) = ParticleMethod::find(name) {
         return (twin
@@ -104,6 +112,7 @@ fn f64_stepper<S: Scene>(setup: &Setup<S>, name: &str) -> Option<Box<dyn Stepper
     }
 }
 
+/// Runs every method the scene admits, in f64 on the scene's model and in f32 on its twin.
 fn measure<S: Scene, P: Problem<Scalar = f32> + 'static>(setup: &Setup<S>, twin: &Twin<P>) -> Measured {
     let h = setup.run.dt;
     let t_end = h * STEPS as f64;
