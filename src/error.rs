@@ -16,6 +16,15 @@ pub enum Error {
         /// Index of the failing step (0-based).
         step: u64,
     },
+    /// The run was cancelled from outside ([`Driver::cancel_when`](crate::Driver::cancel_when),
+    /// Ctrl-C in `stormer run`); everything recorded before is kept.
+    #[error("cancelled at t = {t} (step {step})")]
+    Cancelled {
+        /// Time reached: the start of the first step not taken.
+        t: f64,
+        /// Steps taken before the cancellation was seen.
+        step: u64,
+    },
     /// An implicit stage equation was not solved.
     #[error("the implicit solver did not converge at t = {t}: residual {residual:.3e} after {iterations} iterations")]
     SolverDiverged {

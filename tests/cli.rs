@@ -1693,6 +1693,104 @@ fn a_blow_up_keeps_the_records_and_says_where() {
     assert!((rows.last().unwrap()[0] - 553.5).abs() < 1e-9);
 }
 
+/// Ctrl-C (SIGINT) stops a long run: exit code 130, a one-line message saying where it
+/// stopped and how many records were kept, and a CSV that holds them, whole lines only.
+#[cfg(unix)]
+#[test]
+fn ctrl_c_stops_a_run_and_keeps_its_records() {
+    use std::time::{Duration, Instant};
+    let dir = workdir("ctrl-c");
+    let csv = dir.join("out/harmonic-rk4.csv");
+    // 9e7 steps: minutes in a debug build, so the signal always arrives mid-run
+    let mut child = Command::new(env!("CARGO_BIN_EXE_stormer"))
+        .args(["run", "harmonic", "--method", "rk4", "--dt", "1e-5", "--t-end", "900"])
+        .args(["--every", "1000"])
+        .current_dir(&dir)
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("the binary runs");
+    // the CSV is flushed at least every 0.5 s: wait for the first records to reach it
+    let start = Instant::now();
+    let lines = || std::fs::read_to_string(&csv).map_or(0, |t| t.lines().count());
+    while lines() < 3 {
+        if start.elapsed() > Duration::from_secs(60) || child.try_wait().unwrap().is_some() {
+            let _ = child.kill();
+            panic!("no records after {:?}", start.elapsed());
+        }
+        std::thread::sleep(Duration::from_millis(50));
+    }
+    let sent = Command::new("kill")
+        .args(["-INT", &child.id().to_string()])
+        .status()
+        .unwrap();
+    assert!(sent.success());
+    let status = loop {
+        if let Some(status) = child.try_wait().unwrap() {
+            break status;
+        }
+        if start.elapsed() > Duration::from_secs(120) {
+            let _ = child.kill();
+            panic!("the run did not stop on SIGINT");
+        }
+        std::thread::sleep(Duration::from_millis(20));
+    };
+    let mut err = String::new();
+    std::io::Read::read_to_string(&mut child.stderr.take().unwrap(), &mut err).unwrap();
+    assert_eq!(status.code(), Some(130), "{err}");
+    assert!(!err.contains("panicked"), "{err}");
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(err.starts_with("stopped by Ctrl-C at t = "), "{err}");
+    let text = std::fs::read_to_string(&csv).unwrap();
+    assert!(text.ends_with('\n'), "the CSV ends with a whole line");
+    let (header, rows) = read_csv(&csv);
+    assert_eq!(header, ["t", "x", "v", "energy"]);
+    assert!(rows.len() >= 2 && rows.iter().all(|r| r.len() == 4));
+    assert!(
+        err.contains(&format!("{} records kept in out/harmonic-rk4.csv", rows.len())),
+        "{err}"
+    );
+    // the records are the run's, every 1000 steps of 1e-5, up to where it stopped
+    let stopped_at: f64 = err["stopped by Ctrl-C at t = ".len()..]
+        .split(' ')
+        .next()
+        .unwrap()
+        .parse()
+        .unwrap();
+    let last = rows.last().unwrap()[0];
+    assert!(last <= stopped_at && stopped_at < 900.0, "{last} {stopped_at}");
+    for (i, r) in rows.iter().enumerate() {
+        assert!((r[0] - 0.01 * i as f64).abs() < 1e-9, "record {i} at t = {}", r[0]);
+    }
+}
+
+/// A close encounter at a fixed step (Kepler with e = 0.99, 1000 steps per orbit) loses
+/// the orbit, and `stormer run` says so instead of hiding it: the summary's energy drift
+/// is 1.2e3 and the CSV's energy column ends far from E0 = -1/2 (tests/extremes has the
+/// library side and the adaptive run).
+#[test]
+fn a_close_encounter_at_a_fixed_step_reports_its_energy_error() {
+    let dir = workdir("close-encounter");
+    let scene = dir.join("kepler-e099.toml");
+    std::fs::write(
+        &scene,
+        "model = \"central-force\"\n[parameters]\nmu = 1.0\n[initial]\nq = [0.01, 0.0]\n\
+         p = [0.0, 14.106735979665885]\n[run]\nmethod = \"velocity_verlet_kdk\"\n\
+         dt = 0.006283185307179587\nt_end = 6.283185307179586\nevery = 1\n",
+    )
+    .unwrap();
+    let out = stormer(&dir, &["run", "kepler-e099.toml", "--out", "e099.csv"]);
+    assert_ok(&out);
+    let drift = summary_number(&stderr(&out), "max |dE/E0|");
+    assert!(drift > 300.0, "{}", stderr(&out));
+    let error = summary_number(&stderr(&out), "max error vs exact");
+    assert!(error > 1.0, "{}", stderr(&out));
+    let (header, rows) = read_csv(&dir.join("e099.csv"));
+    assert_eq!(header.last().unwrap(), "energy");
+    assert_eq!(rows.len(), 1001);
+    let last_energy = *rows.last().unwrap().last().unwrap();
+    assert!((last_energy + 0.5).abs() > 100.0, "{last_energy}");
+}
+
 #[test]
 fn compensated_summation_keeps_round_off_down_on_a_long_run() {
     let dir = workdir("compensated");

@@ -568,3 +568,59 @@ fn the_drift_reads_every_field_before_moving_any_particle() {
     Gyration::new([0.0, 0.0, 1.0], 0.5).apply(&mut q1, &mut v1);
     assert!(distance(&q[3..], &q1) < 1e-15 && distance(&v[3..], &v1) < 1e-15);
 }
+
+/// The rotation's `sin x` and `1 - cos x` (no library call, so that a stepper's loop keeps
+/// its state in registers) agree with the library's to a few units in the last place of
+/// `|x|` over `1 <= |x| <= 1e6`, near every multiple of `pi/2` (where `1 - cos x` would
+/// cancel), in f32, and carry exact derivatives on dual numbers.
+#[test]
+fn sin_and_versine_match_the_library() {
+    use stormer::magnetic::sin_and_versine;
+    let mut angles: Vec<f64> = (0..=600).map(|i| 10f64.powf(i as f64 / 100.0)).collect();
+    for k in 1..2000 {
+        let multiple = k as f64 * std::f64::consts::FRAC_PI_2;
+        angles.extend([
+            multiple,
+            multiple * (1.0 + 1e-15),
+            multiple * (1.0 - 3e-16),
+            multiple + 0.4,
+        ]);
+    }
+    let (mut worst_sin, mut worst_versine) = (0.0f64, 0.0f64);
+    for x in angles.iter().flat_map(|&x| [x, -x]) {
+        let (s, w) = sin_and_versine(x);
+        // 1 - cos x = 2 sin^2(x/2): the library's value without cancellation
+        let versine = 2.0 * (x / 2.0).sin().powi(2);
+        let unit = f64::EPSILON * x.abs();
+        worst_sin = worst_sin.max((s - x.sin()).abs() / unit);
+        worst_versine = worst_versine.max((w - versine).abs() / unit);
+    }
+    assert!(
+        worst_sin <= 1.0 && worst_versine <= 2.0,
+        "sin {worst_sin} versine {worst_versine} units of eps |x|"
+    );
+
+    // f32: against the f64 library at the same f32 angle
+    let mut worst_f32 = 0.0f64;
+    for i in 0..=500 {
+        let x = 10f32.powf(i as f32 / 100.0);
+        let (s, w) = sin_and_versine(x);
+        let xd = x as f64;
+        let unit = f32::EPSILON as f64 * xd;
+        worst_f32 = worst_f32.max((s as f64 - xd.sin()).abs() / unit);
+        worst_f32 = worst_f32.max((w as f64 - 2.0 * (xd / 2.0).sin().powi(2)).abs() / unit);
+    }
+    assert!(worst_f32 <= 2.0, "f32: {worst_f32} units of eps |x|");
+
+    // dual numbers: d/dx (sin x, 1 - cos x) = (cos x, sin x)
+    for x in [1.0, 2.0, 10.0, 123.4, -55.5] {
+        let (s, w) = sin_and_versine(num_dual::Dual64::new(x, 1.0));
+        assert!(
+            (s.eps - x.cos()).abs() <= 1e-15 && (w.eps - x.sin()).abs() <= 1e-15,
+            "x = {x}"
+        );
+    }
+
+    // no number, no rotation: NaN out
+    assert!(sin_and_versine(f64::INFINITY).0.is_nan() && sin_and_versine(f64::NAN).1.is_nan());
+}

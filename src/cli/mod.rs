@@ -1,6 +1,7 @@
 //! Argument parsing and dispatch to the subcommands.
 
 mod choice;
+mod interrupt;
 mod methods;
 mod output;
 mod pictures;
@@ -118,6 +119,10 @@ pub fn main() -> ExitCode {
         Ok(()) => ExitCode::SUCCESS,
         // `stormer methods | head -1`: the reader left, which is not a failure.
         Err(e) if output::is_broken_pipe(&e) => ExitCode::SUCCESS,
+        Err(e) if e.downcast_ref::<interrupt::StoppedByUser>().is_some() => {
+            let _ = writeln!(std::io::stderr(), "{e}");
+            ExitCode::from(interrupt::EXIT_CODE)
+        }
         Err(e) => {
             let _ = writeln!(std::io::stderr(), "error: {}", output::one_line(&format!("{e:#}")));
             ExitCode::FAILURE

@@ -3,6 +3,7 @@
 use std::fs::File;
 use std::io::{self, BufWriter, Write};
 use std::path::{Path, PathBuf};
+use std::time::{Duration, Instant};
 use stormer::driver::Recorder;
 use stormer::scenes::{Scene, Setup};
 use stormer::{Error, State};
@@ -66,6 +67,10 @@ pub fn file_safe(name: &str) -> String {
 /// the number of records, the last time, the largest energy drift and the largest
 /// deviation from the exact solution.
 ///
+/// The file is flushed at least every [`FLUSH_INTERVAL`] and always after a whole record,
+/// so that a run stopped from outside, even by a signal the program cannot catch, leaves
+/// at most that much output unwritten, and `tail -f` follows the run.
+///
 /// Numbers are written with `{:?}`, Rust's shortest representation that reads back to
 /// the same `f64`, so the file holds the computed values bit for bit.
 pub struct CsvRecorder<'a, S: Scene> {
@@ -85,7 +90,11 @@ pub struct CsvRecorder<'a, S: Scene> {
     /// The progress bar, when the run has one.
     pub progress: Option<super::progress::Progress>,
     line: String,
+    last_flush: Instant,
 }
+
+/// How long written records may wait in the buffer.
+pub const FLUSH_INTERVAL: Duration = Duration::from_millis(500);
 
 impl<'a, S: Scene> CsvRecorder<'a, S> {
     /// Creates the file (and its directory) and writes the header.
@@ -105,6 +114,7 @@ impl<'a, S: Scene> CsvRecorder<'a, S> {
             max_de: 0.0,
             max_error: None,
             line: String::new(),
+            last_flush: Instant::now(),
         };
         let mut header = String::from("t");
         for c in setup.model.components(&setup.y0) {
@@ -126,6 +136,7 @@ impl<'a, S: Scene> CsvRecorder<'a, S> {
 
     /// Flushes the buffered records to the file.
     pub fn flush(&mut self) -> Result<(), Error> {
+        self.last_flush = Instant::now();
         let r = self.out.flush();
         r.map_err(|e| io_error(&self.path, &e))
     }
@@ -169,6 +180,9 @@ impl<S: Scene> Recorder<f64, S::State> for CsvRecorder<'_, S> {
             self.max_error = Some(self.max_error.map_or(dev, |m| m.max(dev)));
         }
         self.records += 1;
+        if self.last_flush.elapsed() >= FLUSH_INTERVAL {
+            self.flush()?;
+        }
         if let Some(progress) = &mut self.progress {
             progress.update(t);
         }

@@ -155,7 +155,7 @@ impl SceneVisitor for Runner<'_> {
         let path = args.out.clone().unwrap_or_else(|| {
             PathBuf::from("out").join(format!("{}-{}.csv", file_safe(&setup.name), file_safe(&method.label())))
         });
-        let mut driver = Driver::with(control).every(every);
+        let mut driver = Driver::with(control).every(every).cancel_when(super::interrupt::flag());
         if args.compensated {
             driver = driver.compensated();
         }
@@ -175,6 +175,20 @@ impl SceneVisitor for Runner<'_> {
             Ok((stats, stopped)) => (stats, stopped, None),
             Err((stats, e)) => (stats, None, Some(e)),
         };
+        if let Some(Error::Cancelled { t, .. }) = error {
+            let kept = match flushed {
+                Ok(()) => format!("{} records kept in {}", csv.records, path.display()),
+                Err(f) => format!("the records could not all be kept: {f}"),
+            };
+            let last = csv
+                .last_t
+                .map_or_else(String::new, |t| format!(" (the last at t = {t})"));
+            return Err(super::interrupt::StoppedByUser(format!(
+                "stopped by Ctrl-C at t = {t} after {} steps, {kept}{last}",
+                stats.steps
+            ))
+            .into());
+        }
         if let Some(e) = error {
             let last = csv
                 .last_t

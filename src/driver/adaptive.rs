@@ -79,12 +79,25 @@ impl<T: Real, S: State<Scalar = T>> Driver<'_, T, S> {
                     steps: stats.steps,
                 });
             }
+            if self.cancelled(stats.steps + stats.rejected) {
+                return Err(Error::Cancelled {
+                    t: to_f64(t),
+                    step: stats.steps,
+                });
+            }
             let last = (t + h - t_end) * dir >= T::zero();
             if last {
                 h = t_end - t;
             }
-            let err = stepper.step(p, t, h, &y, &mut y_new, Some(tol))?.unwrap_or(T::zero());
-            if err <= T::one() && y_new.is_finite() {
+            // A step too large for the implicit solver is rejected like a step too large for
+            // the tolerance, and retried smaller; the solver's error is reported only if
+            // the step then underflows.
+            let (err, solver_failure) = match stepper.step(p, t, h, &y, &mut y_new, Some(tol)) {
+                Ok(err) => (err.unwrap_or(T::zero()), None),
+                Err(e @ Error::SolverDiverged { .. }) => (T::zero(), Some(e)),
+                Err(e) => return Err(e),
+            };
+            if solver_failure.is_none() && err <= T::one() && y_new.is_finite() {
                 if let Some(event) = self.locate(p, stepper, t, h, &y, &mut y_new, &mut g_old)? {
                     stats.steps += 1;
                     stepper.accept();
@@ -113,7 +126,7 @@ impl<T: Real, S: State<Scalar = T>> Driver<'_, T, S> {
                 last_rejected = false;
             } else {
                 stats.rejected += 1;
-                let fac = if err.is_finite() {
+                let fac = if err.is_finite() && solver_failure.is_none() {
                     (safety / err.powf(expo)).max(fac_min)
                 } else {
                     fac_min
@@ -122,6 +135,9 @@ impl<T: Real, S: State<Scalar = T>> Driver<'_, T, S> {
                 last_rejected = true;
             }
             if h.abs() <= T::default_epsilon() * lit::<T>(10.0) * t.abs().max(T::one()) {
+                if let Some(e) = solver_failure {
+                    return Err(e);
+                }
                 return Err(Error::StepSizeTooSmall {
                     t: to_f64(t),
                     h: to_f64(h),

@@ -13,6 +13,11 @@ pub use record::{Interrupted, Recorder, Solution, Stats, StopEvent};
 #[allow(unused_imports)]
 use crate::real::ops::*;
 use crate::{lit, to_f64, Error, Problem, Real, State, Stepper, Tolerances};
+use core::sync::atomic::{AtomicBool, Ordering};
+
+/// The cancel flag is read once every this many steps: often enough to stop within a
+/// fraction of a second, rarely enough to cost nothing in the step loop.
+const CANCEL_EVERY: u64 = 1024;
 
 /// How the step size is chosen.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -63,6 +68,7 @@ pub struct Driver<'a, T: Real, S> {
     every: u64,
     max_steps: u64,
     stop: Option<StopFn<'a, T, S>>,
+    cancel: Option<&'a AtomicBool>,
     compensated: bool,
 }
 
@@ -88,6 +94,7 @@ impl<'a, T: Real, S: State<Scalar = T>> Driver<'a, T, S> {
             every: 1,
             max_steps: 100_000_000,
             stop: None,
+            cancel: None,
             compensated: false,
         }
     }
@@ -132,6 +139,37 @@ impl<'a, T: Real, S: State<Scalar = T>> Driver<'a, T, S> {
     pub fn stop_when(mut self, g: impl Fn(T, &S) -> T + 'a) -> Self {
         self.stop = Some(Box::new(g));
         self
+    }
+
+    /// Stop with [`Error::Cancelled`] once `flag` is set (e.g. by a Ctrl-C handler); the
+    /// flag is read every 1024 steps (and before the first), and what was recorded before
+    /// is kept, as for any error.
+    ///
+    /// ```
+    /// use std::sync::atomic::AtomicBool;
+    /// use stormer::{catalog::Rk4, Driver, Error, ExplicitRk, Problem};
+    /// struct Decay;
+    /// impl Problem for Decay {
+    ///     type Scalar = f64;
+    ///     type State = [f64; 1];
+    ///     fn rhs(&self, _t: f64, y: &[f64; 1], dy: &mut [f64; 1]) { dy[0] = -y[0]; }
+    /// }
+    /// let stop = AtomicBool::new(true); // already set: the run stops before its first step
+    /// let mut rk4 = ExplicitRk::<Rk4, _>::new(&[1.0]);
+    /// let run = Driver::fixed(0.01).cancel_when(&stop).run(&Decay, &mut rk4, 0.0, &[1.0], 1.0);
+    /// let interrupted = run.unwrap_err();
+    /// assert_eq!(interrupted.error, Error::Cancelled { t: 0.0, step: 0 });
+    /// assert_eq!(interrupted.solution.t, [0.0]); // the initial record is kept
+    /// ```
+    pub fn cancel_when(mut self, flag: &'a AtomicBool) -> Self {
+        self.cancel = Some(flag);
+        self
+    }
+
+    /// True when the cancel flag is set, read only at every [`CANCEL_EVERY`]-th step.
+    #[inline(always)]
+    fn cancelled(&self, step: u64) -> bool {
+        step % CANCEL_EVERY == 0 && self.cancel.is_some_and(|flag| flag.load(Ordering::Relaxed))
     }
 
     /// Integrates from `(t0, y0)` to `t_end`, keeping the records in memory.
@@ -265,6 +303,9 @@ impl<'a, T: Real, S: State<Scalar = T>> Driver<'a, T, S> {
         let mut g_old = self.stop.as_ref().map(|g| g(t0, y0));
         for i in 0..n {
             let t = t0 + lit::<T>(i as f64) * h;
+            if self.cancelled(i) {
+                return Err(Error::Cancelled { t: to_f64(t), step: i });
+            }
             let hi = if i + 1 == n && !exact { t_end - t } else { h };
             stepper.step(p, t, hi, &y, &mut y_new, None)?;
             if !y_new.is_finite() {
@@ -315,6 +356,9 @@ impl<'a, T: Real, S: State<Scalar = T>> Driver<'a, T, S> {
         let mut until_record = self.every;
         for i in 0..n {
             let t = t0 + lit::<T>(i as f64) * h;
+            if self.cancelled(i) {
+                return Err(Error::Cancelled { t: to_f64(t), step: i });
+            }
             let last = i + 1 == n;
             let hi = if last && !exact { t_end - t } else { h };
             stepper.step_in_place(p, t, hi, y)?;

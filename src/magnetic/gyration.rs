@@ -3,7 +3,7 @@
 
 #[allow(unused_imports)]
 use crate::real::ops::*;
-use crate::{lit, Real};
+use crate::{lit, to_f64, Real};
 
 /// Taylor coefficients `(-1)^k / (2k + m)!`, `k = 0..9`, of `sin x / x` (`m = 1`),
 /// `(1 - cos x) / x^2` (`m = 2`) and `(x - sin x) / x^3` (`m = 3`) in powers of `x^2`.
@@ -45,8 +45,9 @@ const C3: [f64; 9] = [
 /// division by zero at `x = 0` and without cancellation for small `x`.
 ///
 /// Below `|x| = 1` all three come from their Taylor series (terms to `x^16`; the first omitted
-/// term is below `1/19! = 8e-18` there); above, from closed forms where `1 - cos x` is
-/// written `2 sin^2(x/2)`, which has no cancellation.
+/// term is below `1/19! = 8e-18` there); above, from `sin x` and `1 - cos x` computed by
+/// [`sin_and_versine`]. No library call either way: a stepper whose loop computes a
+/// rotation (a cache miss) keeps its state in registers.
 ///
 /// ```
 /// let [s1, c2, c3] = stormer::magnetic::gyration_coefficients(0.0f64);
@@ -54,15 +55,61 @@ const C3: [f64; 9] = [
 /// let [_, c2, c3] = stormer::magnetic::gyration_coefficients(1e-5f64);
 /// assert!((c2 - (0.5 - 1e-10 / 24.0)).abs() < 1e-17 && (c3 - (1.0 / 6.0 - 1e-10 / 120.0)).abs() < 1e-17);
 /// ```
+#[inline(always)]
 pub fn gyration_coefficients<T: Real>(x: T) -> [T; 3] {
     let x2 = x * x;
     if x.abs() < T::one() {
-        let series = |c: &[f64; 9]| c.iter().rev().fold(T::zero(), |sum, &ck| sum * x2 + lit::<T>(ck));
-        [series(&S1), series(&C2), series(&C3)]
+        [series(&S1, x2), series(&C2, x2), series(&C3, x2)]
     } else {
-        let half = x / lit::<T>(2.0);
-        let (s, sh) = (x.sin(), half.sin());
-        [s / x, lit::<T>(2.0) * sh * sh / x2, (x - s) / (x2 * x)]
+        let (s, versine) = sin_and_versine(x);
+        [s / x, versine / x2, (x - s) / (x2 * x)]
+    }
+}
+
+/// `sum_k c_k y^k` by Horner's rule.
+#[inline(always)]
+fn series<T: Real>(c: &[f64; 9], y: T) -> T {
+    c.iter().rev().fold(T::zero(), |sum, &ck| sum * y + lit::<T>(ck))
+}
+
+/// `pi / 2` in three parts (fdlibm's `pio2_1`, `pio2_2`, `pio2_3`): the first two have at
+/// most 33 significant bits (bit patterns `0x3FF921FB54400000`, `0x3DD0B4611A600000`,
+/// `0x3BA3198A2E000000`), so `n * part` is exact in `f64` for `|n| < 2^20`.
+const PIO2: [f64; 3] = [1.5707963267341256, 6.077100506303966e-11, 2.0222662487111665e-21];
+
+/// `(sin x, 1 - cos x)` with no library call and no cancellation: `x = n pi/2 + r` with
+/// `|r| <= pi/4` (Cody and Waite's reduction, `pi/2` in three parts), then the series of
+/// `sin r / r` and `(1 - cos r) / r^2` and the quadrant of `n`. `1 - cos x` is taken in
+/// each quadrant from the form without cancellation (`r^2 c2(r)`, `1 + sin r`, `1 + cos r`,
+/// `1 - sin r`).
+///
+/// Accurate to a few units in the last place of `|x|` (the conditioning of the argument
+/// itself) for `|x| < 1.6e6` (where `n < 2^20`); larger angles lose digits in the
+/// reduction, and a non-finite `x` gives NaN. `n` is computed in `f64` and is a constant,
+/// so dual numbers carry the derivative of `x` through `r`.
+///
+/// ```
+/// use stormer::magnetic::sin_and_versine;
+/// for x in [1.0f64, 2.5, -7.0, 100.0, 999.0] {
+///     let (s, w) = sin_and_versine(x);
+///     assert!((s - x.sin()).abs() < 1e-15 * x.abs() && (w - (1.0 - x.cos())).abs() < 1e-15 * x.abs());
+/// }
+/// ```
+#[inline(always)]
+pub fn sin_and_versine<T: Real>(x: T) -> (T, T) {
+    // adding and subtracting 1.5 * 2^52 rounds to the nearest integer (for |v| < 2^51)
+    const ROUND: f64 = 6_755_399_441_055_744.0;
+    let n = (to_f64(x) * core::f64::consts::FRAC_2_PI + ROUND) - ROUND;
+    let r = ((x - lit::<T>(n * PIO2[0])) - lit::<T>(n * PIO2[1])) - lit::<T>(n * PIO2[2]);
+    let r2 = r * r;
+    let sin_r = r * series(&S1, r2);
+    let versine_r = r2 * series(&C2, r2);
+    let cos_r = T::one() - versine_r;
+    match (n as i64).rem_euclid(4) {
+        0 => (sin_r, versine_r),
+        1 => (cos_r, T::one() + sin_r),
+        2 => (-sin_r, T::one() + cos_r),
+        _ => (-cos_r, T::one() - sin_r),
     }
 }
 
@@ -94,6 +141,7 @@ pub struct Gyration<T> {
 
 impl<T: Real> Gyration<T> {
     /// The flow of rotation vector `omega` for time `tau`.
+    #[inline(always)]
     pub fn new(omega: [T; 3], tau: T) -> Self {
         let w = (omega[0] * omega[0] + omega[1] * omega[1] + omega[2] * omega[2]).sqrt();
         let [s1, c2, c3] = gyration_coefficients(w * tau);
@@ -156,17 +204,29 @@ pub fn cross<T: Real>(u: &[T], v: &[T]) -> [T; 3] {
 }
 
 /// The gyrations of a uniform field for the last step sizes a stepper used, so that the
-/// trigonometric functions run once per step size and particle, not once per step.
+/// rotation is computed once per step size and particle, not once per step.
 ///
 /// Holds up to [`GyrationCache::SLOTS`] step sizes (a composition uses several), replaced
-/// in turn; the first steps fill it, later steps only read it. The step sizes sit inline
-/// and the gyrations in one flat buffer, so a hit costs a comparison and an index.
+/// in turn, for up to [`GyrationCache::PARTICLES`] particles (more particles are not
+/// cached: their rotations cost little next to the forces between them). A hit costs a
+/// comparison and an index. Nothing on the way allocates or calls a function (the storage
+/// is sized when the cache is made, the rotation needs no library call): a stepper's loop
+/// around a lookup keeps its state in registers, as a hand-written loop does.
 #[derive(Debug, Clone)]
 pub struct GyrationCache<T> {
+    slots: Box<Slots<T>>,
+}
+
+const SLOTS: usize = 8;
+const PARTICLES: usize = 4;
+
+#[derive(Debug, Clone)]
+struct Slots<T> {
     /// The step size of each slot (NaN: empty).
-    taus: [T; 8],
-    /// `particles` gyrations per slot, slot after slot.
-    gyrations: Vec<Gyration<T>>,
+    taus: [T; SLOTS],
+    /// Slot `s` holds particle `k`'s gyration at `s * PARTICLES + k`.
+    gyrations: [Gyration<T>; SLOTS * PARTICLES],
+    /// The number of particles the slots are for.
     particles: usize,
     next: usize,
     last: usize,
@@ -175,52 +235,77 @@ pub struct GyrationCache<T> {
 impl<T: Real> Default for GyrationCache<T> {
     fn default() -> Self {
         let empty = T::zero() / T::zero();
+        let identity = Gyration {
+            omega: [T::zero(); 3],
+            tau: T::zero(),
+            weights: [T::zero(); 3],
+        };
         GyrationCache {
-            taus: [empty; 8],
-            gyrations: Vec::new(),
-            particles: 0,
-            next: 0,
-            last: 0,
+            slots: Box::new(Slots {
+                taus: [empty; SLOTS],
+                gyrations: [identity; SLOTS * PARTICLES],
+                particles: 0,
+                next: 0,
+                last: 0,
+            }),
         }
     }
 }
 
 impl<T: Real> GyrationCache<T> {
     /// Step sizes remembered.
-    pub const SLOTS: usize = 8;
+    pub const SLOTS: usize = SLOTS;
 
-    /// The gyrations of `particles` particles for `tau`; `make(k)` builds particle `k`'s
-    /// on a miss.
+    /// Particles cached.
+    pub const PARTICLES: usize = PARTICLES;
+
+    /// The gyrations for `tau` of the `q.len() / 3` particles at positions `q`, particle
+    /// `k`'s built on a miss from its rotation vector `omega(k, q)`; `None` for more than
+    /// [`GyrationCache::PARTICLES`] particles.
     #[inline(always)]
-    pub fn get(&mut self, tau: T, particles: usize, make: impl Fn(usize) -> Gyration<T>) -> &[Gyration<T>] {
+    pub fn get(&mut self, tau: T, q: &[T], omega: impl Fn(usize, &[T]) -> [T; 3]) -> Option<&[Gyration<T>]> {
+        let slots = &mut *self.slots;
+        let particles = q.len() / 3;
+        if particles > PARTICLES {
+            return None;
+        }
+        if particles != slots.particles {
+            slots.taus = [T::zero() / T::zero(); SLOTS];
+            slots.particles = particles;
+        }
         // fixed steps hit the slot of the previous call (velocity Verlet has one)
         #[allow(clippy::float_cmp)] // the same step size, bit for bit, reuses its rotation
-        let slot = if self.taus[self.last] == tau && self.particles == particles {
-            self.last
-        } else {
-            self.find_or_insert(tau, particles, make)
-        };
-        self.last = slot;
-        &self.gyrations[slot * particles..(slot + 1) * particles]
+        if slots.taus[slots.last] != tau {
+            slots.last = match slots.taus.iter().position(|&t| t == tau) {
+                Some(slot) => slot,
+                None => {
+                    let slot = slots.next;
+                    slots.next = (slot + 1) % SLOTS;
+                    slots.taus[slot] = tau;
+                    for k in 0..particles {
+                        slots.gyrations[slot * PARTICLES + k] = Gyration::new(omega(k, q), tau);
+                    }
+                    slot
+                }
+            };
+        }
+        let first = slots.last * PARTICLES;
+        Some(&slots.gyrations[first..first + particles])
     }
+}
 
-    #[inline(never)]
-    fn find_or_insert(&mut self, tau: T, particles: usize, make: impl Fn(usize) -> Gyration<T>) -> usize {
-        if self.particles != particles {
-            *self = Self::default();
-            self.particles = particles;
-            self.gyrations = vec![Gyration::new([T::zero(); 3], T::zero()); Self::SLOTS * particles];
+#[cfg(test)]
+mod tests {
+    use super::PIO2;
+
+    #[test]
+    fn the_parts_of_half_pi_are_fdlibms_and_short_enough_to_multiply_exactly() {
+        let bits = PIO2.map(f64::to_bits);
+        assert_eq!(bits, [0x3FF921FB54400000, 0x3DD0B4611A600000, 0x3BA3198A2E000000]);
+        for part in &PIO2[..2] {
+            // at most 33 significant bits: 20 low mantissa bits are zero
+            assert_eq!(part.to_bits() & ((1 << 20) - 1), 0);
         }
-        #[allow(clippy::float_cmp)]
-        if let Some(slot) = self.taus.iter().position(|t| *t == tau) {
-            return slot;
-        }
-        let slot = self.next;
-        self.next = (slot + 1) % Self::SLOTS;
-        self.taus[slot] = tau;
-        for k in 0..particles {
-            self.gyrations[slot * particles + k] = make(k);
-        }
-        slot
+        assert_eq!((PIO2[0] + PIO2[1]).to_bits(), std::f64::consts::FRAC_PI_2.to_bits());
     }
 }

@@ -107,21 +107,23 @@ impl<L: Lorentz> Splittable for Charged<L> {
         cache: &mut Self::FlowCache,
     ) {
         if self.0.uniform() {
-            let gyrations = cache.get(tau, q.len() / 3, |k| Gyration::new(self.0.omega(k, &*q), tau));
-            for ((g, q), v) in gyrations.iter().zip(q.chunks_exact_mut(3)).zip(v.chunks_exact_mut(3)) {
-                g.apply(q, v);
+            let field = &self.0;
+            if let Some(gyrations) = cache.get(tau, q, |k, q| field.omega(k, q)) {
+                for ((g, q), v) in gyrations.iter().zip(q.chunks_exact_mut(3)).zip(v.chunks_exact_mut(3)) {
+                    g.apply(q, v);
+                }
+                return;
             }
-        } else {
-            // every field first, at the positions at the start of the drift (a particle's
-            // field may depend on the others), kept in the scratch: 3 values per particle
-            let particles = q.len() / 3;
-            for k in 0..particles {
-                scratch[3 * k..3 * k + 3].copy_from_slice(&self.0.omega(k, q));
-            }
-            for k in 0..particles {
-                let w = [scratch[3 * k], scratch[3 * k + 1], scratch[3 * k + 2]];
-                Gyration::new(w, tau).apply(&mut q[3 * k..3 * k + 3], &mut v[3 * k..3 * k + 3]);
-            }
+        }
+        // every field first, at the positions at the start of the drift (a particle's field
+        // may depend on the others), kept in the scratch: 3 values per particle
+        let particles = q.len() / 3;
+        for k in 0..particles {
+            scratch[3 * k..3 * k + 3].copy_from_slice(&self.0.omega(k, q));
+        }
+        for k in 0..particles {
+            let w = [scratch[3 * k], scratch[3 * k + 1], scratch[3 * k + 2]];
+            Gyration::new(w, tau).apply(&mut q[3 * k..3 * k + 3], &mut v[3 * k..3 * k + 3]);
         }
     }
 
@@ -138,18 +140,19 @@ impl<L: Lorentz> Splittable for Charged<L> {
         _scratch: &mut [Self::Scalar],
         cache: &mut Self::FlowCache,
     ) {
-        let particles = q.len() / 3;
         let (dq, dv) = (dq.chunks_exact_mut(3), dv.chunks_exact_mut(3));
         if self.0.uniform() {
-            let gyrations = cache.get(tau, particles, |k| Gyration::new(self.0.omega(k, q), tau));
-            for ((g, v), (dq, dv)) in gyrations.iter().zip(v.chunks_exact(3)).zip(dq.zip(dv)) {
-                g.increment(v, dq, dv);
+            let field = &self.0;
+            if let Some(gyrations) = cache.get(tau, q, |k, q| field.omega(k, q)) {
+                for ((g, v), (dq, dv)) in gyrations.iter().zip(v.chunks_exact(3)).zip(dq.zip(dv)) {
+                    g.increment(v, dq, dv);
+                }
+                return;
             }
-        } else {
-            // `q` does not move here, so each field can be read as it is needed
-            for (k, (v, (dq, dv))) in v.chunks_exact(3).zip(dq.zip(dv)).enumerate() {
-                Gyration::new(self.0.omega(k, q), tau).increment(v, dq, dv);
-            }
+        }
+        // `q` does not move here, so each field can be read as it is needed
+        for (k, (v, (dq, dv))) in v.chunks_exact(3).zip(dq.zip(dv)).enumerate() {
+            Gyration::new(self.0.omega(k, q), tau).increment(v, dq, dv);
         }
     }
 

@@ -11,5 +11,5 @@
 mod gyration;
 mod lorentz;
 
-pub use gyration::{cross, gyration_coefficients, Gyration, GyrationCache};
+pub use gyration::{cross, gyration_coefficients, sin_and_versine, Gyration, GyrationCache};
 pub use lorentz::{Charged, Lorentz};

@@ -404,7 +404,10 @@ impl<T: Real, S: State<Scalar = T>> Hamiltonian for NBody<T, S> {
         let half = lit::<T>(0.5);
         let mut kinetic = T::zero();
         for (k, pk) in p.chunks_exact(d).enumerate() {
-            kinetic += pk.iter().fold(T::zero(), |s, &x| s + x * x) * half / self.masses[k];
+            // (p / m) p, not p^2 / m: p^2 leaves f32's range for masses beyond ~1e19 or
+            // below ~1e-19 while the velocity p / m stays of the orbit's size
+            let w = self.inverse_mass[k * d];
+            kinetic += pk.iter().fold(T::zero(), |s, &x| s + x * w * x) * half;
         }
         let mut potential = T::zero();
         let mut pair = 0;
