@@ -8,9 +8,12 @@
 //! - **hand_written**: the step typed out on `[f64; 12]` positions and momenta, with its own
 //!   four-body force (all sizes known at compile time), in the operation order of the
 //!   generated code (same coefficients, same pair order, same sums);
-//! - **generated**: `SplittingStepper<M, [f64; 24]>` on `NBody<f64, [f64; 24]>` through the
+//! - **generated**: `SplittingStepper<M, [f64; 24]>` on `NBody<f64, [f64; 24], Bodies<3, 4>>`
+//!   (four bodies in 3-D fixed at compile time, as the hand-written loop has them) through the
 //!   `Stepper` interface, stepping in place (`Stepper::step_in_place`, what the fixed-step
 //!   driver calls);
+//! - **generated_any_shape**: the same on `NBody<f64, [f64; 24]>`, whose force loop is chosen
+//!   from the bodies at run time;
 //! - **driver**: the same stepper run by the library's `Driver` (fixed steps, a record at
 //!   the start and at the end), the path of the CLI;
 //! - **generated_flows_copy**: the macro's unrolled word (`M::flows`) without the
@@ -44,19 +47,21 @@ use nalgebra::DVector;
 use stormer::catalog::{TripleJump4, VelocityVerletKdk};
 use stormer::driver::Recorder;
 use stormer::order::splitting::Flow;
-use stormer::scenes::{self, AnyScene, NBody};
+use stormer::scenes::{self, AnyScene, Bodies, NBody};
 use stormer::{registry, Driver, Hamiltonian, SplittingMethod, SplittingStepper, Stepper};
 
 const STEPS: usize = 1000;
 const H: f64 = 10.0;
 const N: usize = 4;
 
-type Problem = NBody<f64, [f64; 24]>;
+type Problem = NBody<f64, [f64; 24], Bodies<3, 4>>;
+type AnyShapeProblem = NBody<f64, [f64; 24]>;
 type FileProblem = NBody<f64, DVector<f64>>;
 
 /// The scene as shipped (file values), both as a static-size problem and as read.
 struct Setup {
     nbody: Problem,
+    any_shape: AnyShapeProblem,
     file: FileProblem,
     y0: [f64; 24],
     y0_file: DVector<f64>,
@@ -72,6 +77,7 @@ fn setup() -> Setup {
     let masses = scene.model.masses().to_vec();
     let g = scene.model.g();
     let nbody = Problem::new(g, &masses, 3).expect("valid bodies");
+    let any_shape = AnyShapeProblem::new(g, &masses, 3).expect("valid bodies");
     let y0: [f64; 24] = scene.y0.as_slice().try_into().expect("4 bodies in 3-D");
     let mut pair_gm = [0.0; 6];
     let mut pair = 0;
@@ -84,6 +90,7 @@ fn setup() -> Setup {
     let inverse_mass = std::array::from_fn(|i| 1.0 / masses[i / 3]);
     Setup {
         nbody,
+        any_shape,
         y0_file: scene.y0.clone(),
         file: scene.model,
         y0,
@@ -270,6 +277,17 @@ where
     }
 }
 
+/// As `generated`, on the problem whose force loop is chosen at run time.
+fn generated_any_shape<M: SplittingMethod>(s: &Setup, steps: usize, h: f64, y0: &[f64; 24]) -> [f64; 24]
+where
+    SplittingStepper<M, [f64; 24]>: Stepper<AnyShapeProblem>,
+{
+    match SplittingStepper::<M, [f64; 24]>::new(y0) {
+        Ok(mut st) => with_stepper(&s.any_shape, &mut st, steps, h, y0),
+        Err(e) => panic!("{e}"),
+    }
+}
+
 /// The generated word in place, without the `Stepper` interface.
 fn generated_flows<M: SplittingMethod>(s: &Setup, steps: usize, h: f64, y0: &[f64; 24]) -> [f64; 24] {
     let co = M::coeffs::<f64>();
@@ -431,6 +449,11 @@ fn assert_bitwise_equal(s: &Setup) {
         &verlet,
     );
     check(
+        "generated verlet, any shape",
+        bits(&generated_any_shape::<VelocityVerletKdk>(s, n, H, &s.y0)),
+        &verlet,
+    );
+    check(
         "verlet flows",
         bits(&generated_flows::<VelocityVerletKdk>(s, n, H, &s.y0)),
         &verlet,
@@ -457,6 +480,11 @@ fn assert_bitwise_equal(s: &Setup) {
         &verlet,
     );
     check("generated jump", bits(&generated::<TripleJump4>(s, n, H, &s.y0)), &jump);
+    check(
+        "generated jump, any shape",
+        bits(&generated_any_shape::<TripleJump4>(s, n, H, &s.y0)),
+        &jump,
+    );
     check(
         "jump flows",
         bits(&generated_flows::<TripleJump4>(s, n, H, &s.y0)),
@@ -563,6 +591,11 @@ fn interleaved_ratios() {
                     "driver",
                     $evaluations,
                     Box::new(|| first(driver::<$m>(&s, STEPS, black_box(H), &s.y0))),
+                ),
+                (
+                    "generated_any_shape",
+                    $evaluations,
+                    Box::new(|| first(generated_any_shape::<$m>(&s, STEPS, black_box(H), &s.y0))),
                 ),
                 (
                     "generated_flows_copy",

@@ -91,6 +91,11 @@ pub enum Error {
         /// The operating system's reason.
         reason: String,
     },
+    /// A library type used against its contract, e.g. `Stepper::step_in_place` on a
+    /// stepper whose `steps_in_place` is false. A static message: building it calls nothing,
+    /// so that the hot paths which can return it stay free of calls.
+    #[error("{0}")]
+    Misuse(&'static str),
     /// An argument out of its domain.
     #[error("invalid {what}: {reason}")]
     InvalidArgument {

@@ -327,3 +327,22 @@ fn in_f32_too() {
         assert!(plain >= 100.0 * f32::EPSILON as f64, "{name}: plain {plain:.2e}");
     }
 }
+
+/// A compensated compiled splitting steps through `step` (its in-place step stays free of
+/// calls for the plain hot loop): `steps_in_place` says so, and `step_in_place` refuses.
+#[test]
+fn a_compensated_compiled_splitting_does_not_step_in_place() {
+    let y0 = [0.0, 1.0];
+    let mut verlet = registry::splitting_stepper::<Free>("velocity_verlet_kdk", &y0).unwrap();
+    assert!(verlet.steps_in_place());
+    verlet.set_compensated(true).unwrap();
+    assert!(!verlet.steps_in_place());
+    let mut y = y0;
+    let err = verlet.step_in_place(&Free, 0.0, H, &mut y).unwrap_err();
+    assert!(matches!(err, Error::Misuse(_)), "{err}");
+    assert_eq!(y, y0, "nothing stepped");
+    verlet.set_compensated(false).unwrap();
+    assert!(verlet.steps_in_place());
+    verlet.step_in_place(&Free, 0.0, H, &mut y).unwrap();
+    assert_eq!(y, [H, 1.0]);
+}

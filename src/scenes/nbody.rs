@@ -1,6 +1,7 @@
 //! Newtonian gravity between any number of bodies (SCENES.md 3 and 4):
 //! `H = sum |p_k|^2/(2 m_k) - sum_{k<l} G m_k m_l / |q_k - q_l|`, momenta `p = m v`.
 
+use super::nbody_shape::{AnyShape, Shape};
 use super::orbit::Orbit;
 #[allow(unused_imports)]
 use crate::real::ops::*;
@@ -19,7 +20,11 @@ use core::marker::PhantomData;
 ///
 /// Generic over the scalar and the state: `[f64; 24]` for the four-body outer solar system
 /// in a benchmark (no heap allocation per step), `DVector<f64>` for a scene file with any
-/// number of bodies.
+/// number of bodies; and over the [`Shape`] of the force loop: [`AnyShape`] (the default)
+/// chooses it from the bodies at run time, [`super::Bodies`]`<D, N>` fixes it when the
+/// program is compiled (`N` bodies in `D` dimensions, checked by [`NBody::new`]), so the
+/// step loop holds the unrolled force of those bodies and nothing else, as a hand-written
+/// one does.
 ///
 /// ```
 /// use stormer::scenes::NBody;
@@ -33,7 +38,7 @@ use core::marker::PhantomData;
 /// assert_eq!(dy, [0.0, -0.5, 0.0, 0.5, 1.0, 0.0, -1.0, 0.0]); // velocities, then forces
 /// assert_eq!(pair.energy(0.0, &y), Some(0.25 - 1.0));
 /// ```
-pub struct NBody<T, S> {
+pub struct NBody<T, S, K = AnyShape> {
     g: T,
     dim: usize,
     masses: Vec<T>,
@@ -42,10 +47,10 @@ pub struct NBody<T, S> {
     inverse_mass: Vec<T>,
     /// `G m_k m_l` for the pairs `k < l`, in the order the force visits them.
     pair_gm: Vec<T>,
-    state: PhantomData<fn() -> S>,
+    state: PhantomData<fn() -> (S, K)>,
 }
 
-impl<T: Real, S> Clone for NBody<T, S> {
+impl<T: Real, S, K> Clone for NBody<T, S, K> {
     fn clone(&self) -> Self {
         NBody {
             g: self.g,
@@ -59,7 +64,7 @@ impl<T: Real, S> Clone for NBody<T, S> {
     }
 }
 
-impl<T: Real, S> core::fmt::Debug for NBody<T, S> {
+impl<T: Real, S, K> core::fmt::Debug for NBody<T, S, K> {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         f.debug_struct("NBody")
             .field("g", &self.g)
@@ -70,7 +75,7 @@ impl<T: Real, S> core::fmt::Debug for NBody<T, S> {
     }
 }
 
-impl<T: Real, S: State<Scalar = T>> NBody<T, S> {
+impl<T: Real, S: State<Scalar = T>, K: Shape> NBody<T, S, K> {
     /// Bodies of the given masses (named `body0`, `body1`, ...) in `dim` dimensions with
     /// gravitational constant `g`. Masses and `g` must be finite and `> 0`, `dim >= 1`.
     pub fn new(g: T, masses: &[T], dim: usize) -> Result<Self, Error> {
@@ -92,6 +97,17 @@ impl<T: Real, S: State<Scalar = T>> NBody<T, S> {
         }
         if dim == 0 {
             return Err(Error::invalid("dimension", "must be at least 1"));
+        }
+        if let Some((d, n)) = K::FIXED {
+            if (d, n) != (dim, masses.len()) {
+                return Err(Error::invalid(
+                    "bodies",
+                    format!(
+                        "this problem's force is compiled for {n} bodies in {d} dimensions, got {} in {dim}",
+                        masses.len()
+                    ),
+                ));
+            }
         }
         let n = masses.len();
         let mut pair_gm = Vec::with_capacity(n * (n - 1) / 2);
@@ -274,7 +290,7 @@ impl<T: Real, S: State<Scalar = T>> NBody<T, S> {
     /// evaluation against 41 ns for the loops over a run-time `n`,
     /// `benches/outer_solar_system.rs`).
     #[inline(always)]
-    fn pairwise_fixed<const D: usize, const N: usize>(&self, q: &[T], f: &mut [T]) {
+    pub(super) fn pairwise_fixed<const D: usize, const N: usize>(&self, q: &[T], f: &mut [T]) {
         let (q, f) = (&q[..N * D], &mut f[..N * D]);
         let gm = &self.pair_gm[..N * (N - 1) / 2];
         let qs: [[T; D]; N] = core::array::from_fn(|k| core::array::from_fn(|c| q[k * D + c]));
@@ -331,48 +347,13 @@ impl<T: Real, S: State<Scalar = T>> NBody<T, S> {
         }
     }
 
-    /// The same, in any dimension.
-    fn pairwise_any(&self, q: &[T], f: &mut [T]) {
-        let (n, d) = (self.masses.len(), self.dim);
-        for x in f.iter_mut() {
-            *x = T::zero();
-        }
-        let mut pair = 0;
-        for k in 0..n {
-            for l in k + 1..n {
-                let r2 = (0..d).fold(T::zero(), |s, c| s + (q[k * d + c] - q[l * d + c]).powi(2));
-                let s = self.pair_gm[pair] / (r2 * r2.sqrt());
-                pair += 1;
-                for c in 0..d {
-                    let x = s * (q[k * d + c] - q[l * d + c]);
-                    f[k * d + c] -= x;
-                    f[l * d + c] += x;
-                }
-            }
-        }
-    }
-}
-
-impl<T: Real, S: State<Scalar = T>> Hamiltonian for NBody<T, S> {
-    type Scalar = T;
-    type State = S;
-
-    /// `v_k = p_k / m_k`, as `p` times the stored `1 / m_k`.
-    #[inline(always)]
-    fn kinetic_gradient(&self, p: &[T], v: &mut [T]) {
-        // sliced to p's length, known at compile time for static states: the loop unrolls
-        let w = &self.inverse_mass[..p.len()];
-        for ((v, &p), &w) in v.iter_mut().zip(p).zip(w) {
-            *v = p * w;
-        }
-    }
-
-    /// For a static state ([`State::LEN`] known when the code is compiled) whose length
+    /// The force chosen at run time ([`AnyShape`]). For a static state ([`State::LEN`]
+    /// known when the code is compiled) whose length
     /// fits 2 to 6 bodies in 2-D or 3-D, the unrolled kernel of that shape, inlined into
     /// the stepper (as fast as a force written by hand for those bodies); otherwise one call
     /// to the kernel chosen at run time. The same sums in the same order either way.
     #[inline(always)]
-    fn force(&self, _t: T, q: &[T], f: &mut [T]) {
+    pub(super) fn force_by_run_time_shape(&self, q: &[T], f: &mut [T]) {
         // each test below is decided at compile time except for the one or two shapes
         // that S's length allows; the run-time test guards the shape itself
         macro_rules! static_shapes {
@@ -399,6 +380,49 @@ impl<T: Real, S: State<Scalar = T>> Hamiltonian for NBody<T, S> {
         self.force_any_shape(q, f)
     }
 
+    /// The same, in any dimension.
+    fn pairwise_any(&self, q: &[T], f: &mut [T]) {
+        let (n, d) = (self.masses.len(), self.dim);
+        for x in f.iter_mut() {
+            *x = T::zero();
+        }
+        let mut pair = 0;
+        for k in 0..n {
+            for l in k + 1..n {
+                let r2 = (0..d).fold(T::zero(), |s, c| s + (q[k * d + c] - q[l * d + c]).powi(2));
+                let s = self.pair_gm[pair] / (r2 * r2.sqrt());
+                pair += 1;
+                for c in 0..d {
+                    let x = s * (q[k * d + c] - q[l * d + c]);
+                    f[k * d + c] -= x;
+                    f[l * d + c] += x;
+                }
+            }
+        }
+    }
+}
+
+impl<T: Real, S: State<Scalar = T>, K: Shape> Hamiltonian for NBody<T, S, K> {
+    type Scalar = T;
+    type State = S;
+
+    /// `v_k = p_k / m_k`, as `p` times the stored `1 / m_k`.
+    #[inline(always)]
+    fn kinetic_gradient(&self, p: &[T], v: &mut [T]) {
+        // sliced to p's length, known at compile time for static states: the loop unrolls
+        let w = &self.inverse_mass[..p.len()];
+        for ((v, &p), &w) in v.iter_mut().zip(p).zip(w) {
+            *v = p * w;
+        }
+    }
+
+    /// The force of the problem's [`Shape`]: for [`super::Bodies`] the unrolled kernel
+    /// of those bodies, for [`AnyShape`] the one chosen from the bodies at run time.
+    #[inline(always)]
+    fn force(&self, _t: T, q: &[T], f: &mut [T]) {
+        K::force(self, q, f)
+    }
+
     fn energy(&self, _t: T, q: &[T], p: &[T]) -> Option<T> {
         let (n, d) = (self.masses.len(), self.dim);
         let half = lit::<T>(0.5);
@@ -422,9 +446,9 @@ impl<T: Real, S: State<Scalar = T>> Hamiltonian for NBody<T, S> {
     }
 }
 
-impl<T: Real, S: State<Scalar = T>> QuadraticKinetic for NBody<T, S> {}
+impl<T: Real, S: State<Scalar = T>, K: Shape> QuadraticKinetic for NBody<T, S, K> {}
 
-impl<S: State<Scalar = f64>> NBody<f64, S> {
+impl<S: State<Scalar = f64>, K: Shape> NBody<f64, S, K> {
     /// The relative orbit of body 1 about body 0 when there are exactly two bodies and it
     /// is bound: semi-major axis, eccentricity, period (SCENES.md 3's checkable facts).
     pub fn two_body_orbit(&self, y: &S) -> Option<Orbit> {
@@ -473,6 +497,7 @@ impl<S: State<Scalar = f64>> NBody<f64, S> {
 mod tests {
     use super::*;
     use crate::Problem;
+    type DVec = nalgebra::DVector<f64>;
 
     /// Five bodies in 3-D at unremarkable positions, with momenta.
     fn five() -> (NBody<f64, [f64; 30]>, [f64; 30]) {
@@ -484,6 +509,28 @@ mod tests {
             *x = ((i as f64 + 1.0) * 0.7548776662466927).fract() * 4.0 - 2.0;
         }
         (nb, y)
+    }
+
+    #[test]
+    #[allow(clippy::float_cmp)] // the same sums in the same order: bit for bit
+    fn a_fixed_shape_gives_the_run_time_shapes_forces_bit_for_bit() {
+        use crate::scenes::Bodies;
+        let (nb, y) = five();
+        let fixed = NBody::<f64, [f64; 30], Bodies<3, 5>>::new(0.8, nb.masses(), 3).unwrap();
+        let loops = NBody::<f64, DVec, AnyShape>::new(0.8, nb.masses(), 3).unwrap();
+        let (mut a, mut b, mut c) = ([0.0; 15], [0.0; 15], DVec::zeros(15));
+        Hamiltonian::force(&nb, 0.0, &y[..15], &mut a);
+        Hamiltonian::force(&fixed, 0.0, &y[..15], &mut b);
+        Hamiltonian::force(&loops, 0.0, &y[..15], c.as_mut_slice());
+        assert_eq!(a, b);
+        assert_eq!(&a[..], c.as_slice());
+        // and the fixed shape refuses other bodies
+        let err = NBody::<f64, [f64; 24], Bodies<3, 5>>::new(0.8, &[1.0; 4], 3).unwrap_err();
+        assert!(
+            err.to_string()
+                .contains("compiled for 5 bodies in 3 dimensions, got 4 in 3"),
+            "{err}"
+        );
     }
 
     #[test]

@@ -138,14 +138,18 @@ where
     }
 
     fn steps_in_place(&self) -> bool {
-        true
+        // a compensated step goes through `step`, which keeps this one free of any call
+        self.compensated.is_none()
     }
 
     #[inline(always)]
     fn step_in_place(&mut self, p: &P, t: P::Scalar, h: P::Scalar, y: &mut P::State) -> Result<(), Error> {
-        if let Some(word) = self.compensated.as_mut() {
-            self.counters.evaluations += word.step_in_place(p, t, h, y, &mut self.cache);
-            return Ok(());
+        // no call on any path: a call anywhere in the caller's step loop, even on a branch
+        // never taken, makes the register allocator keep the state in memory every step
+        if self.compensated.is_some() {
+            return Err(Error::Misuse(
+                "step_in_place on a compensated splitting stepper (steps_in_place() is false: call step)",
+            ));
         }
         let cached = self.cached && M::DATA.flags.fsal;
         self.flows(p, t, h, y, cached);
