@@ -73,8 +73,8 @@ impl SecondOrder for Swing {
     }
 }
 
-/// Compensated steps of RK4 and of a composition (step and accept, and in place), the
-/// buffers made when compensation is turned on.
+/// Compensated steps of RK4 and of a composition (step and accept: a compensated compiled
+/// splitting does not step in place), the buffers made when compensation is turned on.
 fn compensated_allocations_for(steps: usize) -> usize {
     let y0 = nalgebra::SVector::<f64, 2>::new(0.5, 0.0);
     let mut rk4 = ExplicitRk::<Rk4, _>::new(&y0);
@@ -91,7 +91,6 @@ fn compensated_allocations_for(steps: usize) -> usize {
         jump.step(&Swing, t, 0.01, &z, &mut y_new, None).unwrap();
         Stepper::<Swing>::accept(&mut jump);
         z = y_new;
-        jump.step_in_place(&Swing, t, 0.01, &mut z).unwrap();
     }
     let after = allocations();
     assert!(y.iter().chain(z.iter()).all(|x| x.is_finite()));
