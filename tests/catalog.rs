@@ -34,6 +34,127 @@ fn every_compiled_method_matches_the_data_file() {
     }
 }
 
+/// The embedded weights the reference catalog (from OrdinaryDiffEq's `LobattoIIIB4`) gives
+/// `lobatto_iiib4`, of order 2, which the crate leaves out (docs/methods.md, "Embedded pairs
+/// not offered").
+const LOBATTO_IIIB4_CATALOG_B_HAT: [f64; 3] = [-0.5, 2.0, -0.5];
+
+/// The estimate `h sum_i (b_i - b_hat_i) k_i` of one step of `h` from `y0` on the linear system
+/// `y' = L y` (`L` is `d x d`, row-major), its stages solved exactly (Gaussian elimination on
+/// `(I - h A (x) L) k = 1 (x) L y0`), and the step's `y1 = y0 + h sum_i b_i k_i`.
+fn linear_step(a: &[f64], b: &[f64], b_hat: &[f64], l: &[f64], y0: &[f64], h: f64) -> (Vec<f64>, Vec<f64>) {
+    let (s, d) = (b.len(), y0.len());
+    let n = s * d;
+    let ly0: Vec<f64> = (0..d).map(|r| (0..d).map(|c| l[r * d + c] * y0[c]).sum()).collect();
+    // augmented matrix [I - h A (x) L | 1 (x) L y0]
+    let mut m = vec![0.0; n * (n + 1)];
+    for (i, j, r, c) in
+        (0..s).flat_map(|i| (0..s).flat_map(move |j| (0..d).flat_map(move |r| (0..d).map(move |c| (i, j, r, c)))))
+    {
+        let (row, col) = (i * d + r, j * d + c);
+        m[row * (n + 1) + col] = f64::from(u8::from(row == col)) - h * a[i * s + j] * l[r * d + c];
+    }
+    for row in 0..n {
+        m[row * (n + 1) + n] = ly0[row % d];
+    }
+    for col in 0..n {
+        let pivot = (col..n)
+            .max_by(|&x, &y| m[x * (n + 1) + col].abs().total_cmp(&m[y * (n + 1) + col].abs()))
+            .unwrap();
+        for k in 0..=n {
+            m.swap(col * (n + 1) + k, pivot * (n + 1) + k);
+        }
+        for row in (0..n).filter(|&row| row != col) {
+            let f = m[row * (n + 1) + col] / m[col * (n + 1) + col];
+            for k in col..=n {
+                m[row * (n + 1) + k] -= f * m[col * (n + 1) + k];
+            }
+        }
+    }
+    let k: Vec<f64> = (0..n)
+        .map(|row| m[row * (n + 1) + n] / m[row * (n + 1) + row])
+        .collect();
+    let estimate = (0..d)
+        .map(|r| h * (0..s).map(|i| (b[i] - b_hat[i]) * k[i * d + r]).sum::<f64>())
+        .collect();
+    let y1 = (0..d)
+        .map(|r| y0[r] + h * (0..s).map(|i| b[i] * k[i * d + r]).sum::<f64>())
+        .collect();
+    (estimate, y1)
+}
+
+fn max_abs(v: &[f64]) -> f64 {
+    v.iter().fold(0.0, |m, x| m.max(x.abs()))
+}
+
+/// Why `lobatto_iiib4` has no embedded pair, on the numbers: with the catalog's `b_hat`,
+/// `d = b - b_hat = 2/3 (1, -2, 1)` and the rows of `A` satisfy `a_1 - 2 a_2 + a_3 = 0`, so for
+/// `y' = L y` the stages give `sum_i (b_i - b_hat_i) k_i = L (y0 sum_i d_i + h sum_j
+/// (sum_i d_i a_ij) k_j) = 0`: the estimate vanishes at any step on every linear problem
+/// (decay, growth, the harmonic oscillator), though the step's error does not, and adaptive
+/// steps grow without limit. Do not put the pair back. `lobatto_iiia4`'s pair, kept, does
+/// not vanish.
+#[test]
+fn lobatto_iiib4_has_no_embedded_pair_since_the_catalogs_estimate_vanishes_on_linear_problems() {
+    let iiib = registry::find("lobatto_iiib4").unwrap();
+    assert_eq!((iiib.b_hat, iiib.embedded_order), (None, None), "the pair is dropped");
+    let (a, b, b_hat) = (iiib.a, iiib.b, LOBATTO_IIIB4_CATALOG_B_HAT);
+    // the order checks accept the catalog pair (order 2): only `DROPPED_PAIRS` in
+    // tools/gen_butcher_catalog.py and this test keep it out
+    let spec = stormer::order::TableauSpec {
+        a: a.chunks(3).map(<[f64]>::to_vec).collect(),
+        b: b.to_vec(),
+        c: Some(iiib.c.to_vec()),
+        order: 4,
+        b_hat: Some(b_hat.to_vec()),
+        embedded_order: Some(2),
+        b_hat3: None,
+        tolerance: None,
+    };
+    assert!(Tableau::new("lobatto_iiib4-catalog-pair", &spec).is_ok());
+    // the algebra: d = b - b_hat = 2/3 (1, -2, 1), sum d = 0, d^T A = a_1 - 2 a_2 + a_3 = 0
+    let d: Vec<f64> = b.iter().zip(&b_hat).map(|(b, b_hat)| b - b_hat).collect();
+    for (di, expected) in d.iter().zip([2.0 / 3.0, -4.0 / 3.0, 2.0 / 3.0]) {
+        assert!((di - expected).abs() <= 1e-15, "{d:?}");
+    }
+    assert!(d.iter().sum::<f64>().abs() <= 1e-15, "{d:?}");
+    for j in 0..3 {
+        let row_combination = a[j] - 2.0 * a[3 + j] + a[6 + j];
+        assert!(
+            row_combination.abs() <= 1e-15,
+            "(a_1 - 2 a_2 + a_3)_{j} = {row_combination:e}"
+        );
+    }
+    // the estimate of one step, from the stages solved exactly
+    let oscillator = [0.0, 1.0, -1.0, 0.0];
+    let problems: [(&str, &[f64], &[f64]); 4] = [
+        ("y' = -y", &[-1.0], &[1.0]),
+        ("y' = -50 y", &[-50.0], &[1.0]),
+        ("y' = 3 y", &[3.0], &[1.0]),
+        ("harmonic oscillator", &oscillator, &[1.0, 0.5]),
+    ];
+    for (what, l, y0) in problems {
+        for h in [0.01, 0.1, 1.0, 10.0] {
+            let (estimate, y1) = linear_step(a, b, &b_hat, l, y0, h);
+            let scale = max_abs(&y1).max(1.0);
+            assert!(
+                max_abs(&estimate) <= 1e-13 * scale,
+                "{what}, h = {h}: estimate {estimate:?}"
+            );
+        }
+    }
+    // ... though the step is not exact: one step of 1 on the oscillator is off by 1.1e-3
+    let (estimate, y1) = linear_step(a, b, &b_hat, &oscillator, &[1.0, 0.0], 1.0);
+    let error = (y1[0] - 1f64.cos()).abs().max((y1[1] + 1f64.sin()).abs());
+    eprintln!("lobatto_iiib4, oscillator, h = 1: local error {error:.2e}, catalog estimate {estimate:?}");
+    assert!(error > 5e-4, "local error {error:e}, estimate {estimate:?}");
+    // lobatto_iiia4's pair, of the same order, sees it
+    let iiia = registry::find("lobatto_iiia4").unwrap();
+    let (estimate, _) = linear_step(iiia.a, iiia.b, iiia.b_hat.unwrap(), &oscillator, &[1.0, 0.0], 1.0);
+    eprintln!("lobatto_iiia4, oscillator, h = 1: estimate {estimate:?}");
+    assert!(max_abs(&estimate) > 1e-2, "lobatto_iiia4: estimate {estimate:?}");
+}
+
 #[test]
 fn declared_order_is_exact() {
     // The data reach their declared order and no more (the next order's conditions fail),

@@ -394,6 +394,48 @@ fn arguments_out_of_their_domain() {
     );
 }
 
+/// `lobatto_iiib4` has no embedded pair (the reference catalog's estimate is zero on every
+/// linear problem, docs/methods.md): `stormer run` refuses adaptive steps with it, before
+/// writing anything, instead of growing the step without limit; fixed steps run, and
+/// `stormer methods` lists no embedded order.
+#[test]
+fn lobatto_iiib4_refuses_adaptive_steps() {
+    let dir = workdir("lobatto-iiib4");
+    for tolerance in [["--rtol", "1e-10"], ["--atol", "1e-6"]] {
+        let mut args = vec!["run", "harmonic", "--method", "lobatto_iiib4"];
+        args.extend_from_slice(&tolerance);
+        assert_error(
+            &stormer(&dir, &args),
+            "method lobatto_iiib4 cannot be used here: it has no embedded error estimate, which adaptive steps \
+             (--rtol/--atol) need; use fixed steps (--dt)",
+        );
+    }
+    assert!(!dir.join("out").exists(), "nothing is written for a refused run");
+    assert_ok(&stormer(
+        &dir,
+        &[
+            "run",
+            "harmonic",
+            "--method",
+            "lobatto_iiib4",
+            "--dt",
+            "0.05",
+            "--t-end",
+            "10",
+        ],
+    ));
+    let out = stormer(&dir, &["methods", "--format", "json"]);
+    assert_ok(&out);
+    let list: serde_json::Value = serde_json::from_str(&stdout(&out)).unwrap();
+    let iiib = list
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|m| m["name"] == "lobatto_iiib4")
+        .unwrap();
+    assert!(iiib["embedded_order"].is_null(), "{iiib}");
+}
+
 #[test]
 fn malformed_scene_files() {
     let dir = workdir("bad-scenes");

@@ -639,6 +639,77 @@ fn the_trapezoid_runs_adaptive_steps_on_its_embedded_estimate() {
     assert_eq!(Stepper::<Hairer>::error_order(&gl4), None);
 }
 
+/// `lobatto_iiib4` has no embedded pair (the reference catalog's `b_hat` was dropped: its
+/// estimate vanishes on every linear problem, `tests/catalog.rs`), so the driver refuses
+/// adaptive steps with it, naming the method and saying to take fixed steps; fixed steps run.
+#[test]
+fn lobatto_iiib4_refuses_adaptive_steps() {
+    let iiib = tableau::<LobattoIiib4>();
+    assert_eq!((iiib.b_hat(), iiib.embedded_order()), (None, None));
+    let p = Oscillator::<f64>(PhantomData);
+    let y0 = [1.0, 0.0];
+    for solver in SOLVERS {
+        let mut stepper = ImplicitRk::new(&iiib, &y0, options(solver));
+        assert_eq!(Stepper::<Oscillator<f64>>::error_order(&stepper), None);
+        let failed = Driver::adaptive(Tolerances::new(1e-10, 1e-10))
+            .run(&p, &mut stepper, 0.0, &y0, 10.0)
+            .unwrap_err();
+        assert!(matches!(failed.error, Error::Unsupported { .. }), "{}", failed.error);
+        let message = failed.error.to_string();
+        assert!(
+            message.contains("lobatto_iiib4") && message.contains("no embedded error estimate"),
+            "{message}"
+        );
+        assert!(message.contains("fixed steps"), "{message}");
+        assert_eq!(failed.solution.stats.steps, 0);
+        assert!(failed.solution.y.len() <= 1, "at most the initial state recorded");
+        let sol = Driver::fixed(0.1).run(&p, &mut stepper, 0.0, &y0, 10.0).unwrap();
+        let y = sol.y.last().unwrap();
+        let err = (y[0] - 10f64.cos()).abs().max((y[1] + 10f64.sin()).abs());
+        assert!(err < 1e-5, "{solver:?}: fixed steps, error {err:e}");
+    }
+}
+
+/// What the dropped pair did: `lobatto_iiib4` with the reference catalog's `b_hat` put back
+/// estimates a zero error on the oscillator at every step, so the adaptive step grows
+/// without limit and the solution is lost (`x = cos t` on `[0, 100]`, `rtol = 1e-8`: 5 steps,
+/// off by 0.44), where `lobatto_iiia4` with its own pair of the same order takes 23000 steps
+/// and is off by `4e-11`.
+#[test]
+fn lobatto_iiib4_with_the_catalog_pair_put_back_grows_its_step_without_limit() {
+    let iiib = tableau::<LobattoIiib4>();
+    let spec = stormer::order::TableauSpec {
+        a: iiib.a().chunks(3).map(<[f64]>::to_vec).collect(),
+        b: iiib.b().to_vec(),
+        c: Some(iiib.c().to_vec()),
+        order: 4,
+        b_hat: Some(vec![-0.5, 2.0, -0.5]), // the catalog's (OrdinaryDiffEq's LobattoIIIB4)
+        embedded_order: Some(2),
+        b_hat3: None,
+        tolerance: None,
+    };
+    let put_back = Tableau::new("lobatto_iiib4-catalog-pair", &spec).unwrap();
+    let p = Oscillator::<f64>(PhantomData);
+    let y0 = [1.0, 0.0];
+    let t_end = 100.0;
+    let error = |tableau: &Tableau| {
+        let mut stepper = ImplicitRk::new(tableau, &y0, ImplicitOptions::newton());
+        let sol = Driver::adaptive(Tolerances::new(1e-8, 1e-8))
+            .run(&p, &mut stepper, 0.0, &y0, t_end)
+            .unwrap();
+        let y = sol.y.last().unwrap();
+        let err = (y[0] - t_end.cos()).abs().max((y[1] + t_end.sin()).abs());
+        eprintln!("{}: error {err:.1e}, {:?}", tableau.name(), sol.stats);
+        (err, sol.stats.steps)
+    };
+    let (lost, steps) = error(&put_back);
+    assert!(lost > 0.1, "error {lost:e} in {steps} steps");
+    assert!(steps < 30, "{steps} steps");
+    let (kept, steps) = error(&tableau::<LobattoIiia4>());
+    assert!(kept < 1e-6, "lobatto_iiia4: error {kept:e}");
+    assert!(steps > 100, "lobatto_iiia4: {steps} steps");
+}
+
 fn allocations_per_run(solver: ImplicitSolver, steps: usize) -> usize {
     let y0 = [1.0; 4];
     let mut stepper = ImplicitRk::new(&tableau::<GaussLegendre4>(), &y0, options(solver));

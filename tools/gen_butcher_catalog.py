@@ -12,12 +12,18 @@ It reads every `family = "butcher"` entry and writes, relative to the repository
 * src/catalog/{explicit,embedded,implicit}.rs -- one `tableau!` declaration per method,
   coefficients copied literally (integers, `p/q` rationals, decimal literals);
 * src/catalog/mod.rs -- module declarations and the `for_each_butcher_method!` list;
-* data/butcher.toml -- the Butcher entries copied verbatim, for cross-checking the declarations;
+* data/butcher.toml -- the Butcher entries copied verbatim (but for DROPPED_PAIRS), for
+  cross-checking the declarations;
 * docs/methods.md -- the method list.
+
+An embedded pair listed in DROPPED_PAIRS is removed on the way (its `b_hat` and
+`embedded_order`, with the reason added as the entry's `notes`), so the method is a
+fixed-step one in both the data copy and the declarations, whichever file is read.
 
 Python 3.11+, standard library only.
 """
 
+import json
 import re
 import sys
 import textwrap
@@ -64,6 +70,18 @@ TITLES = {
     "lobatto_iiic4": ("Lobatto IIIC, 3 stages", "fourth-order L-stable method."),
 }
 STRUCT_NAMES = {"rk4_38": "Rk4ThreeEighths"}  # names that plain CamelCase would garble
+
+# Embedded pairs of the catalog that stormer does not offer: method -> why (the entry's
+# `notes` in the data copy, hence the declaration's doc; also listed in docs/methods.md).
+DROPPED_PAIRS = {
+    "lobatto_iiib4": (
+        "Embedded pair dropped: the source's b_hat = [-1/2, 2, -1/2] (order 2) gives "
+        "b - b_hat = 2/3 (1, -2, 1), and the rows of A satisfy a_1 - 2 a_2 + a_3 = 0, so the "
+        "error estimate h sum (b_i - b_hat_i) k_i is exactly zero on every linear problem "
+        "(y' = lambda y, the harmonic oscillator) and adaptive steps would grow without "
+        "limit. Fixed steps only."
+    ),
+}
 
 KINDS = {  # file stem -> (module doc line, docs section title)
     "explicit": ("Explicit Runge-Kutta methods without an embedded error estimator.",
@@ -295,8 +313,10 @@ pub(crate) use for_each_butcher_method;
 
 DATA_HEADER = """\
 # Butcher tableaus of the stormer method catalog, copied verbatim (same keys, sources and
-# independent mpmath `checked` results) by tools/gen_butcher_catalog.py. The crate's
-# tests cross-check the `tableau!` declarations in src/catalog/ against this file.
+# independent mpmath `checked` results) by tools/gen_butcher_catalog.py, except that an
+# embedded pair the crate does not offer is removed (its `b_hat` and `embedded_order`;
+# `notes` says why, `checked` still reports the source's pair). The crate's tests
+# cross-check the `tableau!` declarations in src/catalog/ against this file.
 # Coefficients are TOML strings: integer, exact rational "p/q", or decimal copied
 # literally from the source; irrational closed forms are 40-digit decimals plus a
 # `closed_form` text.
@@ -336,6 +356,25 @@ def mod_rs(methods):
 
 # ---------------------------------------------------------------- data copy and docs
 
+def drop_pairs(text):
+    """The catalog text without the embedded pairs of DROPPED_PAIRS: each such entry loses
+    `b_hat` and `embedded_order` and gains its reason as `notes` (idempotent)."""
+    head, *blocks = re.split(r"^(?=\[\[method\]\]$)", text, flags=re.M)
+    out = [head]
+    for block in blocks:
+        name = re.search(r'^name = "(.*)"$', block, re.M)[1]
+        if name in DROPPED_PAIRS:
+            block = re.sub(r"^(?:b_hat|embedded_order) = (?:\[[^\]]*\]|.*)\n", "", block,
+                           flags=re.M)
+            note = f"notes = {json.dumps(DROPPED_PAIRS[name])}\n"
+            if note not in block:
+                assert not re.search(r"^notes = ", block, re.M), f"{name}: notes already set"
+                block = re.sub(r"^(?=checked_ok = )", lambda _: note, block, count=1, flags=re.M)
+                assert note in block, f"{name}: no checked_ok to put the note before"
+        out.append(block)
+    return "".join(out)
+
+
 def data_toml(text, catalog, methods):
     """Header, conventions, sources and the verbatim text of each Butcher `[[method]]` block."""
     repos = {m["source_repo"] for m in methods}
@@ -363,6 +402,14 @@ def methods_md(methods):
                      m["reference"].replace("|", "/")])
                 for m in methods if kind(m) == stem]
         out += [""]
+    out += ["## Embedded pairs not offered", ""]
+    out += wrap("The reference catalog gives these methods an embedded `b_hat` that stormer "
+                "leaves out, so they take fixed steps only (`--dt`; adaptive steps are "
+                "refused, as for any method without an embedded order):") + [""]
+    for name, why in DROPPED_PAIRS.items():
+        lines = wrap(f"`{name}`: {why.removeprefix('Embedded pair dropped: ')}", WIDTH - 10)
+        out += ["- " + lines[0]] + ["  " + line for line in lines[1:]]
+    out += [""]
     return "\n".join(out)
 
 
@@ -376,7 +423,7 @@ def check(m):
 
 
 def main(path):
-    text = Path(path).read_text(encoding="utf-8")
+    text = drop_pairs(Path(path).read_text(encoding="utf-8"))
     catalog = tomllib.loads(text)
     methods = [m for m in catalog["method"] if m["family"] == "butcher"]
     for m in methods:

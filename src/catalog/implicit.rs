@@ -301,19 +301,23 @@ crate::tableau! {
     /// Lobatto IIIB, 3 stages (LobattoIIIB4) — fourth-order partner of Lobatto IIIA.
     ///
     /// ```text
-    ///    0   | 1/6   -1/6   0
-    ///   1/2  | 1/6   1/3    0
-    ///    1   | 1/6   5/6    0
-    /// -------+------------------
-    ///    b   | 1/6   2/3   1/6
-    ///  b_hat | -1/2   2    -1/2
+    ///   0  | 1/6   -1/6   0
+    ///  1/2 | 1/6   1/3    0
+    ///   1  | 1/6   5/6    0
+    /// -----+------------------
+    ///      | 1/6   2/3   1/6
     /// ```
     ///
-    /// Order 4 (embedded 2), 3 stages; implicit; symmetric.
+    /// Order 4, 3 stages; implicit; symmetric.
     /// Reference: Lobatto IIIB s=3.
     ///
     /// Coefficients from SciML/OrdinaryDiffEq.jl
     /// `lib/OrdinaryDiffEqImplicitTableaus/src/ode_tableaus.jl (LobattoIIIB4)` at b211787.
+    ///
+    /// Note: Embedded pair dropped: the source's b_hat = \[-1/2, 2, -1/2\] (order 2) gives b -
+    /// b_hat = 2/3 (1, -2, 1), and the rows of A satisfy a_1 - 2 a_2 + a_3 = 0, so the error
+    /// estimate h sum (b_i - b_hat_i) k_i is exactly zero on every linear problem (y' = lambda y,
+    /// the harmonic oscillator) and adaptive steps would grow without limit. Fixed steps only.
     pub struct LobattoIiib4 {
         name: "lobatto_iiib4",
         order: 4,
@@ -324,8 +328,6 @@ crate::tableau! {
             [1/6, 5/6, 0],
         ],
         b: [1/6, 2/3, 1/6],
-        b_hat: [-1/2, 2, -1/2],
-        embedded_order: 2,
     }
 }
 
