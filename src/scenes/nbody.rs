@@ -348,10 +348,9 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> NBody<T, S, K> {
     }
 
     /// The force chosen at run time ([`AnyShape`]). For a static state ([`State::LEN`]
-    /// known when the code is compiled) whose length
-    /// fits 2 to 6 bodies in 2-D or 3-D, the unrolled kernel of that shape, inlined into
-    /// the stepper (as fast as a force written by hand for those bodies); otherwise one call
-    /// to the kernel chosen at run time. The same sums in the same order either way.
+    /// known when the code is compiled) whose length fits 2 to 6 bodies in 2-D or 3-D, the
+    /// unrolled kernel of that shape, inlined into the stepper; otherwise one call to the
+    /// kernel chosen from the bodies. The same sums in the same order either way.
     #[inline(always)]
     pub(super) fn force_by_run_time_shape(&self, q: &[T], f: &mut [T]) {
         // each test below is decided at compile time except for the one or two shapes
