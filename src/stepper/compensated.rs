@@ -21,6 +21,16 @@ use crate::real::ops::*;
 use crate::{lit, State};
 use stormer_order::splitting::{Flow, Op};
 
+/// Turns a stepper's compensated form on (made by `make` unless it is on already, so a
+/// running carry is kept) or off: the one `set_compensated` of every stepper that has one.
+pub(crate) fn switch<C>(form: &mut Option<C>, on: bool, make: impl FnOnce() -> C) {
+    if !on {
+        *form = None;
+    } else if form.is_none() {
+        *form = Some(make());
+    }
+}
+
 /// Kahan's carry of a state, with the step that made it pending until accepted.
 #[derive(Debug, Clone)]
 pub(crate) struct Carry<S: State> {

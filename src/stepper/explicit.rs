@@ -134,11 +134,9 @@ where
     }
 
     fn set_compensated(&mut self, on: bool) -> Result<(), Error> {
-        match (on, &self.compensated) {
-            (true, None) => self.compensated = Some(CompensatedCombination::new(M::DATA.b, &self.k[0])),
-            (false, _) => self.compensated = None,
-            (true, Some(_)) => {}
-        }
+        super::compensated::switch(&mut self.compensated, on, || {
+            CompensatedCombination::new(M::DATA.b, &self.k[0])
+        });
         Ok(())
     }
 

@@ -729,11 +729,7 @@ impl<P: Problem> Stepper<P> for ImplicitRk<P::State> {
     }
 
     fn set_compensated(&mut self, on: bool) -> Result<(), Error> {
-        match (on, &self.compensated) {
-            (true, None) => self.compensated = Some(CompensatedSum::new(&self.stage)),
-            (false, _) => self.compensated = None,
-            (true, Some(_)) => {}
-        }
+        super::compensated::switch(&mut self.compensated, on, || CompensatedSum::new(&self.stage));
         Ok(())
     }
 

@@ -170,11 +170,9 @@ impl<P: Problem> Stepper<P> for RuntimeRk<P::State> {
     }
 
     fn set_compensated(&mut self, on: bool) -> Result<(), Error> {
-        match (on, &self.compensated) {
-            (true, None) => self.compensated = Some(CompensatedCombination::new(&self.b_declared, &self.k[0])),
-            (false, _) => self.compensated = None,
-            (true, Some(_)) => {}
-        }
+        super::compensated::switch(&mut self.compensated, on, || {
+            CompensatedCombination::new(&self.b_declared, &self.k[0])
+        });
         Ok(())
     }
 

@@ -166,11 +166,9 @@ impl<P: Splittable> Stepper<P> for RuntimeSplitting<P::State, P::FlowCache> {
         // the compensated form evaluates every force of the word: no cached one is reused
         self.cached = false;
         self.fresh = false;
-        match (on, &self.compensated) {
-            (true, None) => self.compensated = Some(CompensatedWord::new(self.ops.clone(), &self.work)),
-            (false, _) => self.compensated = None,
-            (true, Some(_)) => {}
-        }
+        super::compensated::switch(&mut self.compensated, on, || {
+            CompensatedWord::new(self.ops.clone(), &self.work)
+        });
         Ok(())
     }
 

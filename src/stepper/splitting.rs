@@ -177,11 +177,9 @@ where
         // the compensated form evaluates every force of the word: no cached one is reused
         self.cached = false;
         self.fresh = false;
-        match (on, &self.compensated) {
-            (true, None) => self.compensated = Some(CompensatedWord::from_word(&M::DATA.word(), &self.work)),
-            (false, _) => self.compensated = None,
-            (true, Some(_)) => {}
-        }
+        super::compensated::switch(&mut self.compensated, on, || {
+            CompensatedWord::from_word(&M::DATA.word(), &self.work)
+        });
         Ok(())
     }
 
