@@ -116,7 +116,7 @@ fn suggest(names: &[String]) -> String {
 
 /// A TOML error on one line: `line L, column C: message` (toml's own `Display` spans
 /// several lines with a source excerpt, which does not fit a one-line error).
-pub(crate) fn toml_message(e: &toml::de::Error, text: &str) -> String {
+pub fn toml_message(e: &toml::de::Error, text: &str) -> String {
     let message = one_line(e.message());
     match e.span() {
         Some(span) => {
@@ -128,7 +128,7 @@ pub(crate) fn toml_message(e: &toml::de::Error, text: &str) -> String {
 }
 
 /// The 1-based line and column (in characters) of byte `offset` of `text`.
-pub(crate) fn line_column(text: &str, offset: usize) -> (usize, usize) {
+pub fn line_column(text: &str, offset: usize) -> (usize, usize) {
     let before = text.get(..offset.min(text.len())).unwrap_or(text);
     let line = before.matches('\n').count() + 1;
     let column = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
@@ -136,7 +136,7 @@ pub(crate) fn line_column(text: &str, offset: usize) -> (usize, usize) {
 }
 
 /// Joins the lines of a message with "; ".
-pub(crate) fn one_line(message: &str) -> String {
+pub fn one_line(message: &str) -> String {
     message
         .lines()
         .map(str::trim)

@@ -11,16 +11,22 @@ pub mod flows;
 pub mod hamiltonian;
 pub mod magnetic;
 pub mod method;
+pub mod models;
 mod problem;
 mod real;
 pub mod registry;
-pub mod scenes;
 mod state;
 pub mod stepper;
 pub mod verify;
 
 pub use driver::{Driver, Interrupted, Solution, Stats, StepControl, StopEvent};
 pub use error::Error;
+
+/// One-line messages for the errors of text files (method files here, scene files in the
+/// application): where in the file, and what.
+pub mod diagnostics {
+    pub use crate::error::{line_column, one_line, toml_message};
+}
 pub use flows::{QuadraticKinetic, Splittable};
 pub use hamiltonian::{Hamiltonian, SecondOrder};
 pub use method::{
@@ -63,8 +69,6 @@ pub mod guide {
     pub mod hamiltonian {}
     #[doc = include_str!("../docs/verification.md")]
     pub mod verification {}
-    #[doc = include_str!("../docs/charged-particles.md")]
-    pub mod charged_particles {}
 }
 
 /// The everyday items in one import.

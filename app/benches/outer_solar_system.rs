@@ -1,0 +1,658 @@
+//! Generated splitting steppers against hand-written loops on the outer solar system
+//! (SCENES.md 4: Sun, Jupiter, Saturn, Uranus in 3-D, dt = 10 days), in one binary.
+//!
+//! Two methods: velocity Verlet (`velocity_verlet_kdk`, one force evaluation per step with
+//! FSAL) and the triple jump (`triple_jump4`, the composition expanded over drift-kick-drift
+//! Verlet: three evaluations per step). For each:
+//!
+//! - **hand_written**: the step typed out on `[f64; 12]` positions and momenta, with its own
+//!   four-body force (all sizes known at compile time), in the operation order of the
+//!   generated code (same coefficients, same pair order, same sums);
+//! - **generated**: `SplittingStepper<M, [f64; 24]>` on `NBody<f64, [f64; 24], Bodies<3, 4>>`
+//!   (four bodies in 3-D fixed at compile time, as the hand-written loop has them) through the
+//!   `Stepper` interface, stepping in place (`Stepper::step_in_place`, what the fixed-step
+//!   driver calls);
+//! - **generated_any_shape**: the same on `NBody<f64, [f64; 24]>`, whose force loop is chosen
+//!   from the bodies at run time;
+//! - **driver**: the same stepper run by the library's `Driver` (fixed steps, a record at
+//!   the start and at the end), the path of the CLI;
+//! - **generated_flows_copy**: the macro's unrolled word (`M::flows`) without the
+//!   `Stepper` trait but with its data flow: `y_new <- y`, then the word on `y_new`;
+//! - **generated_flows_local**: the same on a local copy of `y`, written to `y_new` at the
+//!   end;
+//! - **generated_in_place**: the word in place on one `[f64; 24]` state and its halves (what
+//!   an in-place step, without a second state, would do);
+//! - **generated_flows**: the word in place on local `q` and `p` arrays, as the
+//!   hand-written loop does (the code the macro generates, without the `Stepper` data flow);
+//! - **hand_loop_nbody_force**: the hand-written step calling `NBody`'s force and velocity
+//!   (the problem's generality without the stepper);
+//! - **file_scene**: the generated stepper on the scene read from `scenes/`, a
+//!   `DVector<f64>` state (PERFORMANCE.md's "cost of generality", target 1.3x).
+//!
+//! Before any timing the bench asserts that all of them (and the boxed stepper of the
+//! registry, the CLI's path) give trajectories bitwise equal to the hand-written loop over
+//! 10 000 steps. After criterion's report it times the kernels interleaved (31 rounds) and
+//! prints min and median ns per step, the ratio to hand-written, and ns per force
+//! evaluation.
+//!
+//! Run: `cargo bench --bench outer_solar_system`
+
+#![allow(missing_docs)] // criterion_group! generates an undocumented function
+
+use std::hint::black_box;
+use std::time::Instant;
+
+use criterion::{criterion_group, Criterion};
+use nalgebra::DVector;
+use stormer::catalog::{TripleJump4, VelocityVerletKdk};
+use stormer::driver::Recorder;
+use stormer::models::{Bodies, NBody};
+use stormer::order::splitting::Flow;
+use stormer::{registry, Driver, Hamiltonian, SplittingMethod, SplittingStepper, Stepper};
+use stormer_app::scenes::{self, AnyScene};
+
+const STEPS: usize = 1000;
+const H: f64 = 10.0;
+const N: usize = 4;
+
+type Problem = NBody<f64, [f64; 24], Bodies<3, 4>>;
+type AnyShapeProblem = NBody<f64, [f64; 24]>;
+type FileProblem = NBody<f64, DVector<f64>>;
+
+/// The scene as shipped (file values), both as a static-size problem and as read.
+struct Setup {
+    nbody: Problem,
+    any_shape: AnyShapeProblem,
+    file: FileProblem,
+    y0: [f64; 24],
+    y0_file: DVector<f64>,
+    /// `G m_k m_l` for the pairs in order, and `1 / m_k` per coordinate.
+    pair_gm: [f64; 6],
+    inverse_mass: [f64; 12],
+}
+
+fn setup() -> Setup {
+    let AnyScene::NBody(scene) = scenes::load("outer-solar-system").expect("built-in scene") else {
+        panic!("outer-solar-system is an n-body scene")
+    };
+    let masses = scene.model.masses().to_vec();
+    let g = scene.model.g();
+    let nbody = Problem::new(g, &masses, 3).expect("valid bodies");
+    let any_shape = AnyShapeProblem::new(g, &masses, 3).expect("valid bodies");
+    let y0: [f64; 24] = scene.y0.as_slice().try_into().expect("4 bodies in 3-D");
+    let mut pair_gm = [0.0; 6];
+    let mut pair = 0;
+    for k in 0..N {
+        for l in k + 1..N {
+            pair_gm[pair] = g * masses[k] * masses[l];
+            pair += 1;
+        }
+    }
+    let inverse_mass = std::array::from_fn(|i| 1.0 / masses[i / 3]);
+    Setup {
+        nbody,
+        any_shape,
+        y0_file: scene.y0.clone(),
+        file: scene.model,
+        y0,
+        pair_gm,
+        inverse_mass,
+    }
+}
+
+/// The four-body force written for four bodies in 3-D: each pair once, its share added to
+/// the later body and summed in registers for the earlier one (the order of `NBody`'s).
+#[inline(always)]
+fn hand_force(gm: &[f64; 6], q: &[f64; 12], f: &mut [f64; 12]) {
+    *f = [0.0; 12];
+    let mut pair = 0;
+    for k in 0..N {
+        let mut fk = [0.0; 3];
+        for l in k + 1..N {
+            let d = [
+                q[3 * k] - q[3 * l],
+                q[3 * k + 1] - q[3 * l + 1],
+                q[3 * k + 2] - q[3 * l + 2],
+            ];
+            let r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+            let s = gm[pair] / (r2 * r2.sqrt());
+            pair += 1;
+            for c in 0..3 {
+                let x = s * d[c];
+                fk[c] -= x;
+                f[3 * l + c] += x;
+            }
+        }
+        for c in 0..3 {
+            f[3 * k + c] += fk[c];
+        }
+    }
+}
+
+#[inline(always)]
+fn split(y: &[f64; 24]) -> ([f64; 12], [f64; 12]) {
+    (
+        y[..12].try_into().expect("12 positions"),
+        y[12..].try_into().expect("12 momenta"),
+    )
+}
+
+#[inline(always)]
+fn join(q: &[f64; 12], p: &[f64; 12]) -> [f64; 24] {
+    std::array::from_fn(|i| if i < 12 { q[i] } else { p[i - 12] })
+}
+
+#[inline(always)]
+fn drift(tau: f64, w: &[f64; 12], q: &mut [f64; 12], p: &[f64; 12]) {
+    for i in 0..12 {
+        q[i] += tau * (p[i] * w[i]);
+    }
+}
+
+#[inline(always)]
+fn kick(tau: f64, f: &[f64; 12], p: &mut [f64; 12]) {
+    for i in 0..12 {
+        p[i] += tau * f[i];
+    }
+}
+
+/// Velocity Verlet by hand: K(h/2) D(h) K(h/2), the last force reused by the next step.
+fn hand_verlet(s: &Setup, steps: usize, h: f64, y0: &[f64; 24]) -> [f64; 24] {
+    let (mut q, mut p) = split(y0);
+    let mut f = [0.0; 12];
+    hand_force(&s.pair_gm, &q, &mut f);
+    let (half, whole) = (0.5 * h, 1.0 * h);
+    for _ in 0..steps {
+        kick(half, &f, &mut p);
+        drift(whole, &s.inverse_mass, &mut q, &p);
+        hand_force(&s.pair_gm, &q, &mut f);
+        kick(half, &f, &mut p);
+    }
+    join(&q, &p)
+}
+
+/// The triple jump's word over DKD Verlet, D K D K D K D, as seven fractions.
+fn jump_word() -> [f64; 7] {
+    let word = TripleJump4::DATA.word();
+    let flows: Vec<Flow> = word.iter().map(|op| op.flow).collect();
+    use Flow::{Drift as D, Kick as K};
+    assert_eq!(flows, [D, K, D, K, D, K, D], "triple_jump4's word");
+    std::array::from_fn(|i| word[i].coef)
+}
+
+/// The triple jump by hand: three kicks, four drifts, no force carried over.
+fn hand_jump(s: &Setup, c: &[f64; 7], steps: usize, h: f64, y0: &[f64; 24]) -> [f64; 24] {
+    let (mut q, mut p) = split(y0);
+    let mut f = [0.0; 12];
+    for _ in 0..steps {
+        drift(c[0] * h, &s.inverse_mass, &mut q, &p);
+        hand_force(&s.pair_gm, &q, &mut f);
+        kick(c[1] * h, &f, &mut p);
+        drift(c[2] * h, &s.inverse_mass, &mut q, &p);
+        hand_force(&s.pair_gm, &q, &mut f);
+        kick(c[3] * h, &f, &mut p);
+        drift(c[4] * h, &s.inverse_mass, &mut q, &p);
+        hand_force(&s.pair_gm, &q, &mut f);
+        kick(c[5] * h, &f, &mut p);
+        drift(c[6] * h, &s.inverse_mass, &mut q, &p);
+    }
+    join(&q, &p)
+}
+
+/// Velocity Verlet by hand, but with `NBody`'s force and velocity.
+fn hand_verlet_nbody(s: &Setup, steps: usize, h: f64, y0: &[f64; 24]) -> [f64; 24] {
+    let nb = &s.nbody;
+    let (mut q, mut p) = split(y0);
+    let (mut f, mut v) = ([0.0; 12], [0.0; 12]);
+    Hamiltonian::force(nb, 0.0, &q, &mut f);
+    let (half, whole) = (0.5 * h, 1.0 * h);
+    for _ in 0..steps {
+        kick(half, &f, &mut p);
+        nb.kinetic_gradient(&p, &mut v);
+        for i in 0..12 {
+            q[i] += whole * v[i];
+        }
+        Hamiltonian::force(nb, 0.0, &q, &mut f);
+        kick(half, &f, &mut p);
+    }
+    join(&q, &p)
+}
+
+/// The triple jump by hand, with `NBody`'s force and velocity.
+fn hand_jump_nbody(s: &Setup, c: &[f64; 7], steps: usize, h: f64, y0: &[f64; 24]) -> [f64; 24] {
+    let nb = &s.nbody;
+    let (mut q, mut p) = split(y0);
+    let (mut f, mut v) = ([0.0; 12], [0.0; 12]);
+    for _ in 0..steps {
+        for j in 0..3 {
+            nb.kinetic_gradient(&p, &mut v);
+            for i in 0..12 {
+                q[i] += c[2 * j] * h * v[i];
+            }
+            Hamiltonian::force(nb, 0.0, &q, &mut f);
+            kick(c[2 * j + 1] * h, &f, &mut p);
+        }
+        nb.kinetic_gradient(&p, &mut v);
+        for i in 0..12 {
+            q[i] += c[6] * h * v[i];
+        }
+    }
+    join(&q, &p)
+}
+
+/// Any stepper through the `Stepper` interface: in place when it steps in place (as the
+/// fixed-step driver does), else ping-ponging between two states (no swap).
+fn with_stepper<P, St>(problem: &P, stepper: &mut St, steps: usize, h: f64, y0: &P::State) -> P::State
+where
+    P: stormer::Problem<Scalar = f64>,
+    St: Stepper<P> + ?Sized,
+{
+    if stepper.steps_in_place() {
+        let mut y = y0.clone();
+        for i in 0..steps {
+            let _ = stepper.step_in_place(problem, i as f64 * h, h, &mut y);
+        }
+        return y;
+    }
+    let (mut a, mut b) = (y0.clone(), y0.clone());
+    for i in 0..steps {
+        let t = i as f64 * h;
+        let (from, to) = if i % 2 == 0 { (&a, &mut b) } else { (&b, &mut a) };
+        let _ = stepper.step(problem, t, h, from, to, None);
+        stepper.accept();
+    }
+    if steps % 2 == 0 {
+        a
+    } else {
+        b
+    }
+}
+
+fn generated<M: SplittingMethod>(s: &Setup, steps: usize, h: f64, y0: &[f64; 24]) -> [f64; 24]
+where
+    SplittingStepper<M, [f64; 24]>: Stepper<Problem>,
+{
+    match SplittingStepper::<M, [f64; 24]>::new(y0) {
+        Ok(mut st) => with_stepper(&s.nbody, &mut st, steps, h, y0),
+        Err(e) => panic!("{e}"),
+    }
+}
+
+/// As `generated`, on the problem whose force loop is chosen at run time.
+fn generated_any_shape<M: SplittingMethod>(s: &Setup, steps: usize, h: f64, y0: &[f64; 24]) -> [f64; 24]
+where
+    SplittingStepper<M, [f64; 24]>: Stepper<AnyShapeProblem>,
+{
+    match SplittingStepper::<M, [f64; 24]>::new(y0) {
+        Ok(mut st) => with_stepper(&s.any_shape, &mut st, steps, h, y0),
+        Err(e) => panic!("{e}"),
+    }
+}
+
+/// The generated word in place, without the `Stepper` interface.
+fn generated_flows<M: SplittingMethod>(s: &Setup, steps: usize, h: f64, y0: &[f64; 24]) -> [f64; 24] {
+    let co = M::coeffs::<f64>();
+    let (mut q, mut p) = split(y0);
+    let (mut v, mut f) = ([0.0; 12], [0.0; 12]);
+    let mut cached = false;
+    for i in 0..steps {
+        M::flows(
+            &co,
+            &s.nbody,
+            i as f64 * h,
+            h,
+            &mut q,
+            &mut p,
+            &mut v,
+            &mut f,
+            &mut (),
+            cached,
+        );
+        cached = M::DATA.flags.fsal;
+    }
+    join(&q, &p)
+}
+
+/// The generated word in place on one `[f64; 24]` state (its two halves), no second
+/// state: what an in-place step of a stepper would do.
+fn generated_in_place<M: SplittingMethod>(s: &Setup, steps: usize, h: f64, y0: &[f64; 24]) -> [f64; 24] {
+    let co = M::coeffs::<f64>();
+    let mut y = *y0;
+    let mut work = [0.0; 24];
+    let mut cached = false;
+    for i in 0..steps {
+        let (q, p) = y.split_at_mut(12);
+        let (v, f) = work.split_at_mut(12);
+        M::flows(&co, &s.nbody, i as f64 * h, h, q, p, v, f, &mut (), cached);
+        cached = M::DATA.flags.fsal;
+    }
+    y
+}
+
+/// The generated word on a copy of the state, as the `Stepper` interface does it
+/// (`y_new <- y`, then the word in place on `y_new`), ping-ponging between two states.
+fn generated_flows_copy<M: SplittingMethod>(s: &Setup, steps: usize, h: f64, y0: &[f64; 24]) -> [f64; 24] {
+    let co = M::coeffs::<f64>();
+    let (mut a, mut b) = (*y0, *y0);
+    let mut work = [0.0; 24];
+    let mut cached = false;
+    for i in 0..steps {
+        let (from, to) = if i % 2 == 0 { (&a, &mut b) } else { (&b, &mut a) };
+        to.copy_from_slice(from);
+        let (q, p) = to.split_at_mut(12);
+        let (v, f) = work.split_at_mut(12);
+        M::flows(&co, &s.nbody, i as f64 * h, h, q, p, v, f, &mut (), cached);
+        cached = M::DATA.flags.fsal;
+    }
+    if steps % 2 == 0 {
+        a
+    } else {
+        b
+    }
+}
+
+/// As `generated_flows_copy`, but the word runs on a local copy written back at the end.
+fn generated_flows_local<M: SplittingMethod>(s: &Setup, steps: usize, h: f64, y0: &[f64; 24]) -> [f64; 24] {
+    let co = M::coeffs::<f64>();
+    let (mut a, mut b) = (*y0, *y0);
+    let mut work = [0.0; 24];
+    let mut cached = false;
+    for i in 0..steps {
+        let (from, to) = if i % 2 == 0 { (&a, &mut b) } else { (&b, &mut a) };
+        let mut local = *from;
+        let (q, p) = local.split_at_mut(12);
+        let (v, f) = work.split_at_mut(12);
+        M::flows(&co, &s.nbody, i as f64 * h, h, q, p, v, f, &mut (), cached);
+        *to = local;
+        cached = M::DATA.flags.fsal;
+    }
+    if steps % 2 == 0 {
+        a
+    } else {
+        b
+    }
+}
+
+/// Keeps the last record only.
+struct Last([f64; 24]);
+
+impl Recorder<f64, [f64; 24]> for Last {
+    fn record(&mut self, _t: f64, y: &[f64; 24], _energy: Option<f64>) -> Result<(), stormer::Error> {
+        self.0 = *y;
+        Ok(())
+    }
+}
+
+/// The library's driver (fixed steps, records only at the start and the end): the path of
+/// every `Driver::run` and of the CLI.
+fn driver<M: SplittingMethod>(s: &Setup, steps: usize, h: f64, y0: &[f64; 24]) -> [f64; 24]
+where
+    SplittingStepper<M, [f64; 24]>: Stepper<Problem>,
+{
+    let mut st = SplittingStepper::<M, [f64; 24]>::new(y0).unwrap();
+    let mut last = Last(*y0);
+    let outcome =
+        Driver::fixed(h)
+            .every(steps as u64)
+            .run_into(&s.nbody, &mut st, 0.0, y0, h * steps as f64, &mut last);
+    assert!(outcome.is_ok());
+    last.0
+}
+
+fn file_scene<M: SplittingMethod>(s: &Setup, steps: usize, h: f64) -> DVector<f64>
+where
+    SplittingStepper<M, DVector<f64>>: Stepper<FileProblem>,
+{
+    match SplittingStepper::<M, DVector<f64>>::new(&s.y0_file) {
+        Ok(mut st) => with_stepper(&s.file, &mut st, steps, h, &s.y0_file),
+        Err(e) => panic!("{e}"),
+    }
+}
+
+/// Force evaluations alone: `steps` evaluations of `NBody`'s force, and of the hand one.
+fn forces_nbody(s: &Setup, steps: usize, y0: &[f64; 24]) -> [f64; 12] {
+    let (mut q, _) = split(y0);
+    let mut f = [0.0; 12];
+    for _ in 0..steps {
+        Hamiltonian::force(&s.nbody, 0.0, &q, &mut f);
+        // every position depends on the last forces, so that no pair is loop-invariant
+        kick(1e-9, &f, &mut q);
+    }
+    f
+}
+
+#[inline(never)]
+fn forces_hand(s: &Setup, steps: usize, y0: &[f64; 24]) -> [f64; 12] {
+    let (mut q, _) = split(y0);
+    let mut f = [0.0; 12];
+    for _ in 0..steps {
+        hand_force(&s.pair_gm, &q, &mut f);
+        kick(1e-9, &f, &mut q);
+    }
+    f
+}
+
+fn bits(y: &[f64]) -> Vec<u64> {
+    y.iter().map(|x| x.to_bits()).collect()
+}
+
+fn assert_bitwise_equal(s: &Setup) {
+    let n = STEPS * 10;
+    let c = jump_word();
+    let verlet = bits(&hand_verlet(s, n, H, &s.y0));
+    let jump = bits(&hand_jump(s, &c, n, H, &s.y0));
+    let check = |name: &str, got: Vec<u64>, want: &Vec<u64>| {
+        assert_eq!(&got, want, "{name} differs from the hand-written loop");
+    };
+    check(
+        "generated verlet",
+        bits(&generated::<VelocityVerletKdk>(s, n, H, &s.y0)),
+        &verlet,
+    );
+    check(
+        "generated verlet, any shape",
+        bits(&generated_any_shape::<VelocityVerletKdk>(s, n, H, &s.y0)),
+        &verlet,
+    );
+    check(
+        "verlet flows",
+        bits(&generated_flows::<VelocityVerletKdk>(s, n, H, &s.y0)),
+        &verlet,
+    );
+    check(
+        "verlet flows, copy",
+        bits(&generated_flows_copy::<VelocityVerletKdk>(s, n, H, &s.y0)),
+        &verlet,
+    );
+    check(
+        "verlet flows, local",
+        bits(&generated_flows_local::<VelocityVerletKdk>(s, n, H, &s.y0)),
+        &verlet,
+    );
+    check(
+        "verlet, driver",
+        bits(&driver::<VelocityVerletKdk>(s, n, H, &s.y0)),
+        &verlet,
+    );
+    check("verlet, NBody force", bits(&hand_verlet_nbody(s, n, H, &s.y0)), &verlet);
+    check(
+        "verlet, file scene",
+        bits(file_scene::<VelocityVerletKdk>(s, n, H).as_slice()),
+        &verlet,
+    );
+    check("generated jump", bits(&generated::<TripleJump4>(s, n, H, &s.y0)), &jump);
+    check(
+        "generated jump, any shape",
+        bits(&generated_any_shape::<TripleJump4>(s, n, H, &s.y0)),
+        &jump,
+    );
+    check(
+        "jump flows",
+        bits(&generated_flows::<TripleJump4>(s, n, H, &s.y0)),
+        &jump,
+    );
+    check(
+        "jump flows, copy",
+        bits(&generated_flows_copy::<TripleJump4>(s, n, H, &s.y0)),
+        &jump,
+    );
+    check(
+        "jump flows, local",
+        bits(&generated_flows_local::<TripleJump4>(s, n, H, &s.y0)),
+        &jump,
+    );
+    check("jump, driver", bits(&driver::<TripleJump4>(s, n, H, &s.y0)), &jump);
+    check("jump, NBody force", bits(&hand_jump_nbody(s, &c, n, H, &s.y0)), &jump);
+    check(
+        "jump, file scene",
+        bits(file_scene::<TripleJump4>(s, n, H).as_slice()),
+        &jump,
+    );
+    // the boxed steppers of the registry (the CLI's path) are the same code too
+    for (name, want) in [("velocity_verlet_kdk", &verlet), ("triple_jump4", &jump)] {
+        let mut boxed = registry::splitting_stepper_quadratic::<Problem>(name, &s.y0).expect("catalog method");
+        check(name, bits(&with_stepper(&s.nbody, &mut boxed, n, H, &s.y0)), want);
+    }
+    assert_eq!(bits(&forces_nbody(s, 100, &s.y0)), bits(&forces_hand(s, 100, &s.y0)));
+}
+
+fn bench(c: &mut Criterion) {
+    let s = setup();
+    assert_bitwise_equal(&s);
+    let w = jump_word();
+    let mut group = c.benchmark_group("outer_solar_system_1000_steps");
+    group.bench_function("verlet/hand_written", |b| {
+        b.iter(|| hand_verlet(&s, STEPS, black_box(H), &s.y0))
+    });
+    group.bench_function("verlet/generated", |b| {
+        b.iter(|| generated::<VelocityVerletKdk>(&s, STEPS, black_box(H), &s.y0))
+    });
+    group.bench_function("jump/hand_written", |b| {
+        b.iter(|| hand_jump(&s, &w, STEPS, black_box(H), &s.y0))
+    });
+    group.bench_function("jump/generated", |b| {
+        b.iter(|| generated::<TripleJump4>(&s, STEPS, black_box(H), &s.y0))
+    });
+    group.finish();
+}
+
+type Kernel<'a> = (&'static str, f64, Box<dyn Fn() -> f64 + 'a>);
+
+/// Interleaved timing: each round times every kernel once; min and median over rounds,
+/// in ns per step, with the ratio to the first kernel of the group and ns per evaluation.
+fn interleaved(title: &str, kernels: &[Kernel<'_>]) {
+    const ROUNDS: usize = 31;
+    const REPEAT: usize = 50;
+    let time = |run: &dyn Fn() -> f64| {
+        let start = Instant::now();
+        for _ in 0..REPEAT {
+            black_box(run());
+        }
+        start.elapsed().as_secs_f64() * 1e9 / (REPEAT * STEPS) as f64
+    };
+    let mut samples = vec![Vec::new(); kernels.len()];
+    for _ in 0..ROUNDS {
+        for (i, (_, _, run)) in kernels.iter().enumerate() {
+            samples[i].push(time(run.as_ref()));
+        }
+    }
+    let stats: Vec<(f64, f64)> = samples
+        .iter_mut()
+        .map(|v| {
+            v.sort_by(f64::total_cmp);
+            (v[0], v[v.len() / 2])
+        })
+        .collect();
+    println!("\n{title}: interleaved, {ROUNDS} rounds x {REPEAT} runs x {STEPS} steps");
+    println!("  kernel                    ns/step min  median   ratio min  median   ns/evaluation (min)");
+    for ((name, evaluations, _), (min, median)) in kernels.iter().zip(&stats) {
+        println!(
+            "  {name:<24} {min:11.2} {median:7.2}   {:9.3} {:7.3}   {:8.2}",
+            min / stats[0].0,
+            median / stats[0].1,
+            min / evaluations
+        );
+    }
+}
+
+fn interleaved_ratios() {
+    let s = setup();
+    let w = jump_word();
+    let first = |y: [f64; 24]| y[0];
+    macro_rules! kernels {
+        ($m:ty, $evaluations:expr, $hand:expr, $hand_nbody:expr) => {{
+            let v: Vec<Kernel> = vec![
+                ("hand_written", $evaluations, Box::new($hand)),
+                (
+                    "generated",
+                    $evaluations,
+                    Box::new(|| first(generated::<$m>(&s, STEPS, black_box(H), &s.y0))),
+                ),
+                (
+                    "driver",
+                    $evaluations,
+                    Box::new(|| first(driver::<$m>(&s, STEPS, black_box(H), &s.y0))),
+                ),
+                (
+                    "generated_any_shape",
+                    $evaluations,
+                    Box::new(|| first(generated_any_shape::<$m>(&s, STEPS, black_box(H), &s.y0))),
+                ),
+                (
+                    "generated_flows_copy",
+                    $evaluations,
+                    Box::new(|| first(generated_flows_copy::<$m>(&s, STEPS, black_box(H), &s.y0))),
+                ),
+                (
+                    "generated_flows_local",
+                    $evaluations,
+                    Box::new(|| first(generated_flows_local::<$m>(&s, STEPS, black_box(H), &s.y0))),
+                ),
+                (
+                    "generated_in_place",
+                    $evaluations,
+                    Box::new(|| first(generated_in_place::<$m>(&s, STEPS, black_box(H), &s.y0))),
+                ),
+                (
+                    "generated_flows",
+                    $evaluations,
+                    Box::new(|| first(generated_flows::<$m>(&s, STEPS, black_box(H), &s.y0))),
+                ),
+                ("hand_loop_nbody_force", $evaluations, Box::new($hand_nbody)),
+                (
+                    "file_scene",
+                    $evaluations,
+                    Box::new(|| file_scene::<$m>(&s, STEPS, black_box(H))[0]),
+                ),
+            ];
+            v
+        }};
+    }
+    let verlet = kernels!(
+        VelocityVerletKdk,
+        1.0,
+        || first(hand_verlet(&s, STEPS, black_box(H), &s.y0)),
+        || first(hand_verlet_nbody(&s, STEPS, black_box(H), &s.y0))
+    );
+    interleaved("velocity_verlet_kdk (1 force evaluation per step)", &verlet);
+    let jump = kernels!(
+        TripleJump4,
+        3.0,
+        || first(hand_jump(&s, &w, STEPS, black_box(H), &s.y0)),
+        || first(hand_jump_nbody(&s, &w, STEPS, black_box(H), &s.y0))
+    );
+    interleaved("triple_jump4 (3 force evaluations per step)", &jump);
+    let forces: Vec<Kernel> = vec![
+        ("hand_force", 1.0, Box::new(|| forces_hand(&s, STEPS, &s.y0)[0])),
+        ("nbody_force", 1.0, Box::new(|| forces_nbody(&s, STEPS, &s.y0)[0])),
+    ];
+    interleaved("force evaluations alone (per 'step' = one evaluation)", &forces);
+}
+
+criterion_group!(benches, bench);
+
+fn main() {
+    benches();
+    interleaved_ratios();
+    Criterion::default().configure_from_args().final_summary();
+}

@@ -1,0 +1,483 @@
+//! Our side of the REBOUND comparison (`benches/peers/rebound.py`): the outer solar system
+//! (SCENES.md 4: Sun, Jupiter, Saturn, Uranus in 3-D, G = 2.95912208286e-4, AU and days),
+//! integrated by generated splitting steppers through `Stepper::step_in_place` (the
+//! fixed-step driver's path). Prints one JSON object on stdout.
+//!
+//! ```sh
+//! cargo run --release --example outer_solar_front -- time [--span DAYS] [--dt DAYS] [--reps N]
+//! cargo run --release --example outer_solar_front -- front [--span DAYS] [--dts LIST] [--cadence DAYS]
+//! cargo run --release --example outer_solar_front -- plot FRONT.json OUT.svg
+//! ```
+//!
+//! - `time`: ns per step of each method at one `dt` (default 10 days) over `span` (default
+//!   360000 days), best of `reps` runs (default 3). One call is one round: the script calls
+//!   it between REBOUND's rounds so that the two are interleaved.
+//! - `front`: for each method and each `dt` (default 100, 50, 20, 10, 5, 2, 1 days): max
+//!   |dE/E| sampled every `cadence` days (default 100), the positions at `span` and their
+//!   error against a reference run of ours (Kahan-Li 8 at dt = 10 days; the script measures
+//!   every run, ours and REBOUND's, against REBOUND's IAS15 instead, which has the smaller
+//!   round-off), and the run's wall time (best of 3, no sampling). Then our adaptive
+//!   `dop853` and `verner9` at tolerances `--tols` (default 1e-8, 1e-10, 1e-12, 1e-14;
+//!   energy checked at every accepted step).
+//! - `plot`: reads the combined front written by the script and draws the work-precision
+//!   diagrams (error against seconds) with plotters.
+
+use std::hint::black_box;
+use std::time::Instant;
+
+use stormer::catalog::{
+    BlanesMoanSrkn11b, BlanesMoanSrkn6b, Dop853, KahanLi6, KahanLi8, TripleJump4, VelocityVerletKdk, Verner9,
+};
+use stormer::driver::Recorder;
+use stormer::models::NBody;
+use stormer::{Driver, ExplicitMethod, ExplicitRk, Problem, SplittingMethod, SplittingStepper, Stepper, Tolerances};
+
+type Nb = NBody<f64, [f64; 24]>;
+
+/// SCENES.md 4, as REBOUND gets them too.
+const G: f64 = 2.95912208286e-4;
+const MASSES: [f64; 4] = [1.00000597682, 0.000954786104043, 0.000285583733151, 0.0000437273164546];
+const POSITIONS: [f64; 12] = [
+    0.0,
+    0.0,
+    0.0,
+    -3.5023653,
+    -3.8169847,
+    -1.5507963,
+    9.0755314,
+    -3.0458353,
+    -1.6483708,
+    8.3101420,
+    -16.2901086,
+    -7.2521278,
+];
+const VELOCITIES: [f64; 12] = [
+    0.0,
+    0.0,
+    0.0,
+    0.00565429,
+    -0.00412490,
+    -0.00190589,
+    0.00168318,
+    0.00483525,
+    0.00192462,
+    0.00354178,
+    0.00137102,
+    0.00055029,
+];
+
+fn problem() -> (Nb, [f64; 24]) {
+    let nb = Nb::new(G, &MASSES, 3).expect("valid bodies");
+    let mut y = [0.0; 24];
+    nb.set_state(&POSITIONS, &VELOCITIES, &mut y).expect("4 bodies in 3-D");
+    (nb, y)
+}
+
+/// One of our methods: its name, order, force evaluations per step, and its runs.
+struct Method {
+    name: &'static str,
+    order: usize,
+    evals: usize,
+    run: fn(&Nb, &[f64; 24], f64, usize) -> [f64; 24],
+    sampled: Sampled,
+}
+
+/// A run sampling the energy: `(problem, y0, h, steps, every)` to the end state and max |dE/E|.
+type Sampled = fn(&Nb, &[f64; 24], f64, usize, usize) -> ([f64; 24], f64);
+
+/// A series of the plot: its label and its points (seconds, position error, max |dE/E|).
+type Series = (String, Vec<(f64, f64, f64)>);
+
+/// `steps` steps of `h` in place, the fixed-step driver's loop without records.
+fn run<M: SplittingMethod>(nb: &Nb, y0: &[f64; 24], h: f64, steps: usize) -> [f64; 24]
+where
+    SplittingStepper<M, [f64; 24]>: Stepper<Nb>,
+{
+    let mut st = SplittingStepper::<M, [f64; 24]>::new(y0).expect("a splitting stepper");
+    assert!(Stepper::<Nb>::steps_in_place(&st));
+    let mut y = *y0;
+    for i in 0..steps {
+        let r = st.step_in_place(nb, i as f64 * h, h, &mut y);
+        debug_assert!(r.is_ok());
+    }
+    y
+}
+
+/// The same, with max |dE/E| sampled every `every` steps (and at the end).
+fn sampled<M: SplittingMethod>(nb: &Nb, y0: &[f64; 24], h: f64, steps: usize, every: usize) -> ([f64; 24], f64)
+where
+    SplittingStepper<M, [f64; 24]>: Stepper<Nb>,
+{
+    let mut st = SplittingStepper::<M, [f64; 24]>::new(y0).expect("a splitting stepper");
+    let e0 = nb.energy(0.0, y0).expect("an energy");
+    let mut y = *y0;
+    let mut worst: f64 = 0.0;
+    for i in 0..steps {
+        st.step_in_place(nb, i as f64 * h, h, &mut y).expect("a finite step");
+        if (i + 1) % every == 0 || i + 1 == steps {
+            let e = nb.energy((i + 1) as f64 * h, &y).expect("an energy");
+            worst = worst.max(((e - e0) / e0).abs());
+        }
+    }
+    (y, worst)
+}
+
+macro_rules! method {
+    ($ty:ty, $name:literal, $order:literal, $evals:literal) => {
+        Method {
+            name: $name,
+            order: $order,
+            evals: $evals,
+            run: run::<$ty>,
+            sampled: sampled::<$ty>,
+        }
+    };
+}
+
+fn methods() -> Vec<Method> {
+    vec![
+        method!(VelocityVerletKdk, "velocity_verlet_kdk", 2, 1),
+        method!(TripleJump4, "triple_jump4", 4, 3),
+        method!(BlanesMoanSrkn6b, "blanes_moan_srkn6b", 4, 6),
+        method!(KahanLi6, "kahan_li6", 6, 9),
+        method!(BlanesMoanSrkn11b, "blanes_moan_srkn11b", 6, 11),
+        method!(KahanLi8, "kahan_li8", 8, 17),
+    ]
+}
+
+/// Keeps the last state and the largest |dE/E| of the records.
+struct Watch {
+    e0: f64,
+    worst: f64,
+    last: [f64; 24],
+}
+
+impl Recorder<f64, [f64; 24]> for Watch {
+    fn record(&mut self, _t: f64, y: &[f64; 24], energy: Option<f64>) -> Result<(), stormer::Error> {
+        if let Some(e) = energy {
+            self.worst = self.worst.max(((e - self.e0) / self.e0).abs());
+        }
+        self.last = *y;
+        Ok(())
+    }
+}
+
+/// An adaptive embedded Runge-Kutta run of ours (the non-symplectic high-order competitor):
+/// `every` = 1 records (and checks the energy) at every accepted step, `u64::MAX` only at
+/// the ends. Returns the end state, max |dE/E|, steps and evaluations.
+fn adaptive<M: ExplicitMethod>(nb: &Nb, y0: &[f64; 24], tol: f64, span: f64, every: u64) -> ([f64; 24], f64, u64, u64) {
+    let mut st = ExplicitRk::<M, [f64; 24]>::new(y0);
+    let e0 = nb.energy(0.0, y0).expect("an energy");
+    let mut watch = Watch {
+        e0,
+        worst: 0.0,
+        last: *y0,
+    };
+    let (stats, _) = Driver::adaptive(Tolerances::new(tol, tol))
+        .every(every)
+        .run_into(nb, &mut st, 0.0, y0, span, &mut watch)
+        .unwrap_or_else(|(_, e)| panic!("{e}"));
+    (watch.last, watch.worst, stats.steps, stats.evaluations)
+}
+
+fn arg(args: &[String], name: &str) -> Option<String> {
+    args.iter()
+        .position(|a| a == name)
+        .and_then(|i| args.get(i + 1).cloned())
+}
+
+fn num(args: &[String], name: &str, default: f64) -> f64 {
+    arg(args, name).map_or(default, |s| {
+        s.parse().unwrap_or_else(|_| panic!("{name}: not a number: {s}"))
+    })
+}
+
+fn steps_for(span: f64, h: f64) -> usize {
+    let n = (span / h).round();
+    assert!(
+        (n * h - span).abs() < 1e-9 * span,
+        "dt = {h} must divide the span {span}"
+    );
+    n as usize
+}
+
+/// Best of `reps` wall times of `f`, in seconds.
+fn best_of(reps: usize, mut f: impl FnMut() -> [f64; 24]) -> f64 {
+    let mut best = f64::INFINITY;
+    for _ in 0..reps {
+        let start = Instant::now();
+        black_box(f());
+        best = best.min(start.elapsed().as_secs_f64());
+    }
+    best
+}
+
+fn position_error(y: &[f64; 24], reference: &[f64; 24]) -> f64 {
+    (0..4)
+        .map(|k| {
+            (0..3)
+                .map(|c| (y[3 * k + c] - reference[3 * k + c]).powi(2))
+                .sum::<f64>()
+                .sqrt()
+        })
+        .fold(0.0, f64::max)
+}
+
+fn json_list(v: &[f64]) -> String {
+    let items: Vec<String> = v.iter().map(|x| format!("{x:e}")).collect();
+    format!("[{}]", items.join(", "))
+}
+
+fn time(args: &[String]) {
+    let (nb, y0) = problem();
+    let span = num(args, "--span", 360000.0);
+    let h = num(args, "--dt", 10.0);
+    let reps = num(args, "--reps", 3.0) as usize;
+    let steps = steps_for(span, h);
+    let rows: Vec<String> = methods()
+        .iter()
+        .map(|m| {
+            let secs = best_of(reps, || (m.run)(&nb, black_box(&y0), black_box(h), steps));
+            format!(
+                "{{\"method\": \"{}\", \"order\": {}, \"evals\": {}, \"ns_per_step\": {:e}}}",
+                m.name,
+                m.order,
+                m.evals,
+                secs * 1e9 / steps as f64
+            )
+        })
+        .collect();
+    println!(
+        "{{\"dt\": {h:e}, \"span\": {span:e}, \"steps\": {steps}, \"rows\": [{}]}}",
+        rows.join(", ")
+    );
+}
+
+fn front(args: &[String]) {
+    let (nb, y0) = problem();
+    let span = num(args, "--span", 360000.0);
+    let cadence = num(args, "--cadence", 100.0);
+    let dts: Vec<f64> = arg(args, "--dts")
+        .unwrap_or_else(|| "100,50,20,10,5,2,1".into())
+        .split(',')
+        .map(|s| s.trim().parse().expect("a list of step sizes"))
+        .collect();
+    let all = methods();
+    let reference_method = all.iter().find(|m| m.name == "kahan_li8").expect("kahan_li8");
+    // Few steps keep the reference's round-off small: Kahan-Li 8's truncation error at
+    // dt = 10 days is below the round-off of a run at dt = 0.25 (both about 1e-9 AU).
+    let h_ref = 10.0;
+    let start = Instant::now();
+    let reference = (reference_method.run)(&nb, &y0, h_ref, steps_for(span, h_ref));
+    let ref_secs = start.elapsed().as_secs_f64();
+    // How far the reference is from the same method at half the step.
+    let coarse = (reference_method.run)(&nb, &y0, 0.5 * h_ref, steps_for(span, 0.5 * h_ref));
+    let mut rows = Vec::new();
+    for m in &all {
+        for &h in &dts {
+            let steps = steps_for(span, h);
+            let every = steps_for(cadence, h);
+            let (y, de) = (m.sampled)(&nb, &y0, h, steps, every);
+            let secs = best_of(3, || (m.run)(&nb, black_box(&y0), black_box(h), steps));
+            rows.push(format!(
+                "{{\"who\": \"stormer\", \"method\": \"{}\", \"order\": {}, \"evals_per_step\": {}, \"dt\": {h:e}, \
+                 \"steps\": {steps}, \"evaluations\": {}, \"seconds\": {secs:e}, \"max_dE\": {de:e}, \"pos_err\": {:e}, \"q_end\": {}}}",
+                m.name,
+                m.order,
+                m.evals,
+                steps * m.evals,
+                position_error(&y, &reference),
+                json_list(&y[..12]),
+            ));
+        }
+    }
+    type Adaptive = fn(&Nb, &[f64; 24], f64, f64, u64) -> ([f64; 24], f64, u64, u64);
+    let adaptives: [(&str, usize, Adaptive); 2] =
+        [("dop853", 8, adaptive::<Dop853>), ("verner9", 9, adaptive::<Verner9>)];
+    let tols: Vec<f64> = arg(args, "--tols")
+        .unwrap_or_else(|| "1e-8,1e-10,1e-12,1e-14".into())
+        .split(',')
+        .map(|s| s.trim().parse().expect("a list of tolerances"))
+        .collect();
+    for (name, order, run) in adaptives {
+        for &tol in &tols {
+            let (y, de, steps, evals) = run(&nb, &y0, tol, span, 1);
+            let mut best = f64::INFINITY;
+            for _ in 0..3 {
+                let start = Instant::now();
+                black_box(run(&nb, black_box(&y0), tol, span, u64::MAX));
+                best = best.min(start.elapsed().as_secs_f64());
+            }
+            rows.push(format!(
+                "{{\"who\": \"stormer\", \"method\": \"{name}\", \"order\": {order}, \"tol\": {tol:e}, \
+                 \"steps\": {steps}, \"evaluations\": {evals}, \"seconds\": {best:e}, \"max_dE\": {de:e}, \
+                 \"pos_err\": {:e}, \"q_end\": {}}}",
+                position_error(&y, &reference),
+                json_list(&y[..12]),
+            ));
+        }
+    }
+    let y0_json = json_list(&y0);
+    println!(
+        "{{\"span\": {span:e}, \"cadence\": {cadence:e}, \"G\": {G:e}, \"masses\": {}, \"y0\": {y0_json}, \
+         \"reference\": {{\"method\": \"kahan_li8\", \"dt\": {h_ref:e}, \"seconds\": {ref_secs:e}, \
+         \"positions\": {}, \"self_check\": {:e}}}, \"rows\": [\n{}\n]}}",
+        json_list(&MASSES),
+        json_list(&reference[..12]),
+        position_error(&coarse, &reference),
+        rows.join(",\n")
+    );
+}
+
+fn plot(args: &[String]) {
+    use plotters::prelude::*;
+    let input = args.get(1).expect("plot FRONT.json OUT.svg");
+    let output = args.get(2).expect("plot FRONT.json OUT.svg");
+    let text = std::fs::read_to_string(input).expect("the combined front");
+    let data: serde_json::Value = serde_json::from_str(&text).expect("JSON");
+    let rows = data["rows"].as_array().expect("rows");
+    // One series per (who, method).
+    let mut series: Vec<Series> = Vec::new();
+    for r in rows {
+        let label = format!(
+            "{} {}",
+            r["who"].as_str().unwrap_or("?"),
+            r["method"].as_str().unwrap_or("?")
+        );
+        let point = (
+            r["seconds"].as_f64().unwrap_or(f64::NAN),
+            r["pos_err"].as_f64().unwrap_or(f64::NAN),
+            r["max_dE"].as_f64().unwrap_or(f64::NAN),
+        );
+        match series.iter_mut().find(|(l, _)| *l == label) {
+            Some((_, pts)) => pts.push(point),
+            None => series.push((label, vec![point])),
+        }
+    }
+    let floor = 1e-17;
+    let ok = |x: f64| x.is_finite() && x > 0.0;
+    let (mut t_lo, mut t_hi) = (f64::INFINITY, 0.0f64);
+    for (_, pts) in &series {
+        for &(t, _, _) in pts {
+            if ok(t) {
+                t_lo = t_lo.min(t);
+                t_hi = t_hi.max(t);
+            }
+        }
+    }
+    let root = SVGBackend::new(output, (1500, 640)).into_drawing_area();
+    root.fill(&WHITE).expect("draw");
+    let (plots, legend) = root.split_horizontally(1260);
+    let panels = plots.split_evenly((1, 2));
+    let titles = ["position error at t_end (AU) vs seconds", "max |dE/E| vs seconds"];
+    for (panel, (which, title)) in panels.iter().zip(titles.iter().enumerate()) {
+        let (mut e_lo, mut e_hi) = (f64::INFINITY, 0.0f64);
+        for (_, pts) in &series {
+            for &(_, pe, de) in pts {
+                let e = if which == 0 { pe } else { de };
+                if ok(e) {
+                    e_lo = e_lo.min(e.max(floor));
+                    e_hi = e_hi.max(e);
+                }
+            }
+        }
+        let mut chart = ChartBuilder::on(panel)
+            .caption(*title, ("sans-serif", 18))
+            .margin(12)
+            .x_label_area_size(40)
+            .y_label_area_size(70)
+            .build_cartesian_2d(
+                (t_lo * 0.7..t_hi * 1.4).log_scale(),
+                (e_lo * 0.3..e_hi * 3.0).log_scale(),
+            )
+            .expect("axes");
+        chart
+            .configure_mesh()
+            .x_desc("wall time of the run (s)")
+            .y_desc(if which == 0 {
+                "max position error (AU)"
+            } else {
+                "max |dE/E|"
+            })
+            .x_label_formatter(&|x| format!("{x:.0e}"))
+            .y_label_formatter(&|y| format!("{y:.0e}"))
+            .draw()
+            .expect("mesh");
+        for (i, (label, pts)) in series.iter().enumerate() {
+            let colour = colour_of(label, i);
+            let dashed = label.starts_with("rebound");
+            let mut line: Vec<(f64, f64)> = pts
+                .iter()
+                .map(|&(t, pe, de)| (t, if which == 0 { pe } else { de }))
+                .filter(|&(t, e)| ok(t) && ok(e))
+                .map(|(t, e)| (t, e.max(floor)))
+                .collect();
+            line.sort_by(|a, b| a.0.total_cmp(&b.0));
+            let style = ShapeStyle::from(&colour).stroke_width(if dashed { 1 } else { 2 });
+            chart.draw_series(LineSeries::new(line.clone(), style)).expect("line");
+            if dashed {
+                chart
+                    .draw_series(line.iter().map(|&p| Cross::new(p, 4, style)))
+                    .expect("points");
+            } else {
+                chart
+                    .draw_series(line.iter().map(|&p| Circle::new(p, 3, style.filled())))
+                    .expect("points");
+            }
+        }
+    }
+    // One legend for both panels, beside them: ours solid with dots, REBOUND thin with
+    // crosses, the same colour at the same order.
+    for (i, (label, _)) in series.iter().enumerate() {
+        let colour = colour_of(label, i);
+        let y = 40 + 24 * i as i32;
+        let rebound = label.starts_with("rebound");
+        let style = ShapeStyle::from(&colour).stroke_width(if rebound { 1 } else { 2 });
+        legend
+            .draw(&PathElement::new(vec![(10, y), (40, y)], style))
+            .expect("legend");
+        if rebound {
+            legend.draw(&Cross::new((25, y), 4, style)).expect("legend");
+        } else {
+            legend.draw(&Circle::new((25, y), 3, style.filled())).expect("legend");
+        }
+        legend
+            .draw(&Text::new(label.clone(), (48, y - 7), ("sans-serif", 13)))
+            .expect("legend");
+    }
+    root.present().expect("write the SVG");
+    eprintln!("wrote {output}");
+}
+
+/// Colours by order, shared by our method and REBOUND's of the same order.
+fn colour_of(label: &str, i: usize) -> plotters::style::RGBAColor {
+    use plotters::style::{Color, Palette, Palette99, RGBColor};
+    let method = label.split_whitespace().nth(1).unwrap_or("");
+    let rgb = match method {
+        "velocity_verlet_kdk" | "leapfrog2" => RGBColor(200, 30, 30),
+        "triple_jump4" | "leapfrog4" => RGBColor(30, 140, 30),
+        "kahan_li6" | "leapfrog6" => RGBColor(20, 60, 200),
+        "kahan_li8" | "leapfrog8" => RGBColor(130, 30, 160),
+        "blanes_moan_srkn6b" => RGBColor(0, 150, 150),
+        "blanes_moan_srkn11b" => RGBColor(230, 120, 0),
+        "dop853" => RGBColor(110, 110, 110),
+        "verner9" => RGBColor(0, 0, 0),
+        "whfast" => RGBColor(150, 100, 40),
+        "ias15" => RGBColor(230, 0, 180),
+        _ => return Palette99::pick(i).to_rgba(),
+    };
+    rgb.to_rgba()
+}
+
+fn main() {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    match args.first().map(String::as_str) {
+        Some("time") => time(&args),
+        Some("front") => front(&args),
+        Some("plot") => plot(&args),
+        _ => {
+            eprintln!("usage: outer_solar_front time|front|plot ... (see the file's header)");
+            std::process::exit(2);
+        }
+    }
+}

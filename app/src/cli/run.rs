@@ -1,0 +1,257 @@
+//! `stormer run SCENE`: integrate a scene, stream the records to CSV, summarize on stderr.
+
+use super::choice::MethodChoice;
+use super::output::{file_safe, CsvRecorder};
+use anyhow::anyhow;
+use std::io::Write;
+use std::path::{Path, PathBuf};
+use stormer::{Driver, Error, ImplicitOptions, Stats, StepControl, Tolerances};
+use stormer_app::scenes::{self, Scene, SceneVisitor, Setup};
+
+/// Arguments of `stormer run`; every value defaults to the scene file's.
+#[derive(Debug, clap::Args)]
+pub struct RunArgs {
+    /// A built-in scene (see `stormer scene list`) or a path to a scene file (.toml).
+    pub scene: String,
+    /// The method: a catalog name (`stormer methods`), a TOML method file, or `theta`
+    /// [default: the scene's].
+    #[arg(long, short, value_name = "NAME|FILE")]
+    pub method: Option<String>,
+    /// Step size (> 0) [default: the scene's]; with --rtol/--atol, the first step.
+    #[arg(long, value_name = "H", allow_negative_numbers = true)]
+    pub dt: Option<f64>,
+    /// End time [default: the scene's].
+    #[arg(long, value_name = "T", allow_negative_numbers = true)]
+    pub t_end: Option<f64>,
+    /// Write one record every N steps (the first and last are always written)
+    /// [default: the scene's].
+    #[arg(long, value_name = "N")]
+    pub every: Option<u64>,
+    /// Output CSV file [default: out/<scene>-<method>.csv].
+    #[arg(long, short, value_name = "FILE.csv")]
+    pub out: Option<PathBuf>,
+    /// Relative tolerance: adaptive steps (methods with an embedded pair); the other
+    /// tolerance defaults to the same value.
+    #[arg(long, value_name = "R", allow_negative_numbers = true)]
+    pub rtol: Option<f64>,
+    /// Absolute tolerance: adaptive steps (methods with an embedded pair).
+    #[arg(long, value_name = "A", allow_negative_numbers = true)]
+    pub atol: Option<f64>,
+    /// How implicit methods solve their stage equations [default: fixed-point].
+    #[arg(long, value_enum)]
+    pub solver: Option<SolverArg>,
+    /// Iterations allowed to the implicit solver per step [default: 100 fixed-point
+    /// sweeps, 20 Newton iterations].
+    #[arg(long, value_name = "N")]
+    pub max_iterations: Option<usize>,
+    /// Weight of the theta method (`--method theta`), in [0, 1]: 1 explicit Euler,
+    /// 0 backward Euler, 1/2 trapezoidal [default: 0.5].
+    #[arg(long, value_name = "A", allow_negative_numbers = true)]
+    pub alpha: Option<f64>,
+    /// Compensated (Kahan) summation of each step's increment, for long runs with small
+    /// steps: round-off per step of order eps*h instead of eps (Runge-Kutta methods,
+    /// splittings and compositions).
+    #[arg(long)]
+    pub compensated: bool,
+}
+
+/// `--solver`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum SolverArg {
+    /// Fixed-point iteration (cheap, needs h L < 1).
+    FixedPoint,
+    /// Simplified Newton (stiff problems).
+    Newton,
+}
+
+/// The arguments' own domains, checked before anything runs.
+fn check(args: &RunArgs) -> Result<(), Error> {
+    let positive = |what: &str, x: Option<f64>| match x {
+        Some(v) if !(v.is_finite() && v > 0.0) => {
+            Err(Error::invalid(what, format!("must be a finite number > 0, got {v}")))
+        }
+        _ => Ok(()),
+    };
+    let non_negative = |what: &str, x: Option<f64>| match x {
+        Some(v) if !(v.is_finite() && v >= 0.0) => {
+            Err(Error::invalid(what, format!("must be a finite number >= 0, got {v}")))
+        }
+        _ => Ok(()),
+    };
+    positive("--dt", args.dt)?;
+    if let Some(t) = args.t_end.filter(|t| !t.is_finite()) {
+        return Err(Error::invalid("--t-end", format!("must be a finite number, got {t}")));
+    }
+    if args.every == Some(0) {
+        return Err(Error::invalid("--every", "must be >= 1, got 0"));
+    }
+    non_negative("--rtol", args.rtol)?;
+    non_negative("--atol", args.atol)?;
+    if args.rtol.or(args.atol) == Some(0.0) && args.atol.or(args.rtol) == Some(0.0) {
+        return Err(Error::invalid("--rtol/--atol", "they cannot both be 0"));
+    }
+    if let Some(a) = args.alpha.filter(|a| !(a.is_finite() && (0.0..=1.0).contains(a))) {
+        return Err(Error::invalid("--alpha", format!("must be in [0, 1], got {a}")));
+    }
+    if args.max_iterations == Some(0) {
+        return Err(Error::invalid("--max-iterations", "must be >= 1, got 0"));
+    }
+    Ok(())
+}
+
+/// Runs a scene.
+pub fn run(args: &RunArgs) -> anyhow::Result<()> {
+    check(args)?;
+    scenes::load(&args.scene)?.visit(Runner { args })
+}
+
+/// The run, generic over the scene's model.
+struct Runner<'a> {
+    args: &'a RunArgs,
+}
+
+impl SceneVisitor for Runner<'_> {
+    type Output = anyhow::Result<()>;
+
+    fn visit<S: Scene>(self, setup: Setup<S>) -> anyhow::Result<()> {
+        let args = self.args;
+        let method_name = args.method.as_deref().unwrap_or(&setup.run.method);
+        let method = MethodChoice::resolve(method_name, args.alpha)?;
+        let mut implicit = match args.solver {
+            Some(SolverArg::Newton) => ImplicitOptions::newton(),
+            Some(SolverArg::FixedPoint) | None => ImplicitOptions::fixed_point(),
+        };
+        if let Some(n) = args.max_iterations {
+            implicit.max_iterations = n;
+        }
+        let mut stepper = method.stepper::<S>(&setup.model, &setup.y0, &implicit)?;
+        if args.compensated {
+            // refused here, before an output file is created (the driver turns it on too)
+            stepper.set_compensated(true)?;
+        }
+        let (t0, t_end) = (setup.run.t0, args.t_end.unwrap_or(setup.run.t_end));
+        let every = args.every.unwrap_or(setup.run.every);
+        let adaptive = args.rtol.is_some() || args.atol.is_some();
+        let control = if adaptive {
+            if stepper.error_order().is_none() {
+                return Err(Error::Unsupported {
+                    name: method.label(),
+                    reason: "it has no embedded error estimate, which adaptive steps (--rtol/--atol) need; \
+                             use fixed steps (--dt), or a method with an embedded order (`stormer methods`)"
+                        .into(),
+                }
+                .into());
+            }
+            let rtol = args.rtol.or(args.atol).unwrap_or_default();
+            let atol = args.atol.or(args.rtol).unwrap_or_default();
+            StepControl::Adaptive {
+                tol: Tolerances::new(rtol, atol),
+                h0: args.dt,
+                h_max: None,
+            }
+        } else {
+            StepControl::Fixed(args.dt.unwrap_or(setup.run.dt))
+        };
+        let path = args.out.clone().unwrap_or_else(|| {
+            PathBuf::from("out").join(format!("{}-{}.csv", file_safe(&setup.name), file_safe(&method.label())))
+        });
+        let mut driver = Driver::with(control).every(every).cancel_when(super::interrupt::flag());
+        if args.compensated {
+            driver = driver.compensated();
+        }
+        let stop = setup.model.stop();
+        if let Some(stop) = stop {
+            let model = &setup.model;
+            driver = driver.stop_when(move |t, y| (stop.g)(model, t, y));
+        }
+        let mut csv = CsvRecorder::create(&path, &setup)?;
+        csv.progress = Some(super::progress::Progress::new(t0, t_end));
+        let result = driver.run_into(&setup.model, &mut stepper, t0, &setup.y0, t_end, &mut csv);
+        if let Some(progress) = &mut csv.progress {
+            progress.finish();
+        }
+        let flushed = csv.flush();
+        let (stats, stopped, error) = match result {
+            Ok((stats, stopped)) => (stats, stopped, None),
+            Err((stats, e)) => (stats, None, Some(e)),
+        };
+        if let Some(Error::Cancelled { t, .. }) = error {
+            let kept = match flushed {
+                Ok(()) => format!("{} records kept in {}", csv.records, path.display()),
+                Err(f) => format!("the records could not all be kept: {f}"),
+            };
+            let last = csv
+                .last_t
+                .map_or_else(String::new, |t| format!(" (the last at t = {t})"));
+            return Err(super::interrupt::StoppedByUser(format!(
+                "stopped by Ctrl-C at t = {t} after {} steps, {kept}{last}",
+                stats.steps
+            ))
+            .into());
+        }
+        if let Some(e) = error {
+            let last = csv
+                .last_t
+                .map_or_else(String::new, |t| format!(", the last at t = {t}"));
+            let kept = match flushed {
+                Ok(()) => format!("; {} records kept in {}{last}", csv.records, path.display()),
+                Err(_) if matches!(e, Error::Io { .. }) => String::new(),
+                Err(f) => format!("; {f}"),
+            };
+            return Err(anyhow!("{e}; stopped after {} steps{kept}", stats.steps));
+        }
+        flushed?;
+        // what the scene's stop condition found: where the run stopped, or that it did not
+        let stop = stop.map(|stop| match &stopped {
+            Some(event) => (stop.report)(&setup.model, event.t, &event.y),
+            None => format!("no {} before t = {t_end}", stop.event),
+        });
+        let summary = summary(
+            &format!("{} on {}", method.label(), setup.name),
+            &stats,
+            adaptive,
+            &csv,
+            &path,
+            stop,
+        );
+        // The summary is information, not output: a closed stderr is not an error.
+        let _ = writeln!(std::io::stderr(), "{summary}");
+        let pictures = super::pictures::draw_run(&path, &setup.name, &method.label())?;
+        let names: Vec<String> = pictures.iter().map(|p| p.display().to_string()).collect();
+        let _ = writeln!(std::io::stderr(), "pictures: {}", names.join(", "));
+        Ok(())
+    }
+}
+
+/// The one-line summary of a finished run.
+fn summary<S: Scene>(
+    what: &str,
+    stats: &Stats,
+    adaptive: bool,
+    csv: &CsvRecorder<'_, S>,
+    path: &Path,
+    stop: Option<String>,
+) -> String {
+    let mut parts = vec![format!("{what}: {} steps", stats.steps)];
+    if adaptive {
+        parts.push(format!("{} rejected", stats.rejected));
+    }
+    parts.push(format!("{} evaluations", stats.evaluations));
+    if stats.solver_iterations > 0 {
+        parts.push(format!("{} solver iterations", stats.solver_iterations));
+    }
+    if stats.jacobians > 0 {
+        parts.push(format!("{} Jacobians", stats.jacobians));
+    }
+    match csv.energy_drift() {
+        Some((d, true)) => parts.push(format!("max |dE/E0| {d:.3e}")),
+        Some((d, false)) => parts.push(format!("max |dE| {d:.3e}")),
+        None => {}
+    }
+    if let Some(e) = csv.max_error {
+        parts.push(format!("max error vs exact {e:.3e}"));
+    }
+    parts.extend(stop);
+    parts.push(format!("{} records in {}", csv.records, path.display()));
+    parts.join(", ")
+}

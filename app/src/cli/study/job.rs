@@ -1,0 +1,415 @@
+//! Planning a study on its scene, the reference solution, and running one job.
+
+use super::{fnv1a, Control, Kind, MethodEntry, ReferenceInfo, Row, StudyId};
+use crate::cli::choice::MethodChoice;
+use crate::cli::output::{file_safe, one_line};
+use anyhow::Context;
+use serde::{Deserialize, Serialize};
+use std::path::Path;
+use std::time::Instant;
+use stormer::driver::Recorder;
+use stormer::{registry, Driver, Error, ImplicitOptions, State, StepControl, Stepper, Tolerances};
+use stormer_app::scenes::{self, AnyScene, Scene, SceneVisitor, Setup};
+
+/// A scene's file text, parsed again by each job (each worker thread has its own model).
+#[derive(Debug, Clone)]
+pub struct SceneText {
+    text: String,
+    origin: String,
+    name: String,
+}
+
+impl SceneText {
+    /// A built-in name or a path to a scene file, with the errors of `stormer run`.
+    pub fn load(arg: &str) -> Result<Self, Error> {
+        if let Some(b) = scenes::builtin(arg) {
+            return Ok(SceneText {
+                text: b.text.to_string(),
+                origin: "built-in".into(),
+                name: b.name.into(),
+            });
+        }
+        let scene = scenes::load(arg)?;
+        let text = std::fs::read_to_string(arg).map_err(|e| Error::Scene {
+            file: arg.to_string(),
+            reason: format!("cannot read the file: {e}"),
+        })?;
+        Ok(SceneText {
+            text,
+            origin: arg.to_string(),
+            name: scene.name().to_string(),
+        })
+    }
+
+    fn parse(&self) -> Result<AnyScene, Error> {
+        scenes::parse(&self.text, &self.origin, &self.name)
+    }
+
+    fn hash(&self) -> String {
+        format!("{:016x}", fnv1a(self.text.as_bytes()))
+    }
+}
+
+/// A study before its work list: the scene and the methods, checked against each other.
+pub struct Plan {
+    scene: String,
+    scene_hash: String,
+    t0: f64,
+    t_end: f64,
+    /// The methods as resolved on the scene.
+    pub methods: Vec<MethodEntry>,
+    truth: &'static str,
+    energy: bool,
+}
+
+impl Plan {
+    /// The study with this work list.
+    pub fn into_study(self, kind: Kind, jobs: Vec<super::Job>) -> StudyId {
+        StudyId {
+            kind,
+            scene: self.scene,
+            scene_hash: self.scene_hash,
+            t0: self.t0,
+            t_end: self.t_end,
+            methods: self.methods,
+            jobs,
+            truth: self.truth.into(),
+            energy: self.energy,
+        }
+    }
+}
+
+/// Resolves every method and builds its stepper on the scene: an unknown method, or one the
+/// scene refuses (a splitting on a model that is not a Hamiltonian), fails the whole study
+/// before anything runs, with the scene's sentence.
+pub fn plan(scene: &SceneText, methods: &[String], t_end: Option<f64>) -> Result<Plan, Error> {
+    let mut plan = scene.parse()?.visit(Planner { methods, t_end })?;
+    plan.scene_hash = scene.hash();
+    Ok(plan)
+}
+
+struct Planner<'a> {
+    methods: &'a [String],
+    t_end: Option<f64>,
+}
+
+impl SceneVisitor for Planner<'_> {
+    type Output = Result<Plan, Error>;
+
+    fn visit<S: Scene>(self, setup: Setup<S>) -> Result<Plan, Error> {
+        let t0 = setup.run.t0;
+        let t_end = self.t_end.unwrap_or(setup.run.t_end);
+        if t_end - t0 == 0.0 {
+            return Err(Error::invalid(
+                "--t-end",
+                format!("must differ from the start time {t0}"),
+            ));
+        }
+        let mut methods: Vec<MethodEntry> = Vec::new();
+        for given in self.methods {
+            let choice = MethodChoice::resolve(given, None)?;
+            let stepper = choice.stepper::<S>(&setup.model, &setup.y0, &ImplicitOptions::fixed_point())?;
+            let label = choice.label();
+            if methods.iter().any(|m| m.label == label) {
+                return Err(Error::invalid("--methods", format!("{label} is given twice")));
+            }
+            methods.push(MethodEntry {
+                given: given.clone(),
+                label,
+                order: stepper.info().order,
+                embedded: stepper.error_order().is_some(),
+            });
+        }
+        Ok(Plan {
+            scene: setup.name.clone(),
+            scene_hash: String::new(),
+            t0,
+            t_end,
+            methods,
+            truth: if setup.exact(t_end).is_some() {
+                "exact"
+            } else {
+                "reference"
+            },
+            energy: setup.initial_energy().is_some(),
+        })
+    }
+}
+
+/// How the wall time is measured.
+#[derive(Debug, Clone, Copy)]
+pub struct Timing {
+    /// At least this many runs.
+    pub runs: u32,
+    /// More runs (up to 100) while their total is under this many seconds.
+    pub min_time: f64,
+}
+
+/// The reference solution at the end of the span.
+#[derive(Debug, Clone)]
+pub struct Reference {
+    /// The state.
+    pub state: Vec<f64>,
+    /// How it was made.
+    pub info: ReferenceInfo,
+}
+
+const RECIPE: &str = "dop853, rtol = atol = 1e-14; uncertainty = max difference from rtol = atol = 1e-13";
+const REFERENCE_FORMAT: &str = "stormer-reference/1";
+
+#[derive(Debug, Serialize, Deserialize)]
+struct CachedReference {
+    format: String,
+    recipe: String,
+    scene: String,
+    scene_hash: String,
+    t0: f64,
+    t_end: f64,
+    uncertainty: f64,
+    state: Vec<f64>,
+}
+
+/// The reference of the study's scene and span: read from the cache, or computed and
+/// stored there.
+pub fn reference(scene: &SceneText, study: &StudyId, cache: &Path) -> anyhow::Result<Reference> {
+    let path = cache.join(format!(
+        "{}-t{}-{}.json",
+        file_safe(&study.scene),
+        file_safe(&format!("{:?}", study.t_end)),
+        study.scene_hash
+    ));
+    let file = path.display().to_string();
+    let fits = |c: &CachedReference| {
+        c.format == REFERENCE_FORMAT
+            && c.recipe == RECIPE
+            && c.scene == study.scene
+            && c.scene_hash == study.scene_hash
+            && c.t0.to_bits() == study.t0.to_bits()
+            && c.t_end.to_bits() == study.t_end.to_bits()
+    };
+    if let Some(c) = std::fs::read_to_string(&path)
+        .ok()
+        .and_then(|text| serde_json::from_str::<CachedReference>(&text).ok())
+        .filter(fits)
+    {
+        return Ok(Reference {
+            state: c.state,
+            info: ReferenceInfo {
+                recipe: c.recipe,
+                uncertainty: c.uncertainty,
+                file,
+            },
+        });
+    }
+    let (state, uncertainty) = scene.parse()?.visit(ReferenceRunner { t_end: study.t_end })?;
+    let cached = CachedReference {
+        format: REFERENCE_FORMAT.into(),
+        recipe: RECIPE.into(),
+        scene: study.scene.clone(),
+        scene_hash: study.scene_hash.clone(),
+        t0: study.t0,
+        t_end: study.t_end,
+        uncertainty,
+        state,
+    };
+    std::fs::create_dir_all(cache).with_context(|| format!("cannot create {}", cache.display()))?;
+    // written aside and renamed: shards sharing a directory never read half a file
+    let tmp = path.with_extension(format!("tmp{}", std::process::id()));
+    std::fs::write(&tmp, serde_json::to_string_pretty(&cached)? + "\n")
+        .with_context(|| format!("cannot write {}", tmp.display()))?;
+    std::fs::rename(&tmp, &path).with_context(|| format!("cannot write {file}"))?;
+    Ok(Reference {
+        state: cached.state,
+        info: ReferenceInfo {
+            recipe: cached.recipe,
+            uncertainty,
+            file,
+        },
+    })
+}
+
+struct ReferenceRunner {
+    t_end: f64,
+}
+
+impl SceneVisitor for ReferenceRunner {
+    type Output = Result<(Vec<f64>, f64), Error>;
+
+    fn visit<S: Scene>(self, setup: Setup<S>) -> Self::Output {
+        let run = |tol: f64| -> Result<Vec<f64>, Error> {
+            let mut stepper = registry::stepper::<S>("dop853", &setup.y0, &ImplicitOptions::fixed_point())?;
+            let mut last = Measure::default();
+            Driver::adaptive(Tolerances::new(tol, tol))
+                .every(u64::MAX)
+                .run_into(
+                    &setup.model,
+                    &mut stepper,
+                    setup.run.t0,
+                    &setup.y0,
+                    self.t_end,
+                    &mut last,
+                )
+                .map_err(|(_, e)| e)?;
+            Ok(last.last)
+        };
+        let fine = run(1e-14)?;
+        let coarse = run(1e-13)?;
+        Ok((fine.clone(), max_difference(&fine, &coarse)))
+    }
+}
+
+fn max_difference(a: &[f64], b: &[f64]) -> f64 {
+    a.iter().zip(b).fold(0.0f64, |m, (x, y)| m.max((x - y).abs()))
+}
+
+/// Keeps the last state and the largest energy drift.
+#[derive(Default)]
+struct Measure {
+    e0: Option<f64>,
+    max_de: f64,
+    last: Vec<f64>,
+}
+
+impl<St: State<Scalar = f64>> Recorder<f64, St> for Measure {
+    fn record(&mut self, _t: f64, y: &St, energy: Option<f64>) -> Result<(), Error> {
+        if let Some(e) = energy {
+            let e0 = *self.e0.get_or_insert(e);
+            self.max_de = self.max_de.max((e - e0).abs());
+        }
+        self.last.clear();
+        self.last.extend_from_slice(y.as_slice());
+        Ok(())
+    }
+}
+
+/// Records nothing (the timing runs).
+struct Nothing;
+
+impl<St> Recorder<f64, St> for Nothing {
+    fn record(&mut self, _t: f64, _y: &St, _energy: Option<f64>) -> Result<(), Error> {
+        Ok(())
+    }
+}
+
+/// Runs job `j` of the study: one measuring run (final error, energy sampled at about a
+/// thousand records), then the timing runs without records.
+pub fn run(scene: &SceneText, study: &StudyId, j: usize, reference: Option<&Reference>, timing: Timing) -> Row {
+    let runner = JobRunner {
+        study,
+        j,
+        reference,
+        timing,
+    };
+    match scene.parse() {
+        Ok(s) => s.visit(runner),
+        Err(e) => runner.failed(Default::default(), &e),
+    }
+}
+
+struct JobRunner<'a> {
+    study: &'a StudyId,
+    j: usize,
+    reference: Option<&'a Reference>,
+    timing: Timing,
+}
+
+impl JobRunner<'_> {
+    fn failed(&self, stats: stormer::Stats, e: &Error) -> Row {
+        Row {
+            job: self.j,
+            steps: stats.steps,
+            rejected: stats.rejected,
+            evaluations: stats.evaluations,
+            seconds: None,
+            timing_runs: 0,
+            error: None,
+            energy_error: None,
+            floor: 0.0,
+            failure: Some(one_line(&e.to_string())),
+        }
+    }
+}
+
+impl SceneVisitor for JobRunner<'_> {
+    type Output = Row;
+
+    fn visit<S: Scene>(self, setup: Setup<S>) -> Row {
+        let study = self.study;
+        let job = study.jobs[self.j];
+        let entry = &study.methods[job.method];
+        let (t0, t_end) = (study.t0, study.t_end);
+        let span = t_end - t0;
+        let mut stepper = match MethodChoice::resolve(&entry.given, None)
+            .and_then(|c| c.stepper::<S>(&setup.model, &setup.y0, &ImplicitOptions::fixed_point()))
+        {
+            Ok(s) => s,
+            Err(e) => return self.failed(Default::default(), &e),
+        };
+        // about a thousand energy samples at a fixed cadence; every step when adaptive
+        let cadence = |n: f64| ((n / 1000.0).floor() as u64).max(1);
+        let (control, every) = match job.control {
+            Control::Dt(h) => (StepControl::Fixed(h), cadence((span / h).abs().ceil())),
+            Control::Steps(n) => (StepControl::Fixed(span / n as f64), cadence(n as f64)),
+            Control::Tolerance(tol) => (
+                StepControl::Adaptive {
+                    tol: Tolerances::new(tol, tol),
+                    h0: None,
+                    h_max: None,
+                },
+                1,
+            ),
+        };
+        let mut measure = Measure::default();
+        let driver = Driver::with(control).every(every);
+        let stats = match driver.run_into(&setup.model, &mut stepper, t0, &setup.y0, t_end, &mut measure) {
+            Ok((stats, _)) => stats,
+            Err((stats, e)) => return self.failed(stats, &e),
+        };
+        let exact = setup.exact(t_end);
+        let truth: &[f64] = match (&exact, self.reference) {
+            (Some(y), _) => y.as_slice(),
+            (None, Some(r)) => &r.state,
+            (None, None) => &[],
+        };
+        let error = (!truth.is_empty()).then(|| max_difference(&measure.last, truth));
+        // below this an error is the reference's or the rounding's, not the method's
+        let scale = truth.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        let rounding = 10.0 * f64::EPSILON * stats.steps as f64 * scale;
+        let floor = rounding.max(10.0 * self.reference.map_or(0.0, |r| r.info.uncertainty));
+        let energy_error = measure.e0.map(|e0| {
+            if e0 == 0.0 {
+                measure.max_de
+            } else {
+                measure.max_de / e0.abs()
+            }
+        });
+        let quiet = Driver::with(control).every(u64::MAX);
+        let (mut best, mut total, mut runs) = (f64::INFINITY, 0.0, 0u32);
+        loop {
+            let start = Instant::now();
+            let r = quiet.run_into(&setup.model, &mut stepper, t0, &setup.y0, t_end, &mut Nothing);
+            let took = start.elapsed().as_secs_f64();
+            if let Err((stats, e)) = r {
+                return self.failed(stats, &e);
+            }
+            best = best.min(took);
+            total += took;
+            runs += 1;
+            if runs >= self.timing.runs && (total >= self.timing.min_time || runs >= 100) {
+                break;
+            }
+        }
+        Row {
+            job: self.j,
+            steps: stats.steps,
+            rejected: stats.rejected,
+            evaluations: stats.evaluations,
+            seconds: Some(best),
+            timing_runs: runs,
+            error,
+            energy_error,
+            floor,
+            failure: None,
+        }
+    }
+}

@@ -1,0 +1,538 @@
+//! The charged-particle scene file: the fields in `[parameters]` and one `[[particles]]`
+//! entry per particle, every value checked.
+//!
+//! ```toml
+//! model = "charged-particles"
+//! [parameters]
+//! omega = [0.0, 0.0, 1.0]   # uniform field: the rotation vector of unit ratio (= -B);
+//!                           # or B = [...], or bottle = { B0 = 1.0, L = 5.0 }
+//! E = [0.0, 0.0, 0.0]       # uniform electric field (optional)
+//! mu = 1.0                  # attracting Coulomb centre at the origin (optional)
+//! quadrupole = 2.0          # Penning-trap potential (k/2)(z^2 - (x^2 + y^2)/2) (optional)
+//! interaction = 1.0         # Coulomb interaction between the particles (optional)
+//! [[particles]]
+//! name = "ion"              # optional
+//! ratio = 1.0               # or charge = ...; mass defaults to 1
+//! position = [1.0, 1.0, 1.0]
+//! velocity = [0.0, 0.0, 0.0]
+//! ```
+
+use super::file::{Number, Source};
+use super::nbody_file::{checked_name, column};
+use super::{general_splitting, Scene, SplittingChoice};
+use nalgebra::DVector;
+use serde::Deserialize;
+use stormer::magnetic::Charged;
+use stormer::models::{ChargedParticles, MagneticField};
+use stormer::stepper::ParticleMethod;
+use stormer::{Error, Stepper};
+use toml::Spanned;
+
+/// The model of the `charged-particles` scenes: [`ChargedParticles`] on `DVector` states,
+/// wrapped in [`Charged`] (the problem the methods run on).
+pub type ChargedScene = Charged<ChargedParticles<f64, DVector<f64>>>;
+
+/// The `[parameters]` table of a charged-particle scene (every key optional).
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ChargedParameters {
+    /// A uniform magnetic field as the rotation vector of a particle of unit
+    /// charge-to-mass ratio (`omega = -B`; SCENES.md 5's "field along axis 3 of strength
+    /// w" is `omega = [0, 0, w]`).
+    #[serde(default)]
+    pub omega: Option<Spanned<Vec<Number>>>,
+    /// A uniform magnetic field `B` (particle `k` turns with `-r_k B`).
+    #[serde(default, rename = "B")]
+    pub b: Option<Spanned<Vec<Number>>>,
+    /// A magnetic bottle: `bottle = { B0 = ..., L = ... }`.
+    #[serde(default)]
+    pub bottle: Option<Spanned<BottleTable>>,
+    /// A uniform electric field.
+    #[serde(default, rename = "E")]
+    pub e: Option<Spanned<Vec<Number>>>,
+    /// An attracting Coulomb centre at the origin (`> 0`).
+    #[serde(default)]
+    pub mu: Option<Number>,
+    /// The quadrupole's `k` (finite).
+    #[serde(default)]
+    pub quadrupole: Option<Number>,
+    /// The Coulomb constant between the particles (`> 0`).
+    #[serde(default)]
+    pub interaction: Option<Number>,
+}
+
+/// `bottle = { B0 = ..., L = ... }`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BottleTable {
+    /// The field at the centre (finite).
+    #[serde(rename = "B0")]
+    pub b0: Number,
+    /// The length over which it doubles (`> 0`).
+    #[serde(rename = "L")]
+    pub length: Number,
+}
+
+/// One `[[particles]]` entry.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ParticleEntry {
+    /// Its name (optional; it names the particle's CSV columns).
+    #[serde(default)]
+    pub name: Option<Spanned<String>>,
+    /// Its mass (`> 0`, default 1).
+    #[serde(default)]
+    pub mass: Option<Number>,
+    /// Its charge (finite); give this or `ratio`.
+    #[serde(default)]
+    pub charge: Option<Number>,
+    /// Its charge-to-mass ratio (finite); give this or `charge`.
+    #[serde(default)]
+    pub ratio: Option<Number>,
+    /// Its position: 3 coordinates.
+    pub position: Spanned<Vec<Number>>,
+    /// Its velocity: 3 coordinates.
+    pub velocity: Spanned<Vec<Number>>,
+}
+
+/// A 3-vector read from a file: exactly 3 finite numbers, named `field[i]` in errors.
+fn vector3(src: &Source<'_>, field: &str, v: &Spanned<Vec<Number>>) -> Result<[f64; 3], Error> {
+    let n = v.get_ref().len();
+    if n != 3 {
+        return Err(src.error_at(
+            v.span(),
+            format!("{field} must have 3 coordinates (particles move in 3-D), got {n}"),
+        ));
+    }
+    let mut x = [0.0; 3];
+    for (i, c) in v.get_ref().iter().enumerate() {
+        x[i] = src.finite(&format!("{field}[{i}]"), c)?;
+    }
+    Ok(x)
+}
+
+/// The magnetic field of `[parameters]`: at most one of `omega`, `B`, `bottle`.
+fn magnetic_field(src: &Source<'_>, p: &ChargedParameters) -> Result<MagneticField<f64>, Error> {
+    let given: Vec<(&str, core::ops::Range<usize>)> = [
+        p.omega.as_ref().map(|v| ("omega", v.span())),
+        p.b.as_ref().map(|v| ("B", v.span())),
+        p.bottle.as_ref().map(|v| ("bottle", v.span())),
+    ]
+    .into_iter()
+    .flatten()
+    .collect();
+    if given.len() > 1 {
+        return Err(src.error_at(
+            given[1].1.clone(),
+            format!(
+                "parameters.{} and parameters.{} both give the magnetic field: keep one (omega is the rotation \
+                 vector of unit charge-to-mass ratio, that is -B)",
+                given[0].0, given[1].0
+            ),
+        ));
+    }
+    Ok(if let Some(omega) = &p.omega {
+        MagneticField::Uniform(vector3(src, "parameters.omega", omega)?)
+    } else if let Some(b) = &p.b {
+        MagneticField::uniform_b(vector3(src, "parameters.B", b)?)
+    } else if let Some(bottle) = &p.bottle {
+        let bottle = bottle.get_ref();
+        MagneticField::Bottle {
+            b0: src.finite("parameters.bottle.B0", &bottle.b0)?,
+            length: src.positive("parameters.bottle.L", &bottle.length)?,
+        }
+    } else {
+        MagneticField::None
+    })
+}
+
+/// Mass and charge of particle `k`: `mass` (default 1) and one of `charge` and `ratio`.
+fn mass_and_charge(
+    src: &Source<'_>,
+    k: usize,
+    name: &str,
+    entry: &Spanned<ParticleEntry>,
+) -> Result<(f64, f64), Error> {
+    let p = entry.get_ref();
+    let field = |key: &str| format!("particles[{k}].{key} ({name})");
+    let mass = p.mass.as_ref().map_or(Ok(1.0), |m| src.positive(&field("mass"), m))?;
+    let charge = match (&p.charge, &p.ratio) {
+        (Some(c), None) => src.finite(&field("charge"), c)?,
+        (None, Some(r)) => mass * src.finite(&field("ratio"), r)?,
+        (Some(_), Some(r)) => {
+            return Err(src.error_at(
+                r.span(),
+                format!(
+                    "{}: give the charge or the charge-to-mass ratio, not both",
+                    field("ratio")
+                ),
+            ))
+        }
+        (None, None) => {
+            return Err(src.error_at(
+                entry.span(),
+                format!(
+                    "particles[{k}] ({name}) needs its charge (charge = ...) or its charge-to-mass ratio (ratio = ...)"
+                ),
+            ))
+        }
+    };
+    Ok((mass, charge))
+}
+
+impl Scene for ChargedScene {
+    const MODEL: &'static str = "charged-particles";
+    const INITIAL: &'static str = "list of [[particles]]";
+    type Parameters = ChargedParameters;
+    type Initial = Spanned<Vec<Spanned<ParticleEntry>>>;
+
+    fn build(
+        parameters: Option<ChargedParameters>,
+        particles: Spanned<Vec<Spanned<ParticleEntry>>>,
+        src: &Source<'_>,
+    ) -> Result<(Self, DVector<f64>), Error> {
+        let parameters = parameters.unwrap_or_default();
+        let field = magnetic_field(src, &parameters)?;
+        let electric = match &parameters.e {
+            Some(e) => Some(vector3(src, "parameters.E", e)?),
+            None => None,
+        };
+        let centre = match &parameters.mu {
+            Some(mu) => Some(src.positive("parameters.mu", mu)?),
+            None => None,
+        };
+        let quadrupole = match &parameters.quadrupole {
+            Some(k) => Some(src.finite("parameters.quadrupole", k)?),
+            None => None,
+        };
+        let interaction = match &parameters.interaction {
+            Some(k) => Some(src.positive("parameters.interaction", k)?),
+            None => None,
+        };
+        if particles.get_ref().is_empty() {
+            return Err(src.error_at(
+                particles.span(),
+                "the scene has no particles: give at least one [[particles]] entry",
+            ));
+        }
+        let (mut names, mut masses, mut charges) = (Vec::new(), Vec::new(), Vec::new());
+        let (mut positions, mut velocities) = (Vec::<f64>::new(), Vec::new());
+        for (k, entry) in particles.get_ref().iter().enumerate() {
+            let p = entry.get_ref();
+            let name = match &p.name {
+                Some(n) => checked_name(src, "particles", k, n, &names)?,
+                None => format!("p{k}"),
+            };
+            let (mass, charge) = mass_and_charge(src, k, &name, entry)?;
+            let q = vector3(src, &format!("particles[{k}].position ({name})"), &p.position)?;
+            let v = vector3(src, &format!("particles[{k}].velocity ({name})"), &p.velocity)?;
+            if centre.is_some() && q.iter().all(|&x| x == 0.0) {
+                return Err(src.error_at(
+                    p.position.span(),
+                    format!(
+                        "particles[{k}].position ({name}) is the Coulomb centre (parameters.mu), where the force is \
+                         infinite"
+                    ),
+                ));
+            }
+            if interaction.is_some() {
+                if let Some(other) = (0..k).find(|&l| positions[3 * l..3 * l + 3] == q) {
+                    return Err(src.error_at(
+                        p.position.span(),
+                        format!(
+                            "particles[{k}].position ({name}) is the position of particles[{other}] ({}): with \
+                             parameters.interaction the force between them would be infinite",
+                            names[other]
+                        ),
+                    ));
+                }
+            }
+            positions.extend_from_slice(&q);
+            velocities.extend_from_slice(&v);
+            names.push(name);
+            masses.push(mass);
+            charges.push(charge);
+        }
+        let mut model = ChargedParticles::new(&masses, &charges)
+            .and_then(|m| m.with_names(names))
+            .map_err(|e| src.error(e.to_string()))?
+            .with_field(field);
+        if let Some(e) = electric {
+            model = model.with_electric_field(e);
+        }
+        if let Some(mu) = centre {
+            model = model.with_centre(mu);
+        }
+        if let Some(k) = quadrupole {
+            model = model.with_quadrupole(k);
+        }
+        if let Some(kappa) = interaction {
+            model = model.with_interaction(kappa);
+        }
+        let mut y0 = DVector::zeros(2 * positions.len());
+        model
+            .set_state(&positions, &velocities, &mut y0)
+            .map_err(|e| src.error(e.to_string()))?;
+        Ok((Charged(model), y0))
+    }
+
+    /// `<name>_x, <name>_y, <name>_z` for every particle, then `<name>_vx, ...`; a single
+    /// particle has `x, y, z, vx, vy, vz`.
+    fn components(&self, _y0: &DVector<f64>) -> Vec<String> {
+        let single = self.0.particles() == 1;
+        let prefix = |n: &String| {
+            if single {
+                String::new()
+            } else {
+                format!("{}_", column(n))
+            }
+        };
+        let names = self.0.names();
+        let q = names
+            .iter()
+            .flat_map(|n| ["x", "y", "z"].map(|a| format!("{}{a}", prefix(n))));
+        let v = names
+            .iter()
+            .flat_map(|n| ["vx", "vy", "vz"].map(|a| format!("{}{a}", prefix(n))));
+        q.chain(v).collect()
+    }
+
+    /// Known for independent particles in uniform fields ([`ChargedParticles::exact_state`]).
+    fn exact(&self, t0: f64, y0: &DVector<f64>, t: f64) -> Option<DVector<f64>> {
+        self.0.exact_state(y0, t - t0)
+    }
+
+    /// Every general splitting and composition: the drift is the exact gyration, so
+    /// velocity Verlet is the magnetic Verlet. Runge-Kutta-Nystrom methods are refused.
+    fn splitting_stepper(
+        &self,
+        method: SplittingChoice<'_>,
+        y0: &DVector<f64>,
+    ) -> Result<Box<dyn Stepper<Self>>, Error> {
+        let rkn = match method {
+            SplittingChoice::Compiled(d) => d.requires_quadratic_kinetic,
+            SplittingChoice::Runtime(s) => s.requires_quadratic_kinetic(),
+        };
+        if !stormer::magnetic::Lorentz::uniform(&self.0) {
+            // the drift freezes the field at the start of each drift (SCENES.md 5): first
+            // order, and not a flow, so no splitting or composition keeps its order here
+            return Err(Error::Unsupported {
+                name: method.name().to_string(),
+                reason: "the magnetic field of this scene is not uniform, and the splittings' drift (the gyration \
+                         in the field frozen at the start of the drift) is then only first-order accurate and not \
+                         an exact flow: every splitting and composition drops to order 1; use boris (order 2) \
+                         or a Runge-Kutta method such as rk4 or dop853"
+                    .into(),
+            });
+        }
+        if rkn {
+            return Err(Error::Unsupported {
+                name: method.name().to_string(),
+                reason: "it is a Runge-Kutta-Nystrom method, which reaches its order only when the drift is a free \
+                         flight, and the drift of a charged particle is its gyration in the magnetic field; use a \
+                         general splitting or composition (velocity_verlet_kdk is the magnetic Verlet, \
+                         triple_jump4 and kahan_li6 compose it), boris, or a Runge-Kutta method"
+                    .into(),
+            });
+        }
+        general_splitting(method, y0)
+    }
+
+    fn particle_stepper(&self, method: ParticleMethod, y0: &DVector<f64>) -> Result<Box<dyn Stepper<Self>>, Error> {
+        method.stepper(y0)
+    }
+}
+
+#[cfg(test)]
+#[allow(clippy::float_cmp)] // values read from a file are compared exactly
+mod tests {
+    use crate::scenes::{parse, AnyScene, Scene};
+    use stormer::magnetic::Lorentz;
+    use stormer::models::MagneticField;
+    use stormer::Error;
+
+    const GOOD: &str = "model = \"charged-particles\"\n\
+                        [parameters]\n\
+                        B = [0.0, 0.0, 2.0]\n\
+                        E = [0.1, 0.0, 0.0]\n\
+                        quadrupole = 1.0\n\
+                        interaction = 1.0\n\
+                        [[particles]]\n\
+                        name = \"A\"\n\
+                        charge = 2.0\n\
+                        mass = 4.0\n\
+                        position = [1.0, 0.0, 0.0]\n\
+                        velocity = [0.0, 1.0, 0.0]\n\
+                        [[particles]]\n\
+                        name = \"B\"\n\
+                        ratio = -1.0\n\
+                        position = [-1.0, 0.0, 0.0]\n\
+                        velocity = [0.0, 0.0, 0.5]\n\
+                        [run]\n\
+                        method = \"boris\"\n\
+                        dt = 0.01\n\
+                        t_end = 1.0\n";
+
+    /// The error message for `GOOD` with line `line` (1-based) replaced.
+    fn error_with(line: usize, text: &str) -> String {
+        let mut lines: Vec<&str> = GOOD.lines().collect();
+        lines[line - 1] = text;
+        let err = parse(&lines.join("\n"), "ions.toml", "ions").unwrap_err();
+        assert!(matches!(err, Error::Scene { .. }), "{err:?}");
+        let message = err.to_string();
+        assert!(message.starts_with("scene ions.toml: "), "{message}");
+        assert!(!message.contains('\n'), "one line: {message}");
+        message
+    }
+
+    #[test]
+    fn the_good_file_parses() {
+        let AnyScene::ChargedParticles(s) = parse(GOOD, "ions.toml", "ions").unwrap() else {
+            panic!("model")
+        };
+        let m = &s.model.0;
+        assert_eq!(m.names(), ["A", "B"]);
+        assert_eq!(
+            (m.masses(), m.charges(), m.ratios()),
+            (&[4.0, 1.0][..], &[2.0, -1.0][..], &[0.5, -1.0][..])
+        );
+        assert_eq!(m.field(), MagneticField::Uniform([-0.0, -0.0, -2.0]));
+        // omega = -r B: the positive ion turns clockwise about B, the negative one anticlockwise
+        assert_eq!(m.omega(0, s.y0.as_slice()), [0.0, 0.0, -1.0]);
+        assert_eq!(m.omega(1, s.y0.as_slice()), [0.0, 0.0, 2.0]);
+        assert_eq!(
+            s.y0.as_slice(),
+            &[1.0, 0.0, 0.0, -1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.5]
+        );
+        let columns = s.model.components(&s.y0);
+        assert_eq!(columns[..4], ["a_x", "a_y", "a_z", "b_x"]);
+        assert_eq!(columns[11], "b_vz");
+        assert!(s.exact(1.0).is_none(), "two interacting ions in a trap");
+        assert_eq!(s.run.method, "boris");
+    }
+
+    #[test]
+    fn every_mistake_is_an_error_naming_its_line_and_field() {
+        let cases = [
+            (10, "mass = 0.0", "line 10: particles[0].mass (A) must be > 0, got 0"),
+            (10, "mass = -1", "line 10: particles[0].mass (A) must be > 0, got -1"),
+            (
+                9,
+                "charge = nan",
+                "line 9: particles[0].charge (A) must be a finite number, got NaN",
+            ),
+            (
+                15,
+                "ratio = inf",
+                "line 15: particles[1].ratio (B) must be a finite number, got inf",
+            ),
+            (
+                9,
+                "charge = 2.0\nratio = 1.0",
+                "line 10: particles[0].ratio (A): give the charge or the charge-to-mass ratio, not both",
+            ),
+            (
+                15,
+                "",
+                "line 13: particles[1] (B) needs its charge (charge = ...) or its charge-to-mass ratio",
+            ),
+            (
+                16,
+                "position = [1.0, 0.0, 0.0]",
+                "line 16: particles[1].position (B) is the position of particles[0] (A): with parameters.interaction",
+            ),
+            (
+                11,
+                "position = [1.0, 0.0]",
+                "line 11: particles[0].position (A) must have 3 coordinates (particles move in 3-D), got 2",
+            ),
+            (
+                17,
+                "velocity = [0.0, 0.0, 0.5, 1.0]",
+                "line 17: particles[1].velocity (B) must have 3 coordinates",
+            ),
+            (
+                12,
+                "velocity = [0.0, -inf, 0.0]",
+                "line 12: particles[0].velocity (A)[1] must be a finite number",
+            ),
+            (
+                3,
+                "B = [0.0, nan, 2.0]",
+                "line 3: parameters.B[1] must be a finite number",
+            ),
+            (3, "B = [2.0]", "line 3: parameters.B must have 3 coordinates"),
+            (
+                4,
+                "E = [1, 2, 3, 4]",
+                "line 4: parameters.E must have 3 coordinates (particles move in 3-D), got 4",
+            ),
+            (
+                4,
+                "omega = [0.0, 0.0, 1.0]",
+                "parameters.omega and parameters.B both give the magnetic field",
+            ),
+            (4, "bottle = { B0 = 1.0, L = 0.0 }", "both give the magnetic field"),
+            (
+                5,
+                "quadrupole = inf",
+                "line 5: parameters.quadrupole must be a finite number",
+            ),
+            (6, "interaction = -1.0", "line 6: parameters.interaction must be > 0"),
+            (6, "mu = 0.0", "line 6: parameters.mu must be > 0"),
+            (6, "interactions = 1.0", "unknown field `interactions`"),
+            (9, "q = 2.0", "unknown field `q`"),
+            (
+                14,
+                "name = \"a\"",
+                "line 14: particles[1].name \"a\" is already the name of particles[0]",
+            ),
+        ];
+        for (line, text, expected) in cases {
+            let message = error_with(line, text);
+            assert!(message.contains(expected), "{text}: {message}");
+        }
+        // a particle at the Coulomb centre
+        let text = GOOD
+            .replace("interaction = 1.0", "mu = 1.0")
+            .replace("position = [-1.0, 0.0, 0.0]", "position = [0.0, 0.0, 0.0]");
+        let message = parse(&text, "c.toml", "c").unwrap_err().to_string();
+        assert!(
+            message.contains("line 16: particles[1].position (B) is the Coulomb centre"),
+            "{message}"
+        );
+        // coincident particles are fine without interaction
+        let text = GOOD
+            .replace("interaction = 1.0\n", "")
+            .replace("position = [-1.0, 0.0, 0.0]", "position = [1.0, 0.0, 0.0]");
+        assert!(parse(&text, "c.toml", "c").is_ok());
+        // a bottle with a bad length
+        let text = GOOD.replace("B = [0.0, 0.0, 2.0]", "bottle = { B0 = 1.0, L = -2.0 }");
+        let message = parse(&text, "c.toml", "c").unwrap_err().to_string();
+        assert!(
+            message.contains("line 3: parameters.bottle.L must be > 0, got -2"),
+            "{message}"
+        );
+    }
+
+    #[test]
+    fn no_particles_and_no_parameters() {
+        let run = "[run]\nmethod = \"boris\"\ndt = 0.1\nt_end = 1.0\n";
+        let empty = format!("particles = []\nmodel = \"charged-particles\"\n{run}");
+        let message = parse(&empty, "e.toml", "e").unwrap_err().to_string();
+        assert!(message.contains("line 1: the scene has no particles"), "{message}");
+        let message = parse(&format!("model = \"charged-particles\"\n{run}"), "e.toml", "e")
+            .unwrap_err()
+            .to_string();
+        assert!(message.contains("missing list of [[particles]]"), "{message}");
+        // no [parameters]: a free particle, with plain axes as columns, with its exact motion
+        let free = format!(
+            "model = \"charged-particles\"\n[[particles]]\ncharge = 1.0\nposition = [0, 0, 0]\nvelocity = [1, 2, 3]\n{run}"
+        );
+        let AnyScene::ChargedParticles(s) = parse(&free, "f.toml", "f").unwrap() else {
+            panic!("model")
+        };
+        assert_eq!(s.model.components(&s.y0), ["x", "y", "z", "vx", "vy", "vz"]);
+        assert_eq!(s.exact(2.0).unwrap().as_slice(), &[2.0, 4.0, 6.0, 1.0, 2.0, 3.0]);
+    }
+}

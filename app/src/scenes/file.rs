@@ -1,0 +1,169 @@
+//! The scene file format: TOML with `model`, `[parameters]`, `[initial]` and `[run]`,
+//! parsed with serde (unknown keys rejected) and checked field by field, every error
+//! naming the file, the line and the field.
+
+use super::{Scene, Setup};
+use serde::Deserialize;
+use stormer::diagnostics::{line_column, one_line, toml_message};
+use stormer::Error;
+use toml::Spanned;
+
+/// A number read from a scene file, with where it was written (for error messages).
+pub type Number = Spanned<f64>;
+
+/// The text of a scene file and where it came from: the context of every error
+/// reported while reading it.
+#[derive(Debug, Clone, Copy)]
+pub struct Source<'a> {
+    /// The scene's name (built-in) or the file's path.
+    pub origin: &'a str,
+    /// The file's text.
+    pub text: &'a str,
+}
+
+impl Source<'_> {
+    /// An [`Error::Scene`] about this file.
+    pub fn error(&self, reason: impl Into<String>) -> Error {
+        Error::Scene {
+            file: self.origin.to_string(),
+            reason: one_line(&reason.into()),
+        }
+    }
+
+    /// An [`Error::Scene`] about the value written at byte range `span`: `line L: reason`.
+    pub fn error_at(&self, span: core::ops::Range<usize>, reason: impl core::fmt::Display) -> Error {
+        let (line, _) = line_column(self.text, span.start);
+        self.error(format!("line {line}: {reason}"))
+    }
+
+    /// A TOML or serde error, with its line and column.
+    pub fn toml_error(&self, e: &toml::de::Error) -> Error {
+        self.error(toml_message(e, self.text))
+    }
+
+    /// The value of `field` if it is a finite number.
+    pub fn finite(&self, field: &str, x: &Number) -> Result<f64, Error> {
+        let v = *x.get_ref();
+        if v.is_finite() {
+            Ok(v)
+        } else {
+            Err(self.error_at(x.span(), format!("{field} must be a finite number, got {v}")))
+        }
+    }
+
+    /// The value of `field` if it is a finite number `> 0`.
+    pub fn positive(&self, field: &str, x: &Number) -> Result<f64, Error> {
+        let v = self.finite(field, x)?;
+        if v > 0.0 {
+            Ok(v)
+        } else {
+            Err(self.error_at(x.span(), format!("{field} must be > 0, got {v}")))
+        }
+    }
+
+    /// The error for a missing table such as `[parameters]`.
+    pub fn missing(&self, table: &str, keys: &str) -> Error {
+        self.error(format!("missing table [{table}] (with {keys})"))
+    }
+}
+
+/// How a scene is run unless the command line says otherwise (the file's `[run]` table).
+#[derive(Debug, Clone, PartialEq)]
+pub struct RunSettings {
+    /// Method name (catalog name, or a path to a method file).
+    pub method: String,
+    /// Step size (`> 0`; the initial step of an adaptive run).
+    pub dt: f64,
+    /// Start time (default 0).
+    pub t0: f64,
+    /// End time.
+    pub t_end: f64,
+    /// Record every `every` steps (`>= 1`).
+    pub every: u64,
+}
+
+/// A scene file as written, for the model `S`: unknown keys anywhere are errors.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct SceneFile<P, I> {
+    #[allow(dead_code)] // read by the first pass (`Header`); kept so that the key is known
+    model: String,
+    #[serde(default)]
+    description: Option<String>,
+    #[serde(default = "none")]
+    parameters: Option<P>,
+    // the N-body model writes its initial state as a list of `[[bodies]]`, the
+    // charged-particle model as a list of `[[particles]]`
+    #[serde(default = "none", alias = "bodies", alias = "particles")]
+    initial: Option<I>,
+    run: RunTable,
+}
+
+fn none<P>() -> Option<P> {
+    None
+}
+
+/// The `[run]` table.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RunTable {
+    method: Spanned<String>,
+    dt: Number,
+    #[serde(default)]
+    t0: Option<Number>,
+    t_end: Number,
+    #[serde(default)]
+    every: Option<Spanned<u64>>,
+}
+
+impl RunTable {
+    fn check(self, src: &Source<'_>) -> Result<RunSettings, Error> {
+        let method = self.method.get_ref().trim().to_string();
+        if method.is_empty() {
+            return Err(src.error_at(self.method.span(), "run.method must name a method"));
+        }
+        let every = match &self.every {
+            Some(n) if *n.get_ref() == 0 => return Err(src.error_at(n.span(), "run.every must be >= 1, got 0")),
+            Some(n) => *n.get_ref(),
+            None => 1,
+        };
+        Ok(RunSettings {
+            method,
+            dt: src.positive("run.dt", &self.dt)?,
+            t0: self.t0.as_ref().map_or(Ok(0.0), |t| src.finite("run.t0", t))?,
+            t_end: src.finite("run.t_end", &self.t_end)?,
+            every,
+        })
+    }
+}
+
+/// First pass: only the model name, to choose the types of the second pass.
+#[derive(Debug, Deserialize)]
+struct Header {
+    model: Spanned<String>,
+}
+
+/// The model named by a scene file (syntax errors are reported here, with their line).
+pub(super) fn model_name(src: &Source<'_>) -> Result<Spanned<String>, Error> {
+    toml::from_str::<Header>(src.text)
+        .map(|h| h.model)
+        .map_err(|e| src.toml_error(&e))
+}
+
+/// Second pass: the whole file read as a scene of model `S`.
+pub(super) fn parse_as<S: Scene>(src: &Source<'_>, name: &str) -> Result<Setup<S>, Error> {
+    let file: SceneFile<S::Parameters, S::Initial> = toml::from_str(src.text).map_err(|e| src.toml_error(&e))?;
+    let initial = file
+        .initial
+        .ok_or_else(|| src.error(format!("missing {} (the initial state)", S::INITIAL)))?;
+    let (model, y0) = S::build(file.parameters, initial, src)?;
+    let run = file.run.check(src)?;
+    Ok(Setup {
+        name: name.to_string(),
+        origin: src.origin.to_string(),
+        description: file.description,
+        model,
+        y0,
+        run,
+    })
+}

@@ -1,0 +1,302 @@
+//! The physical scenes of `SCENES.md`, read from TOML files that hold the users' values.
+//!
+//! A scene file names its model and gives its parameters, the initial state and how to
+//! run it:
+//!
+//! ```toml
+//! # Simple pendulum (SCENES.md 1): theta'' = -sin(theta).
+//! model = "pendulum"
+//! [initial]
+//! theta = 0.7853981633974483   # pi/4
+//! omega = 0.0
+//! [run]
+//! method = "rk4"
+//! dt = 0.01
+//! t_end = 60.0
+//! every = 1
+//! ```
+//!
+//! The built-in scenes ([`BUILTIN`]) are the files of the repository's `scenes/` directory,
+//! compiled into the crate, so they work from any directory. [`load`] takes a built-in
+//! name or a path to a `.toml` file; every problem with a file is an [`Error::Scene`]
+//! naming the file, the line and the field, never a panic.
+//!
+//! Each model is a [`Problem`] that also implements [`Scene`] (the names of its
+//! components, how its tables are read, its exact solution when there is one, and the
+//! splitting methods it admits). A loaded
+//! file is a [`Setup`]: the model, its initial state and its [`RunSettings`]. Since the
+//! model is only known at run time, [`AnyScene`] holds one of them and hands it to a
+//! [`SceneVisitor`], whose code is generic over the model:
+//!
+//! ```
+//! use stormer_app::scenes::{self, Scene, SceneVisitor, Setup};
+//! struct Components;
+//! impl SceneVisitor for Components {
+//!     type Output = Vec<String>;
+//!     fn visit<S: Scene>(self, setup: Setup<S>) -> Self::Output {
+//!         setup.model.components(&setup.y0)
+//!     }
+//! }
+//! let pendulum = scenes::load("pendulum").unwrap();
+//! assert_eq!(pendulum.visit(Components), ["theta", "omega"]);
+//! ```
+
+mod arenstorf;
+mod builtin;
+mod central_force_file;
+mod charged_file;
+mod damped;
+mod file;
+mod free_kick;
+mod harmonic;
+mod nbody_file;
+mod pendulum;
+mod splitting;
+
+pub use arenstorf::{RestrictedThreeBody, ThreeBodyInitial, ThreeBodyParameters};
+pub use builtin::{builtin, load, parse, BuiltinScene, BUILTIN};
+pub use central_force_file::{CentralForceInitial, CentralForceParameters};
+pub use charged_file::{BottleTable, ChargedParameters, ChargedScene, ParticleEntry};
+pub use damped::{DampedOscillator, DampedParameters};
+pub use file::{Number, RunSettings, Source};
+pub use free_kick::{KickInitial, SpinningBall, SpinningBallParameters};
+pub use harmonic::{Harmonic, HarmonicParameters, OscillatorInitial};
+pub use nbody_file::{BodyEntry, GravityParameters};
+pub use pendulum::{NoParameters, Pendulum, PendulumInitial, PENDULUM_PERIOD_45_DEGREES};
+pub use splitting::{general_splitting, not_splittable, quadratic_splitting, SplittingChoice};
+
+use nalgebra::DVector;
+use serde::de::DeserializeOwned;
+use stormer::magnetic::Charged;
+use stormer::models::{CentralForce, NBody};
+use stormer::stepper::ParticleMethod;
+use stormer::{Error, Problem, Stepper};
+
+/// A model of a scene: a problem in `f64` that knows how a scene file describes it.
+///
+/// The trait gives what the tools around a run need and the [`Problem`] does not: the
+/// names of the state's components (the CSV header), how the file's `[parameters]` and
+/// `[initial]` tables are read and checked, the exact solution where there is one, and
+/// the splitting methods the model admits. Whether the scene has an energy is
+/// [`Problem::energy`]'s answer.
+pub trait Scene: Problem<Scalar = f64> + Sized + 'static {
+    /// The `model = "..."` name in scene files.
+    const MODEL: &'static str;
+
+    /// What the file gives the initial state in, for the error when it is missing
+    /// (`"table [initial]"`; the N-body model reads a list of `[[bodies]]`).
+    const INITIAL: &'static str = "table [initial]";
+
+    /// The `[parameters]` table as written.
+    type Parameters: DeserializeOwned;
+
+    /// The `[initial]` table as written.
+    type Initial: DeserializeOwned;
+
+    /// The model and its initial state from the file's `[parameters]` (`None` when the
+    /// file has none) and `[initial]` tables, every value checked.
+    fn build(
+        parameters: Option<Self::Parameters>,
+        initial: Self::Initial,
+        src: &Source<'_>,
+    ) -> Result<(Self, Self::State), Error>;
+
+    /// Names of the components of the model's states (shaped like `y0`), in order
+    /// (`["x", "v"]`): the CSV header.
+    fn components(&self, y0: &Self::State) -> Vec<String>;
+
+    /// The exact state at `t` of the solution through `(t0, y0)`, when it is known in
+    /// closed form.
+    fn exact(&self, _t0: f64, _y0: &Self::State, _t: f64) -> Option<Self::State> {
+        None
+    }
+
+    /// The condition that ends the model's runs before `t_end`, if it has one (a ball
+    /// landing): the run stops where [`Stop::g`] changes sign, located within the step
+    /// ([`Driver::stop_when`](stormer::Driver::stop_when)).
+    fn stop(&self) -> Option<Stop<Self>> {
+        None
+    }
+
+    /// A stepper for the splitting or composition `method` on this model, or the sentence
+    /// saying why the model does not admit one and what to use instead.
+    ///
+    /// The default refuses ([`not_splittable`]): a model that is a Hamiltonian returns
+    /// [`quadratic_splitting`] or [`general_splitting`], according to its kinetic energy.
+    fn splitting_stepper(
+        &self,
+        method: SplittingChoice<'_>,
+        _y0: &Self::State,
+    ) -> Result<Box<dyn Stepper<Self>>, Error> {
+        Err(not_splittable(
+            method.name(),
+            &format!(
+                "the {} model does not declare drift and kick sub-flows (it is not set up as a Hamiltonian)",
+                Self::MODEL
+            ),
+        ))
+    }
+
+    /// A charged-particle stepper (Boris, Euler-Cromer) on this model, or the sentence
+    /// saying why it does not apply. The default refuses: only the `charged-particles`
+    /// model has a magnetic field for them to turn in.
+    fn particle_stepper(&self, method: ParticleMethod, _y0: &Self::State) -> Result<Box<dyn Stepper<Self>>, Error> {
+        Err(Error::Unsupported {
+            name: method.name().to_string(),
+            reason: format!(
+                "it is a charged-particle method, for scenes of the charged-particles model, not of the {} model; \
+                 use a Runge-Kutta method or a splitting (`stormer methods`)",
+                Self::MODEL
+            ),
+        })
+    }
+}
+
+/// A stop condition of a scene's model ([`Scene::stop`]): where the run ends, and what
+/// the run summary says about it.
+pub struct Stop<S: Scene> {
+    /// The event's name, for when it does not happen (`"landing"`: "no landing before
+    /// t = 10").
+    pub event: &'static str,
+    /// The event function: the run stops where `g(model, t, y)` changes sign.
+    pub g: fn(&S, f64, &S::State) -> f64,
+    /// The summary's sentence about the state where the run stopped ("the ball lands at
+    /// t = 1.28 s, 21.9 m away").
+    pub report: fn(&S, f64, &S::State) -> String,
+}
+
+impl<S: Scene> Clone for Stop<S> {
+    fn clone(&self) -> Self {
+        *self
+    }
+}
+
+impl<S: Scene> Copy for Stop<S> {}
+
+impl<S: Scene> core::fmt::Debug for Stop<S> {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("Stop")
+            .field("event", &self.event)
+            .finish_non_exhaustive()
+    }
+}
+
+/// A scene ready to run: the model, its initial state and the run's defaults.
+#[derive(Debug, Clone)]
+pub struct Setup<S: Scene> {
+    /// The scene's name: the built-in name, or the file's stem.
+    pub name: String,
+    /// Where it was read from: `built-in` or the file's path.
+    pub origin: String,
+    /// The file's `description`, if any.
+    pub description: Option<String>,
+    /// The model (a [`Problem`]).
+    pub model: S,
+    /// The initial state, at `run.t0`.
+    pub y0: S::State,
+    /// How to run it unless told otherwise.
+    pub run: RunSettings,
+}
+
+impl<S: Scene> Setup<S> {
+    /// The exact state at `t`, when the model has a closed-form solution.
+    pub fn exact(&self, t: f64) -> Option<S::State> {
+        self.model.exact(self.run.t0, &self.y0, t)
+    }
+
+    /// The energy at the initial state, when the model has one.
+    pub fn initial_energy(&self) -> Option<f64> {
+        self.model.energy(self.run.t0, &self.y0)
+    }
+}
+
+/// Code that runs on a scene whatever its model (see [`AnyScene::visit`]).
+pub trait SceneVisitor {
+    /// What the visit returns.
+    type Output;
+    /// Called with the scene's setup.
+    fn visit<S: Scene>(self, setup: Setup<S>) -> Self::Output;
+}
+
+/// A scene of any of the known models.
+#[derive(Debug, Clone)]
+#[non_exhaustive]
+pub enum AnyScene {
+    /// `model = "harmonic"`.
+    Harmonic(Setup<Harmonic>),
+    /// `model = "damped-oscillator"`.
+    DampedOscillator(Setup<DampedOscillator>),
+    /// `model = "pendulum"`.
+    Pendulum(Setup<Pendulum>),
+    /// `model = "central-force"`: one body around a fixed centre, `H = |p|^2/2 - mu/|q|`.
+    CentralForce(Setup<CentralForce<f64, DVector<f64>>>),
+    /// `model = "n-body"`: gravitating bodies read from the file.
+    NBody(Setup<NBody<f64, DVector<f64>>>),
+    /// `model = "charged-particles"`: charged particles in electric and magnetic fields.
+    ChargedParticles(Setup<ChargedScene>),
+    /// `model = "restricted-3-body"`: the rotating frame's Coriolis force as a uniform
+    /// field (the `arenstorf` scene).
+    RestrictedThreeBody(Setup<Charged<RestrictedThreeBody>>),
+    /// `model = "spinning-ball"`: gravity, drag and the Magnus force (the `free-kick` scene).
+    SpinningBall(Setup<SpinningBall>),
+}
+
+/// The model names a scene file can give, in the order of [`AnyScene`].
+pub const MODELS: &[&str] = &[
+    Harmonic::MODEL,
+    DampedOscillator::MODEL,
+    Pendulum::MODEL,
+    CentralForce::<f64, DVector<f64>>::MODEL,
+    NBody::<f64, DVector<f64>>::MODEL,
+    ChargedScene::MODEL,
+    Charged::<RestrictedThreeBody>::MODEL,
+    SpinningBall::MODEL,
+];
+
+/// `$body` with `$s` bound to the setup of whichever model `$scene` holds.
+macro_rules! each {
+    ($scene:expr, $s:ident => $body:expr) => {
+        match $scene {
+            AnyScene::Harmonic($s) => $body,
+            AnyScene::DampedOscillator($s) => $body,
+            AnyScene::Pendulum($s) => $body,
+            AnyScene::CentralForce($s) => $body,
+            AnyScene::NBody($s) => $body,
+            AnyScene::ChargedParticles($s) => $body,
+            AnyScene::RestrictedThreeBody($s) => $body,
+            AnyScene::SpinningBall($s) => $body,
+        }
+    };
+}
+
+/// `S::MODEL` for the setup `_s`, whatever its model (used through [`each!`]).
+fn model_of<S: Scene>(_s: &Setup<S>) -> &'static str {
+    S::MODEL
+}
+
+impl AnyScene {
+    /// Runs `visitor` on the scene's setup.
+    pub fn visit<V: SceneVisitor>(self, visitor: V) -> V::Output {
+        each!(self, s => visitor.visit(s))
+    }
+
+    /// The scene's name.
+    pub fn name(&self) -> &str {
+        each!(self, s => &s.name)
+    }
+
+    /// The scene's run settings.
+    pub fn run(&self) -> &RunSettings {
+        each!(self, s => &s.run)
+    }
+
+    /// The file's `description`, if any.
+    pub fn description(&self) -> Option<&str> {
+        each!(self, s => s.description.as_deref())
+    }
+
+    /// The model name.
+    pub fn model(&self) -> &'static str {
+        each!(self, s => model_of(s))
+    }
+}

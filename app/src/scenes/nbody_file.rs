@@ -1,0 +1,337 @@
+//! The N-body scene file: `G` in `[parameters]` and one `[[bodies]]` entry per body
+//! (name, mass, position, velocity), any number of bodies, every value checked.
+//!
+//! ```toml
+//! model = "n-body"
+//! [parameters]
+//! G = 2.95912208286e-4
+//! [[bodies]]
+//! name = "Sun"
+//! mass = 1.00000597682
+//! position = [0.0, 0.0, 0.0]
+//! velocity = [0.0, 0.0, 0.0]
+//! [[bodies]]
+//! name = "Jupiter"
+//! # ...
+//! ```
+
+use super::central_force_file::{coordinates, AXES};
+use super::file::{Number, Source};
+use super::{quadratic_splitting, Scene, SplittingChoice};
+use nalgebra::DVector;
+use serde::Deserialize;
+use stormer::models::NBody;
+use stormer::{Error, Stepper};
+use toml::Spanned;
+
+/// The `[parameters]` table of an N-body scene.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct GravityParameters {
+    /// The gravitational constant in the file's units (`> 0`).
+    #[serde(rename = "G")]
+    pub g: Number,
+}
+
+/// One `[[bodies]]` entry.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BodyEntry {
+    /// Its name (unique; it names the body's CSV columns).
+    pub name: Spanned<String>,
+    /// Its mass (`> 0`).
+    pub mass: Number,
+    /// Its position: 1, 2 or 3 coordinates, the same number for every body.
+    pub position: Spanned<Vec<Number>>,
+    /// Its velocity (the state holds the momentum `p = m v`).
+    pub velocity: Spanned<Vec<Number>>,
+}
+
+/// The CSV column prefix of a body (or particle): its name in lower case, spaces as `_`.
+pub(super) fn column(name: &str) -> String {
+    name.trim().to_lowercase().replace(' ', "_")
+}
+
+/// The name of entry `k` of the list `list` (`bodies`, `particles`), checked: not empty,
+/// usable in a CSV header, not taken.
+pub(super) fn checked_name(
+    src: &Source<'_>,
+    list: &str,
+    k: usize,
+    name: &Spanned<String>,
+    taken: &[String],
+) -> Result<String, Error> {
+    let text = name.get_ref().trim();
+    if text.is_empty() || text.chars().any(|c| c == ',' || c == '"' || c.is_control()) {
+        return Err(src.error_at(
+            name.span(),
+            format!("{list}[{k}].name must be a non-empty name without commas or quotes, got {text:?}"),
+        ));
+    }
+    if let Some(other) = taken.iter().position(|t| column(t) == column(text)) {
+        return Err(src.error_at(
+            name.span(),
+            format!("{list}[{k}].name \"{text}\" is already the name of {list}[{other}]"),
+        ));
+    }
+    Ok(text.to_string())
+}
+
+impl Scene for NBody<f64, DVector<f64>> {
+    const MODEL: &'static str = "n-body";
+    const INITIAL: &'static str = "list of [[bodies]]";
+    type Parameters = GravityParameters;
+    type Initial = Spanned<Vec<BodyEntry>>;
+
+    fn build(
+        parameters: Option<GravityParameters>,
+        bodies: Spanned<Vec<BodyEntry>>,
+        src: &Source<'_>,
+    ) -> Result<(Self, DVector<f64>), Error> {
+        let parameters = parameters.ok_or_else(|| src.missing("parameters", "G"))?;
+        let g = src.positive("parameters.G", &parameters.g)?;
+        if bodies.get_ref().is_empty() {
+            return Err(src.error_at(
+                bodies.span(),
+                "the scene has no bodies: give at least one [[bodies]] entry",
+            ));
+        }
+        let (mut names, mut masses) = (Vec::new(), Vec::new());
+        let (mut positions, mut velocities) = (Vec::new(), Vec::new());
+        let mut dim = None;
+        for (k, body) in bodies.get_ref().iter().enumerate() {
+            let name = checked_name(src, "bodies", k, &body.name, &names)?;
+            masses.push(src.positive(&format!("bodies[{k}].mass ({name})"), &body.mass)?);
+            let q = coordinates(src, &format!("bodies[{k}].position ({name})"), &body.position)?;
+            let v = coordinates(src, &format!("bodies[{k}].velocity ({name})"), &body.velocity)?;
+            let d = *dim.get_or_insert(q.len());
+            for (what, x, span) in [
+                ("position", &q, body.position.span()),
+                ("velocity", &v, body.velocity.span()),
+            ] {
+                if x.len() != d {
+                    return Err(src.error_at(
+                        span,
+                        format!(
+                            "bodies[{k}].{what} ({name}) has {} coordinates but bodies[0].position has {d}",
+                            x.len()
+                        ),
+                    ));
+                }
+            }
+            if let Some(other) = (0..k).find(|&l| positions[l * d..(l + 1) * d] == q[..]) {
+                return Err(src.error_at(
+                    body.position.span(),
+                    format!(
+                        "bodies[{k}].position ({name}) is the position of bodies[{other}] ({}): two bodies cannot \
+                         be at the same place, the force between them would be infinite",
+                        names[other]
+                    ),
+                ));
+            }
+            positions.extend_from_slice(&q);
+            velocities.extend_from_slice(&v);
+            names.push(name);
+        }
+        let dim = dim.unwrap_or(1);
+        let model = NBody::new(g, &masses, dim)
+            .and_then(|m| m.with_names(names))
+            .map_err(|e| src.error(e.to_string()))?;
+        let mut y0 = DVector::zeros(2 * positions.len());
+        model
+            .set_state(&positions, &velocities, &mut y0)
+            .map_err(|e| src.error(e.to_string()))?;
+        Ok((model, y0))
+    }
+
+    /// `<name>_x, <name>_y, ...` for every body, then `<name>_px, ...` (momenta).
+    fn components(&self, _y0: &DVector<f64>) -> Vec<String> {
+        let axes = &AXES[..self.dim().min(3)];
+        let q = self
+            .names()
+            .iter()
+            .flat_map(|n| axes.iter().map(move |a| format!("{}_{a}", column(n))));
+        let p = self
+            .names()
+            .iter()
+            .flat_map(|n| axes.iter().map(move |a| format!("{}_p{a}", column(n))));
+        q.chain(p).collect()
+    }
+
+    /// Known for two bodies on a bound orbit (the `kepler` scene).
+    fn exact(&self, t0: f64, y0: &DVector<f64>, t: f64) -> Option<DVector<f64>> {
+        self.two_body_exact(y0, t - t0)
+    }
+
+    fn splitting_stepper(
+        &self,
+        method: SplittingChoice<'_>,
+        y0: &DVector<f64>,
+    ) -> Result<Box<dyn Stepper<Self>>, Error> {
+        quadratic_splitting(method, y0)
+    }
+}
+
+#[cfg(test)]
+#[allow(clippy::float_cmp)] // values read from a file are compared exactly
+mod tests {
+    use crate::scenes::{load, parse, AnyScene, Scene};
+    use stormer::Error;
+
+    const GOOD: &str = "model = \"n-body\"\n\
+                        [parameters]\n\
+                        G = 1.0\n\
+                        [[bodies]]\n\
+                        name = \"A\"\n\
+                        mass = 1.0\n\
+                        position = [0.0, 0.0, 0.0]\n\
+                        velocity = [0.0, 0.0, 0.0]\n\
+                        [[bodies]]\n\
+                        name = \"B\"\n\
+                        mass = 0.5\n\
+                        position = [1.0, 0.0, 0.0]\n\
+                        velocity = [0.0, 1.0, 0.0]\n\
+                        [run]\n\
+                        method = \"rk4\"\n\
+                        dt = 0.01\n\
+                        t_end = 1.0\n";
+
+    /// The error message for `GOOD` with line `line` (1-based) replaced.
+    fn error_with(line: usize, text: &str) -> String {
+        let mut lines: Vec<&str> = GOOD.lines().collect();
+        lines[line - 1] = text;
+        let err = parse(&lines.join("\n"), "bodies.toml", "bodies").unwrap_err();
+        assert!(matches!(err, Error::Scene { .. }), "{err:?}");
+        let message = err.to_string();
+        assert!(message.starts_with("scene bodies.toml: "), "{message}");
+        assert!(!message.contains('\n'), "one line: {message}");
+        message
+    }
+
+    #[test]
+    fn the_good_file_parses() {
+        let AnyScene::NBody(s) = parse(GOOD, "bodies.toml", "bodies").unwrap() else {
+            panic!("model")
+        };
+        assert_eq!(s.model.names(), ["A", "B"]);
+        assert_eq!(
+            s.y0.as_slice(),
+            &[0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.5, 0.0]
+        );
+        let columns = s.model.components(&s.y0);
+        assert_eq!(columns[..4], ["a_x", "a_y", "a_z", "b_x"]);
+        assert_eq!(columns[11], "b_pz");
+    }
+
+    #[test]
+    fn every_bad_body_is_an_error_naming_its_line_and_field() {
+        let cases = [
+            (6, "mass = -1.0", "line 6: bodies[0].mass (A) must be > 0, got -1"),
+            (11, "mass = 0", "line 11: bodies[1].mass (B) must be > 0, got 0"),
+            (
+                11,
+                "mass = nan",
+                "line 11: bodies[1].mass (B) must be a finite number, got NaN",
+            ),
+            (
+                12,
+                "position = [1.0, inf, 0.0]",
+                "line 12: bodies[1].position (B)[1] must be a finite number",
+            ),
+            (
+                13,
+                "velocity = [0.0, -nan, 0.0]",
+                "line 13: bodies[1].velocity (B)[1] must be a finite number",
+            ),
+            (
+                12,
+                "position = [0.0, 0.0, 0.0]",
+                "line 12: bodies[1].position (B) is the position of bodies[0] (A)",
+            ),
+            (
+                12,
+                "position = [1.0, 0.0]",
+                "line 12: bodies[1].position (B) has 2 coordinates but bodies[0].position has 3",
+            ),
+            (
+                13,
+                "velocity = [0.0, 1.0]",
+                "line 13: bodies[1].velocity (B) has 2 coordinates",
+            ),
+            (
+                7,
+                "position = []",
+                "line 7: bodies[0].position (A) must have 1, 2 or 3 coordinates, got 0",
+            ),
+            (7, "position = [0, 0, 0, 0]", "must have 1, 2 or 3 coordinates, got 4"),
+            (
+                10,
+                "name = \"a\"",
+                "line 10: bodies[1].name \"a\" is already the name of bodies[0]",
+            ),
+            (10, "name = \"\"", "line 10: bodies[1].name must be a non-empty name"),
+            (10, "name = \"B,C\"", "without commas"),
+            (3, "G = 0.0", "line 3: parameters.G must be > 0, got 0"),
+            (3, "g = 1.0", "unknown field `g`"),
+            (6, "mas = 1.0", "unknown field `mas`"),
+            (
+                12,
+                "position = \"here\"",
+                "line 12, column 12: invalid type: string \"here\"",
+            ),
+        ];
+        for (line, text, expected) in cases {
+            let message = error_with(line, text);
+            assert!(message.contains(expected), "{text}: {message}");
+        }
+    }
+
+    #[test]
+    fn no_bodies_and_no_parameters_are_errors() {
+        let head = "model = \"n-body\"\n[parameters]\nG = 1.0\n";
+        let run = "[run]\nmethod = \"rk4\"\ndt = 0.1\nt_end = 1.0\n";
+        // (a top-level key, so before the first table)
+        let empty = format!("bodies = []\n{head}{run}");
+        let message = parse(&empty, "e.toml", "e").unwrap_err().to_string();
+        assert!(message.contains("line 1: the scene has no bodies"), "{message}");
+        let message = parse(&format!("{head}{run}"), "e.toml", "e").unwrap_err().to_string();
+        assert!(message.contains("missing list of [[bodies]]"), "{message}");
+        let without_g = GOOD.replace("[parameters]\nG = 1.0\n", "");
+        let message = parse(&without_g, "e.toml", "e").unwrap_err().to_string();
+        assert!(message.contains("missing table [parameters] (with G)"), "{message}");
+    }
+
+    #[test]
+    fn the_kepler_scene_has_the_users_orbit() {
+        let AnyScene::NBody(s) = load("kepler").unwrap() else {
+            panic!("model")
+        };
+        assert_eq!(s.model.masses(), [1.0, 0.1]);
+        assert_eq!(s.model.g(), 4.0 * core::f64::consts::PI.powi(2));
+        // SCENES.md 3's facts, given to 5 or 6 significant digits
+        let orbit = s.model.two_body_orbit(&s.y0).unwrap();
+        assert!((orbit.a - 1.82073).abs() < 5e-6, "a = {}", orbit.a);
+        assert!((2.0 * orbit.a - 3.6415).abs() < 5e-5, "2a = {}", 2.0 * orbit.a);
+        assert!((orbit.e - 0.37308).abs() < 5e-6, "e = {}", orbit.e);
+        assert!((orbit.period - 2.34246).abs() < 5e-6, "T = {}", orbit.period);
+        // total momentum 1 * (-0.3) + 0.1 * 3 = 0, to the rounding of 0.1 * 3
+        let p = s.model.total_momentum(&s.y0);
+        assert!(p[0] == 0.0 && p[1].abs() <= f64::EPSILON * 0.3, "{p:?}");
+    }
+
+    #[test]
+    fn the_outer_solar_system_has_the_users_values() {
+        let AnyScene::NBody(s) = load("outer-solar-system").unwrap() else {
+            panic!("model")
+        };
+        assert_eq!(s.model.names(), ["Sun", "Jupiter", "Saturn", "Uranus"]);
+        assert_eq!(s.model.dim(), 3);
+        assert_eq!(s.model.g(), 2.95912208286e-4);
+        assert_eq!(s.model.masses()[3], 0.0000437273164546);
+        // Saturn's position, and Jupiter's momentum m v
+        assert_eq!(s.y0.as_slice()[6..9], [9.0755314, -3.0458353, -1.6483708]);
+        assert_eq!(s.y0[12 + 3], 0.000954786104043 * 0.00565429);
+        assert_eq!((s.run.dt, s.run.t_end), (10.0, 40000.0));
+        assert!(s.exact(10.0).is_none(), "no closed form for four bodies");
+    }
+}

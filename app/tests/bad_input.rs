@@ -1,0 +1,82 @@
+//! Bad input never panics: the binary on a corpus of bad scene and method files
+//! (tests/bad_input/) answers with one clear error line and a non-zero exit, and the
+//! parsers, fed arbitrary text, return errors instead of panicking (proptest).
+
+use proptest::prelude::*;
+use std::path::Path;
+use std::process::Command;
+use stormer::{Splitting, Tableau};
+use stormer_app::scenes;
+
+fn corpus() -> Vec<std::path::PathBuf> {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/bad_input");
+    let mut files: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|e| e == "toml"))
+        .collect();
+    files.sort();
+    files
+}
+
+/// Every bad file: non-zero exit, one line on stderr naming what is wrong, no panic.
+#[test]
+fn the_binary_refuses_every_bad_file_without_panicking() {
+    let files = corpus();
+    assert!(files.len() >= 20);
+    let dir = std::env::temp_dir().join(format!("stormer-bad-input-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    for file in files {
+        let name = file.file_name().unwrap().to_string_lossy().to_string();
+        let path = file.to_string_lossy().to_string();
+        let args: Vec<&str> = if name.starts_with("scene_") {
+            vec!["run", &path, "--t-end", "0.1"]
+        } else {
+            vec!["verify", &path]
+        };
+        let out = Command::new(env!("CARGO_BIN_EXE_stormer"))
+            .args(&args)
+            .current_dir(&dir)
+            .output()
+            .unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert!(!out.status.success(), "{name}: accepted\n{stderr}");
+        assert!(!stderr.contains("panicked"), "{name}: {stderr}");
+        assert_eq!(stderr.trim().lines().count(), 1, "{name}: not one line:\n{stderr}");
+        assert!(stderr.starts_with("error: "), "{name}: {stderr}");
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(256))]
+
+    /// Arbitrary text to every parser: a value or an error, never a panic.
+    #[test]
+    fn parsers_never_panic_on_arbitrary_text(text in "\\PC{0,200}") {
+        let _ = scenes::parse(&text, "arbitrary.toml", "arbitrary");
+        let _ = Tableau::from_toml_str(&text, "arbitrary.toml");
+        let _ = Splitting::from_toml_str(&text, "arbitrary.toml");
+    }
+
+    /// Well-formed TOML with arbitrary numbers (NaN, infinities, huge, negative) in every
+    /// field of a scene and of a method file.
+    #[test]
+    fn parsers_never_panic_on_arbitrary_numbers(x in any::<f64>(), y in any::<f64>(), n in any::<i64>()) {
+        let fmt = |v: f64| if v.is_nan() { "nan".to_string() } else if v.is_infinite() { if v > 0.0 { "inf".into() } else { "-inf".into() } } else { format!("{v:e}") };
+        let scene = format!(
+            "model = \"pendulum\"\n[initial]\ntheta = {}\nomega = {}\n[run]\ndt = {}\nt_end = {}\nevery = {n}\n",
+            fmt(x), fmt(y), fmt(y), fmt(x)
+        );
+        let _ = scenes::parse(&scene, "numbers.toml", "numbers");
+        let nbody = format!(
+            "model = \"n-body\"\n[parameters]\nG = {}\n[[bodies]]\nname = \"a\"\nmass = {}\nposition = [{}, 0.0, 0.0]\nvelocity = [0.0, {}, 0.0]\n[[bodies]]\nname = \"b\"\nmass = 1.0\nposition = [0.0, 0.0, 0.0]\nvelocity = [0.0, 0.0, 0.0]\n",
+            fmt(x), fmt(y), fmt(x), fmt(y)
+        );
+        let _ = scenes::parse(&nbody, "nbody.toml", "nbody");
+        let method = format!("name = \"m\"\norder = {}\na = [[{}]]\nb = [{}]\n", n.rem_euclid(20), fmt(x), fmt(y));
+        let _ = Tableau::from_toml_str(&method, "method.toml");
+        let split = format!("name = \"s\"\nfamily = \"splitting\"\norder = {}\ndrift = [{}]\nkick = [{}]\n", n.rem_euclid(20), fmt(x), fmt(y));
+        let _ = Splitting::from_toml_str(&split, "split.toml");
+    }
+}

@@ -1,0 +1,32 @@
+//! Generic problems that many simulations share, in any scalar and state type: gravitating
+//! bodies ([`NBody`], with [`Orbit`] for the two-body solution), one body around a fixed
+//! centre ([`CentralForce`]) and charged particles in electric and magnetic fields
+//! ([`ChargedParticles`], run through [`crate::magnetic::Charged`]).
+//!
+//! The application's scene files build these; a program uses them directly:
+//!
+//! ```
+//! use stormer::catalog::VelocityVerletKdk;
+//! use stormer::models::NBody;
+//! use stormer::{Driver, Problem, SplittingStepper};
+//! // Sun and Jupiter in the plane, G = 1
+//! let bodies = NBody::<f64, [f64; 8]>::new(1.0, &[1.0, 1e-3], 2).unwrap();
+//! let y0 = [0.0, 0.0, 5.2, 0.0, 0.0, 0.0, 0.0, 1e-3 * (1.0f64 / 5.2).sqrt()];
+//! let mut stepper = SplittingStepper::<VelocityVerletKdk, [f64; 8]>::new(&y0).unwrap();
+//! let run = Driver::fixed(0.1).run(&bodies, &mut stepper, 0.0, &y0, 10.0).unwrap();
+//! let e0 = bodies.energy(0.0, &y0).unwrap();
+//! let e1 = bodies.energy(10.0, run.y.last().unwrap()).unwrap();
+//! assert!(((e1 - e0) / e0).abs() < 1e-6);
+//! ```
+
+mod central_force;
+mod charged_particles;
+mod nbody;
+mod nbody_shape;
+mod orbit;
+
+pub use central_force::CentralForce;
+pub use charged_particles::{ChargedParticles, MagneticField};
+pub use nbody::NBody;
+pub use nbody_shape::{AnyShape, Bodies, Shape};
+pub use orbit::{eccentric_anomaly, Orbit};
