@@ -9,7 +9,8 @@
 
 use stormer::order::stability::Interval;
 use stormer::registry;
-use stormer::verify::{report, Scheme};
+use stormer::verify::report;
+use stormer::Method;
 
 fn main() -> Result<(), stormer::Error> {
     let only: Vec<String> = std::env::args().skip(1).collect();
@@ -19,7 +20,7 @@ fn main() -> Result<(), stormer::Error> {
         if !only.is_empty() && !only.iter().any(|o| o == name) {
             continue;
         }
-        let r = report(&Scheme::named(name)?)?;
+        let r = report(&Method::named(name)?)?;
         let measured = match &r.order {
             Ok(m) => format!("{:.2}", m.order),
             Err(e) => format!("({e})"),

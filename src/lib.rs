@@ -7,6 +7,7 @@ extern crate self as stormer;
 pub mod catalog;
 pub mod driver;
 mod error;
+mod families;
 pub mod flows;
 pub mod hamiltonian;
 pub mod magnetic;
@@ -21,16 +22,18 @@ pub mod verify;
 
 pub use driver::{Driver, Interrupted, Solution, Stats, StepControl, StopEvent};
 pub use error::Error;
+pub use families::{Families, SplittingSource};
 
 /// One-line messages for the errors of text files (method files here, scene files in the
 /// application): where in the file, and what.
 pub mod diagnostics {
     pub use crate::error::{line_column, one_line, toml_message};
 }
-pub use flows::{QuadraticKinetic, Splittable};
+pub use flows::{Admits, QuadraticKinetic, Splittable};
 pub use hamiltonian::{Hamiltonian, SecondOrder};
 pub use method::{
-    ButcherMethod, ExplicitMethod, Flags, MethodInfo, Splitting, SplittingData, SplittingMethod, Tableau, TableauData,
+    ButcherMethod, ExplicitMethod, Flags, Method, MethodInfo, Splitting, SplittingData, SplittingMethod, Tableau,
+    TableauData,
 };
 pub use problem::Problem;
 pub use real::{lit, to_f64, Real};

@@ -1,6 +1,6 @@
 //! Problems of the form `y' = f(t, y)`.
 
-use crate::{Real, State};
+use crate::{Families, Real, State};
 
 /// A first-order system `y' = f(t, y)`.
 ///
@@ -38,5 +38,16 @@ pub trait Problem {
     /// The energy or invariant at `(t, y)`, if the problem has one.
     fn energy(&self, _t: Self::Scalar, _y: &Self::State) -> Option<Self::Scalar> {
         None
+    }
+
+    /// The families of methods this problem admits besides Runge-Kutta (splittings,
+    /// charged-particle pushers), declared once per problem class ([`Families`]). The
+    /// default admits Runge-Kutta methods only; [`crate::Hamiltonian`],
+    /// [`crate::SecondOrder`] and [`crate::magnetic::Charged`] problems declare theirs.
+    fn families(&self) -> Families<Self>
+    where
+        Self: Sized + 'static,
+    {
+        Families::undeclared()
     }
 }

@@ -1,12 +1,14 @@
-//! Methods by name: the compiled catalog as a table, lookup with suggestions, and
-//! steppers chosen at run time (the CLI's `--method`).
+//! Methods by name: the compiled catalog as a table, the names users bring from other
+//! libraries ([`ALIASES`]), and lookup with suggestions. A name resolves to a [`Method`],
+//! whose [`Method::stepper_for`] builds the stepper.
 
 use crate::catalog;
+use crate::families::SplittingSource;
 use crate::flows::{QuadraticKinetic, Splittable};
-use crate::method::{ButcherMethod, SplittingData, SplittingMethod, TableauData};
+use crate::method::{ButcherMethod, SplittingData, SplittingMethod, StepperResult, TableauData};
 use crate::{
-    Error, ImplicitOptions, ImplicitRk, Problem, RuntimeRk, RuntimeSplitting, Splitting, SplittingStepper, Stepper,
-    Tableau,
+    Error, Families, ImplicitOptions, ImplicitRk, Method, Problem, RuntimeRk, RuntimeSplitting, Splitting,
+    SplittingStepper, Tableau,
 };
 
 macro_rules! data_list {
@@ -17,16 +19,18 @@ macro_rules! data_list {
 
 macro_rules! dispatch {
     ($($method:ident),* $(,)?) => {
-        fn compiled_stepper<P>(name: &str, y0: &P::State, implicit: &ImplicitOptions) -> Option<Box<dyn Stepper<P>>>
+        /// The generated stepper of the compiled tableau `data` (matched by its unique
+        /// catalog name; a tableau declared outside the catalog runs as its run-time twin).
+        pub(crate) fn compiled_tableau<P>(data: &TableauData, y0: &P::State, implicit: &ImplicitOptions) -> StepperResult<P>
         where
             P: Problem + 'static,
         {
             $(
-                if name == <catalog::$method as ButcherMethod>::DATA.name {
-                    return Some(<catalog::$method as ButcherMethod>::dyn_stepper::<P>(y0, implicit));
+                if data.name == <catalog::$method as ButcherMethod>::DATA.name {
+                    return Ok(<catalog::$method as ButcherMethod>::dyn_stepper::<P>(y0, implicit));
                 }
             )*
-            None
+            runtime_tableau(&Tableau::from_data(data)?, y0, implicit)
         }
     };
 }
@@ -39,38 +43,36 @@ macro_rules! splitting_data_list {
 
 macro_rules! splitting_dispatch {
     (general: [$($g:ident),* $(,)?], quadratic: [$($r:ident),* $(,)?] $(,)?) => {
-        /// The compiled stepper of the general splitting `name` (`None` when `name` is not
-        /// one: unknown, or a method that needs a quadratic kinetic energy).
-        #[allow(unused_variables)]
-        fn compiled_splitting<P>(name: &str, y0: &P::State) -> Option<Result<Box<dyn Stepper<P>>, Error>>
+        /// The generated stepper of the compiled general splitting `data`; the caller has
+        /// refused Runge-Kutta-Nystrom methods ([`crate::Families`]). A splitting declared
+        /// outside the catalog runs as its run-time twin.
+        pub(crate) fn compiled_general_splitting<P>(data: &SplittingData, y0: &P::State) -> StepperResult<P>
         where
             P: Splittable + 'static,
         {
             $(
-                if name == <catalog::$g as SplittingMethod>::DATA.name {
-                    return Some(SplittingStepper::<catalog::$g, P::State, P::FlowCache>::boxed::<P>(y0));
+                if data.name == <catalog::$g as SplittingMethod>::DATA.name {
+                    return SplittingStepper::<catalog::$g, P::State, P::FlowCache>::boxed::<P>(y0);
                 }
             )*
-            None
+            Ok(Box::new(RuntimeSplitting::<P::State, P::FlowCache>::new(&Splitting::from_data(data)?, y0)?))
         }
 
-        /// The compiled stepper of any splitting `name`, for a quadratic-kinetic problem.
-        #[allow(unused_variables)]
-        fn compiled_splitting_quadratic<P>(name: &str, y0: &P::State) -> Option<Result<Box<dyn Stepper<P>>, Error>>
+        /// The generated stepper of any compiled splitting `data`, on a quadratic kinetic
+        /// energy.
+        pub(crate) fn compiled_splitting<P>(data: &SplittingData, y0: &P::State) -> StepperResult<P>
         where
             P: QuadraticKinetic + 'static,
         {
             $(
-                if name == <catalog::$g as SplittingMethod>::DATA.name {
-                    return Some(SplittingStepper::<catalog::$g, P::State, P::FlowCache>::boxed::<P>(y0));
+                if data.name == <catalog::$r as SplittingMethod>::DATA.name {
+                    return SplittingStepper::<catalog::$r, P::State, P::FlowCache>::boxed::<P>(y0);
                 }
             )*
-            $(
-                if name == <catalog::$r as SplittingMethod>::DATA.name {
-                    return Some(SplittingStepper::<catalog::$r, P::State, P::FlowCache>::boxed::<P>(y0));
-                }
-            )*
-            None
+            if data.requires_quadratic_kinetic {
+                return Ok(Box::new(RuntimeSplitting::new_quadratic(&Splitting::from_data(data)?, y0)?));
+            }
+            compiled_general_splitting::<P>(data, y0)
         }
     };
 }
@@ -84,57 +86,83 @@ pub const SPLITTING: &[SplittingData] = catalog::for_each_splitting_method!(spli
 catalog::for_each_butcher_method!(dispatch);
 catalog::for_each_splitting_method!(splitting_dispatch);
 
+/// The names users bring from other libraries, as `(alias, catalog name, where it comes
+/// from)`. An alias is matched with the spelling rules of [`lookup`] (case, `-`, `_` and
+/// spaces do not matter), so `RK45`, `rk-45` and `rk45` are one alias.
+pub const ALIASES: &[(&str, &str, &str)] = &[
+    ("RK45", "dormand_prince5", "scipy"),
+    ("RK23", "bogacki_shampine3", "scipy"),
+    ("Radau", "radau_iia5", "scipy"),
+    ("DP5", "dormand_prince5", "OrdinaryDiffEq.jl"),
+    ("DP8", "dop853", "OrdinaryDiffEq.jl"),
+    ("dopri5", "dormand_prince5", "Hairer, boost odeint"),
+    ("dopri853", "dop853", "Hairer"),
+    ("ode45", "dormand_prince5", "MATLAB"),
+    ("ode23", "bogacki_shampine3", "MATLAB"),
+    ("BS3", "bogacki_shampine3", "OrdinaryDiffEq.jl"),
+    ("Tsit5", "tsitouras5", "OrdinaryDiffEq.jl"),
+    ("Vern6", "verner6", "OrdinaryDiffEq.jl"),
+    ("Vern7", "verner7", "OrdinaryDiffEq.jl"),
+    ("Vern8", "verner8", "OrdinaryDiffEq.jl"),
+    ("Vern9", "verner9", "OrdinaryDiffEq.jl"),
+    ("RKF45", "fehlberg45", "Fehlberg"),
+    ("RKF78", "fehlberg78", "Fehlberg"),
+    ("CashKarp", "cash_karp", "Numerical Recipes"),
+    ("Heun", "heun2", "OrdinaryDiffEq.jl"),
+    ("Ralston", "ralston2", "OrdinaryDiffEq.jl"),
+    ("RK438", "rk4_38", "OrdinaryDiffEq.jl"),
+    ("SSPRK33", "ssprk33", "OrdinaryDiffEq.jl"),
+    ("SSPRK43", "ssprk43", "OrdinaryDiffEq.jl"),
+    ("ImplicitEuler", "backward_euler", "OrdinaryDiffEq.jl"),
+    ("ImplicitMidpoint", "implicit_midpoint", "OrdinaryDiffEq.jl"),
+    ("Trapezoid", "trapezoidal", "OrdinaryDiffEq.jl"),
+    ("CrankNicolson", "trapezoidal", "textbooks"),
+    ("RadauIIA3", "radau_iia3", "OrdinaryDiffEq.jl"),
+    ("RadauIIA5", "radau_iia5", "OrdinaryDiffEq.jl"),
+    ("GL4", "gauss_legendre4", "textbooks"),
+    ("GL6", "gauss_legendre6", "textbooks"),
+    (
+        "SymplecticEuler",
+        "symplectic_euler_dk",
+        "OrdinaryDiffEq.jl, boost odeint (drift first)",
+    ),
+    ("VelocityVerlet", "velocity_verlet_kdk", "OrdinaryDiffEq.jl"),
+    ("VerletLeapfrog", "velocity_verlet_kdk", "OrdinaryDiffEq.jl"),
+    ("verlet", "velocity_verlet_kdk", "common usage"),
+    ("leapfrog", "stormer_verlet_dkd", "REBOUND (drift-kick-drift)"),
+    ("LeapfrogDriftKickDrift", "stormer_verlet_dkd", "OrdinaryDiffEq.jl"),
+    ("PseudoVerletLeapfrog", "stormer_verlet_dkd", "OrdinaryDiffEq.jl"),
+    ("McAte2", "mclachlan_atela2", "OrdinaryDiffEq.jl"),
+    ("McAte3", "mclachlan_atela3", "OrdinaryDiffEq.jl"),
+    (
+        "McAte4",
+        "mclachlan_atela4",
+        "OrdinaryDiffEq.jl (ours has the roles right: order 4)",
+    ),
+    (
+        "McAte5",
+        "mclachlan_atela5",
+        "OrdinaryDiffEq.jl (ours has the roles right: order 5)",
+    ),
+    ("McAte8", "mclachlan_ss15", "OrdinaryDiffEq.jl"),
+    ("CandyRoz4", "forest_ruth4", "OrdinaryDiffEq.jl"),
+    (
+        "CalvoSanz4",
+        "calvo_sanz_serna4",
+        "OrdinaryDiffEq.jl (ours has the roles right: order 4)",
+    ),
+    ("Yoshida6", "yoshida6a", "OrdinaryDiffEq.jl"),
+    ("KahanLi6", "kahan_li6", "OrdinaryDiffEq.jl"),
+    ("KahanLi8", "kahan_li8", "OrdinaryDiffEq.jl"),
+    ("SofSpa10", "sofroniou_spaletta10", "OrdinaryDiffEq.jl"),
+    ("leapfrog4", "triple_jump4", "REBOUND (LF4)"),
+    ("LF6", "mclachlan_ss9", "REBOUND"),
+    ("LF8", "mclachlan_ss17", "REBOUND"),
+];
+
 /// The catalog spelling of a user's method name: lower case, `-` and spaces read as `_`.
 pub fn normalize(name: &str) -> String {
     name.trim().to_lowercase().replace(['-', ' '], "_")
-}
-
-/// Looks a method up by name (`-` and `_` both accepted, and separators optional when
-/// that names one method: `rk-4` is `rk4`); an unknown name is an error that suggests
-/// the nearest catalog names.
-///
-/// ```
-/// let rk4 = stormer::registry::find("rk4").unwrap();
-/// assert_eq!(rk4.order, 4);
-/// assert_eq!(stormer::registry::find("rk-4").unwrap().name, "rk4");
-/// let err = stormer::registry::find("rk-5").unwrap_err();
-/// assert!(err.to_string().contains("did you mean"));
-/// ```
-pub fn find(name: &str) -> Result<&'static TableauData, Error> {
-    let key = normalize(name);
-    let loose = |s: &str| s.replace('_', "");
-    let mut without_separators = BUTCHER.iter().filter(|d| loose(d.name) == loose(&key));
-    let unique_loose = match (without_separators.next(), without_separators.next()) {
-        (Some(data), None) => Some(data),
-        _ => None,
-    };
-    BUTCHER
-        .iter()
-        .find(|d| d.name == key)
-        .or(unique_loose)
-        .ok_or_else(|| Error::UnknownMethod {
-            name: name.to_string(),
-            suggestions: nearest(&key),
-        })
-}
-
-/// A catalog method of any family.
-#[derive(Debug, Clone, Copy)]
-pub enum MethodRef {
-    /// A Butcher tableau.
-    Butcher(&'static TableauData),
-    /// A splitting or composition.
-    Splitting(&'static SplittingData),
-}
-
-impl MethodRef {
-    /// The catalog name.
-    pub fn name(&self) -> &'static str {
-        match self {
-            MethodRef::Butcher(d) => d.name,
-            MethodRef::Splitting(d) => d.name,
-        }
-    }
 }
 
 /// Every catalog name, Butcher tableaus first.
@@ -142,121 +170,129 @@ pub fn names() -> impl Iterator<Item = &'static str> {
     BUTCHER.iter().map(|d| d.name).chain(SPLITTING.iter().map(|d| d.name))
 }
 
-/// Looks a method of any family up by name, with the spelling rules and suggestions of
-/// [`find`].
-pub fn lookup(name: &str) -> Result<MethodRef, Error> {
+/// The aliases of the catalog method `name`.
+pub fn aliases_of(name: &str) -> impl Iterator<Item = &'static str> + '_ {
+    ALIASES.iter().filter(move |a| a.1 == name).map(|a| a.0)
+}
+
+/// Looks a catalog method of any family up by name or alias: `-`, `_` and spaces are one
+/// separator, and separators are optional when that names one method (`rk-4` is `rk4`);
+/// an unknown name is an error that suggests the nearest names and aliases. This is the
+/// one place a name becomes a [`Method`].
+///
+/// ```
+/// use stormer::registry::lookup;
+/// assert_eq!(lookup("rk-4").unwrap().name(), "rk4");
+/// assert_eq!(lookup("Tsit5").unwrap().name(), "tsitouras5");
+/// assert_eq!(lookup("leapfrog").unwrap().name(), "stormer_verlet_dkd");
+/// let err = lookup("rk-5").unwrap_err().to_string();
+/// assert!(err.contains("did you mean"), "{err}");
+/// ```
+pub fn lookup(name: &str) -> Result<Method, Error> {
     let key = normalize(name);
-    let loose = |s: &str| s.replace('_', "");
+    let loose = |s: &str| normalize(s).replace('_', "");
+    let alias = ALIASES.iter().find(|a| loose(a.0) == loose(&key)).map(|a| a.1);
     let exact = names().find(|n| *n == key);
     let mut without_separators = names().filter(|n| loose(n) == loose(&key));
     let unique_loose = match (without_separators.next(), without_separators.next()) {
         (Some(n), None) => Some(n),
         _ => None,
     };
-    let Some(found) = exact.or(unique_loose) else {
+    let Some(found) = exact.or(unique_loose).or(alias) else {
         return Err(Error::UnknownMethod {
             name: name.to_string(),
             suggestions: nearest(&key),
         });
     };
     Ok(match BUTCHER.iter().find(|d| d.name == found) {
-        Some(d) => MethodRef::Butcher(d),
-        None => MethodRef::Splitting(SPLITTING.iter().find(|d| d.name == found).expect("listed by names()")),
+        Some(d) => Method::Tableau(d),
+        None => Method::Splitting(SPLITTING.iter().find(|d| d.name == found).expect("listed by names()")),
     })
 }
 
-/// Looks a splitting or composition up by name (see [`lookup`]); a Butcher method's name
-/// is an error that says so.
+/// Looks a Butcher tableau up by name or alias ([`lookup`]); a splitting's name is an
+/// error that says so.
+///
+/// ```
+/// let rk4 = stormer::registry::find("rk4").unwrap();
+/// assert_eq!(rk4.order, 4);
+/// assert_eq!(stormer::registry::find("DOP853").unwrap().name, "dop853");
+/// assert!(stormer::registry::find("rk-5").unwrap_err().to_string().contains("did you mean"));
+/// ```
+pub fn find(name: &str) -> Result<&'static TableauData, Error> {
+    match lookup(name)? {
+        Method::Tableau(d) => Ok(d),
+        other => Err(Error::Unsupported {
+            name: other.name().to_string(),
+            reason: "it is a splitting or composition, not a Runge-Kutta tableau".into(),
+        }),
+    }
+}
+
+/// Looks a splitting or composition up by name or alias ([`lookup`]); a Butcher method's
+/// name is an error that says so.
 pub fn find_splitting(name: &str) -> Result<&'static SplittingData, Error> {
     match lookup(name)? {
-        MethodRef::Splitting(d) => Ok(d),
-        MethodRef::Butcher(d) => Err(Error::Unsupported {
-            name: d.name.to_string(),
+        Method::Splitting(d) => Ok(d),
+        other => Err(Error::Unsupported {
+            name: other.name().to_string(),
             reason: "it is a Runge-Kutta tableau, not a splitting or composition".into(),
         }),
     }
 }
 
-/// The compiled stepper of a catalog splitting or composition for a general splittable
-/// problem. A method that needs a quadratic kinetic energy is refused with a sentence
-/// saying so (the typed [`crate::SplittingStepper`] refuses it at compile time).
-pub fn splitting_stepper<P>(name: &str, y0: &P::State) -> Result<Box<dyn Stepper<P>>, Error>
-where
-    P: Splittable + 'static,
-{
-    let data = find_splitting(name)?;
-    match compiled_splitting::<P>(data.name, y0) {
-        Some(stepper) => stepper,
-        None => Err(Error::Unsupported {
-            name: data.name.to_string(),
-            reason: "it reaches its order only when the kinetic energy is quadratic in p (a Runge-Kutta-Nystrom \
-                     method), which this problem does not declare; use a general splitting or composition"
-                .into(),
-        }),
-    }
-}
-
-/// The compiled stepper of any catalog splitting or composition, for a problem whose
-/// kinetic energy is quadratic.
-pub fn splitting_stepper_quadratic<P>(name: &str, y0: &P::State) -> Result<Box<dyn Stepper<P>>, Error>
-where
-    P: QuadraticKinetic + 'static,
-{
-    let data = find_splitting(name)?;
-    compiled_splitting_quadratic::<P>(data.name, y0).unwrap_or_else(|| {
-        Err(Error::UnknownMethod {
-            name: name.to_string(),
-            suggestions: Vec::new(),
-        })
-    })
-}
-
-/// A stepper for a splitting or composition built at run time (e.g. read from a file).
-pub fn runtime_splitting_stepper<P>(method: &Splitting, y0: &P::State) -> Result<Box<dyn Stepper<P>>, Error>
-where
-    P: Splittable + 'static,
-{
-    Ok(Box::new(RuntimeSplitting::<P::State, P::FlowCache>::new(method, y0)?))
-}
-
-/// Up to three catalog names closest to `key` (edit distance, prefix matches first).
+/// Up to three names or aliases closest to `key` (edit distance, prefix matches first).
 fn nearest(key: &str) -> Vec<String> {
-    let mut scored: Vec<(usize, &str)> = names()
+    let candidates = names().chain(ALIASES.iter().map(|a| a.0));
+    let mut scored: Vec<(usize, String)> = candidates
         .map(|name| {
-            let distance = strsim::damerau_levenshtein(key, name);
-            let prefix = name.starts_with(key) || key.starts_with(name);
-            (if prefix { distance.min(1) } else { distance }, name)
+            let spelled = normalize(name);
+            let distance = strsim::damerau_levenshtein(key, &spelled);
+            let prefix = spelled.starts_with(key) || key.starts_with(spelled.as_str());
+            (if prefix { distance.min(1) } else { distance }, name.to_string())
         })
         .collect();
     scored.sort();
+    scored.dedup_by(|a, b| a.1 == b.1);
     let best = scored.first().map_or(0, |s| s.0);
     scored
         .into_iter()
-        .filter(|&(d, _)| d <= best.max(2) + 1 && d <= key.len().max(3))
+        .filter(|(d, _)| *d <= best.max(2) + 1 && *d <= key.len().max(3))
         .take(3)
-        .map(|(_, n)| n.to_string())
+        .map(|(_, n)| n)
         .collect()
 }
 
-/// A stepper for the catalog method `name` on problem `P`: the generated, unrolled
-/// stepper for explicit tableaus, the implicit solver for the others.
-pub fn stepper<P>(name: &str, y0: &P::State, implicit: &ImplicitOptions) -> Result<Box<dyn Stepper<P>>, Error>
+/// The stepper of the catalog tableau `name` for a problem type `P` (any problem: a
+/// Runge-Kutta method needs only `rhs`). The same as
+/// `Method::named(name)?.stepper_for(..)` for a tableau, without a problem value.
+pub fn stepper<P>(name: &str, y0: &P::State, implicit: &ImplicitOptions) -> StepperResult<P>
 where
     P: Problem + 'static,
 {
-    let data = find(name)?;
-    compiled_stepper::<P>(data.name, y0, implicit).ok_or_else(|| Error::UnknownMethod {
-        name: name.to_string(),
-        suggestions: Vec::new(),
-    })
+    compiled_tableau::<P>(find(name)?, y0, implicit)
 }
 
-/// A stepper for a tableau built at run time (e.g. read from a file).
-pub fn tableau_stepper<P>(
-    tableau: &Tableau,
-    y0: &P::State,
-    implicit: &ImplicitOptions,
-) -> Result<Box<dyn Stepper<P>>, Error>
+/// The stepper of the catalog splitting or composition `name` for a splittable problem
+/// type; a Runge-Kutta-Nystrom method is refused ([`Families::general_splittings`]).
+pub fn splitting_stepper<P>(name: &str, y0: &P::State) -> StepperResult<P>
+where
+    P: Splittable + 'static,
+{
+    Families::<P>::general_splittings().splitting(SplittingSource::Compiled(find_splitting(name)?), y0)
+}
+
+/// The stepper of any catalog splitting or composition `name` for a problem type whose
+/// kinetic energy is quadratic ([`Families::all_splittings`]).
+pub fn splitting_stepper_quadratic<P>(name: &str, y0: &P::State) -> StepperResult<P>
+where
+    P: QuadraticKinetic + 'static,
+{
+    Families::<P>::all_splittings().splitting(SplittingSource::Compiled(find_splitting(name)?), y0)
+}
+
+/// The stepper of a tableau built at run time (a method file, [`theta`]).
+pub fn runtime_tableau<P>(tableau: &Tableau, y0: &P::State, implicit: &ImplicitOptions) -> StepperResult<P>
 where
     P: Problem + 'static,
 {

@@ -62,7 +62,8 @@
 //! --test-threads 1` prints every refinement.
 
 use stormer::verify::problems::TreeSystem;
-use stormer::verify::{measure_global_order, GlobalOrderOptions, OrderMeasurement, Precision, Scheme};
+use stormer::verify::{measure_global_order, GlobalOrderOptions, OrderMeasurement, Precision};
+use stormer::Method;
 use stormer::{registry, Problem, Tableau};
 
 /// Largest allowed distance between the measured and the declared order.
@@ -70,7 +71,7 @@ const TOLERANCE: f64 = 0.2;
 
 /// The measured order of `scheme` in `precision` on the tree system for a method declared
 /// of order `declared`.
-fn measure(scheme: &Scheme, declared: usize, precision: Precision) -> Result<f64, String> {
+fn measure(scheme: &Method, declared: usize, precision: Precision) -> Result<f64, String> {
     let m = measure_global_order(scheme, declared, precision, &GlobalOrderOptions::default());
     if std::env::var_os("STORMER_SHOW_ERRORS").is_some() {
         show(m.as_ref().ok());
@@ -105,10 +106,10 @@ fn check(name: &'static str, embedded: bool, precision: Precision) {
         let main = Tableau::from_data(data).unwrap();
         let tableau = main.embedded_as_main().expect("has b_hat").unwrap();
         // the run-time stepper, propagating b_hat
-        (Scheme::from(tableau), data.embedded_order.unwrap())
+        (Method::from(tableau), data.embedded_order.unwrap())
     } else {
         // the compiled (generated, unrolled) stepper
-        (Scheme::named(name).unwrap(), data.order)
+        (Method::named(name).unwrap(), data.order)
     };
     let what = if embedded { " (embedded)" } else { "" };
     let order = measure(&scheme, declared, precision).unwrap_or_else(|e| panic!("{name}{what}: {e}"));
@@ -246,7 +247,7 @@ fn with_weights(name: &str, b: Vec<f64>, order: usize, tolerance: Option<f64>) -
 
 /// The measured order of `tableau` run as if it were declared of order `claimed`.
 fn measure_claimed(tableau: &Tableau, claimed: usize) -> Result<f64, String> {
-    measure(&Scheme::from(tableau.clone()), claimed, Precision::F64)
+    measure(&Method::from(tableau.clone()), claimed, Precision::F64)
 }
 
 /// Heun's method with an O(1e-2) error in its second-order condition is not taken for a

@@ -32,12 +32,10 @@ fn catalog() -> Vec<(&'static str, Interval)> {
 }
 
 fn stepper(name: &str) -> Box<dyn Stepper<Oscillator>> {
-    match registry::lookup(name).unwrap() {
-        registry::MethodRef::Butcher(_) => {
-            registry::stepper::<Oscillator>(name, &Y0, &ImplicitOptions::default()).unwrap()
-        }
-        registry::MethodRef::Splitting(_) => registry::splitting_stepper_quadratic::<Oscillator>(name, &Y0).unwrap(),
-    }
+    let method = registry::lookup(name).unwrap();
+    method
+        .stepper_for(&Oscillator, &Y0, &ImplicitOptions::default())
+        .unwrap()
 }
 
 /// The Euclidean norm of the state after `steps` steps of size `h`.

@@ -7,8 +7,8 @@
 #![allow(clippy::float_cmp)]
 
 use stormer::magnetic::Charged;
-use stormer::{registry, Driver, ImplicitOptions, Problem, Solution, StepControl, Stepper, Tolerances};
-use stormer_app::scenes::{self, AnyScene, RestrictedThreeBody, Scene, Setup, SplittingChoice};
+use stormer::{registry, Driver, ImplicitOptions, Method, Problem, Solution, StepControl, Stepper, Tolerances};
+use stormer_app::scenes::{self, AnyScene, RestrictedThreeBody, Setup};
 
 /// The built-in scene.
 fn arenstorf() -> Setup<Charged<RestrictedThreeBody>> {
@@ -36,8 +36,8 @@ fn one_period(
 }
 
 fn splitting(s: &Setup<Charged<RestrictedThreeBody>>, name: &str) -> Box<dyn Stepper<Charged<RestrictedThreeBody>>> {
-    let method = SplittingChoice::Compiled(registry::find_splitting(name).unwrap());
-    s.model.splitting_stepper(method, &s.y0).unwrap()
+    let method = Method::Splitting(registry::find_splitting(name).unwrap());
+    method.stepper_for(&s.model, &s.y0, &Default::default()).unwrap()
 }
 
 fn dop853(s: &Setup<Charged<RestrictedThreeBody>>) -> Box<dyn Stepper<Charged<RestrictedThreeBody>>> {
@@ -102,8 +102,12 @@ fn the_magnetic_verlet_alone_is_far_off_at_that_step() {
 fn the_coriolis_force_cannot_be_a_kick() {
     // A Runge-Kutta-Nystrom method assumes the force depends on positions only.
     let s = arenstorf();
-    let rkn = SplittingChoice::Compiled(registry::find_splitting("blanes_moan_srkn11b").unwrap());
-    let message = s.model.splitting_stepper(rkn, &s.y0).err().unwrap().to_string();
+    let rkn = Method::Splitting(registry::find_splitting("blanes_moan_srkn11b").unwrap());
+    let message = rkn
+        .stepper_for(&s.model, &s.y0, &Default::default())
+        .err()
+        .unwrap()
+        .to_string();
     assert!(message.contains("quadratic in p"), "{message}");
 }
 

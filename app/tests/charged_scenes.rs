@@ -1,11 +1,10 @@
 //! The charged-particle scenes (`scenes/*.toml`, model `charged-particles`), run the way
-//! `stormer run` runs them: through `Scene::splitting_stepper` / `Scene::particle_stepper`.
+//! `stormer run` runs them: through `Method::stepper_for`, which asks the model which families it admits.
 
 use stormer::magnetic::Charged;
 use stormer::models::ChargedParticles;
-use stormer::stepper::ParticleMethod;
-use stormer::{registry, Driver, Stepper};
-use stormer_app::scenes::{self, AnyScene, ChargedScene, Scene, Setup, SplittingChoice};
+use stormer::{registry, Driver, Method, Stepper};
+use stormer_app::scenes::{self, AnyScene, ChargedScene, Setup};
 
 fn setup(name: &str) -> Setup<ChargedScene> {
     match scenes::load(name).unwrap() {
@@ -16,13 +15,8 @@ fn setup(name: &str) -> Setup<ChargedScene> {
 
 /// The stepper `stormer run SCENE --method NAME` uses.
 fn stepper(s: &Setup<ChargedScene>, name: &str) -> Box<dyn Stepper<ChargedScene>> {
-    if let Some(m) = ParticleMethod::find(name) {
-        return s.model.particle_stepper(m, &s.y0).unwrap();
-    }
-    match registry::find_splitting(name) {
-        Ok(d) => s.model.splitting_stepper(SplittingChoice::Compiled(d), &s.y0).unwrap(),
-        Err(_) => registry::stepper::<ChargedScene>(name, &s.y0, &Default::default()).unwrap(),
-    }
+    let method = Method::resolve(name).unwrap();
+    method.stepper_for(&s.model, &s.y0, &Default::default()).unwrap()
 }
 
 /// The state at `t_end` after fixed steps of `t_end / n`.
@@ -144,13 +138,12 @@ fn in_the_magnetic_bottle_boris_is_second_order_and_the_splittings_first() {
     }
     // the scene refuses the splittings, saying why
     let verlet = registry::find_splitting("velocity_verlet_kdk").unwrap();
-    let refused = s
-        .model
-        .splitting_stepper(SplittingChoice::Compiled(verlet), &s.y0)
+    let refused = Method::Splitting(verlet)
+        .stepper_for(&s.model, &s.y0, &Default::default())
         .err()
         .unwrap();
     assert!(refused.to_string().contains("not uniform"), "{refused}");
-    // and the library (which allows them) shows why: order 1. If this fails, the drift
+    // and the typed library path (which does not ask the problem) shows why: order 1. If this fails, the drift
     // became a second-order flow in non-uniform fields: lift the scene's refusal and
     // update docs/charged-particles.md and scenes/magnetic-bottle.toml
     for name in ["velocity_verlet_kdk", "kahan_li6"] {

@@ -345,7 +345,9 @@ fn method_names() {
         &stormer(&dir, &["run", "harmonic", "--method", "rk5", "--t-end", "0.1"]),
         "did you mean",
     );
-    assert_error(&stormer(&dir, &["verify", "dopri853"]), "did you mean");
+    // the names users bring from scipy, OrdinaryDiffEq.jl and REBOUND are aliases
+    assert_ok(&stormer(&dir, &["verify", "dopri853"]));
+    assert_error(&stormer(&dir, &["verify", "dopri"]), "did you mean");
     assert_error(
         &stormer(&dir, &["run", "harmonic", "--method", "rk4", "--alpha", "0.3"]),
         "--alpha",
@@ -1002,17 +1004,16 @@ fn charged_particle_methods_run_on_charged_particle_scenes_only() {
     // and nowhere else
     assert_error(
         &stormer(&dir, &["run", "pendulum", "--method", "boris"]),
-        "method boris cannot be used here: it is a charged-particle method, for scenes of the charged-particles \
-         model, not of the pendulum model",
+        "method boris cannot be used here: it is a charged-particle method, for Lorentz-force problems",
     );
     assert_error(
         &stormer(&dir, &["run", "kepler", "--method", "euler-cromer"]),
-        "not of the n-body model",
+        "it is a charged-particle method",
     );
     // Runge-Kutta-Nystrom methods need a free-flight drift
     assert_error(
         &stormer(&dir, &["run", "coulomb-magnetic", "--method", "blanes_moan_srkn11b"]),
-        "it is a Runge-Kutta-Nystrom method, which reaches its order only when the drift is a free flight",
+        "it is a Runge-Kutta-Nystrom method, which reaches its order only when the kinetic energy is quadratic in p and the drift a free flight",
     );
     // no error estimate, no adaptive steps; not catalog data, nothing to verify
     assert_error(

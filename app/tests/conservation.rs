@@ -18,7 +18,7 @@
 
 use nalgebra::DVector;
 use stormer::models::NBody;
-use stormer::{registry, Driver, ImplicitOptions, Stepper};
+use stormer::{registry, Driver, ImplicitOptions, Method, Stepper};
 use stormer_app::scenes::{self, AnyScene, Setup};
 
 type Scene = Setup<NBody<f64, DVector<f64>>>;
@@ -53,20 +53,19 @@ struct Drift {
 fn run(scene: &Scene, method: &str, steps: u64) -> Drift {
     let y0 = &scene.y0;
     let model = &scene.model;
-    let (mut stepper, kicks, subflows): (Box<dyn Stepper<_>>, u64, u64) = match registry::lookup(method).unwrap() {
-        registry::MethodRef::Splitting(d) => {
+    let resolved = registry::lookup(method).unwrap();
+    let stepper = resolved.stepper_for(model, y0, &ImplicitOptions::default());
+    let (mut stepper, kicks, subflows): (Box<dyn Stepper<_>>, u64, u64) = match resolved {
+        Method::Splitting(d) => {
             let kicks = d
                 .word()
                 .iter()
                 .filter(|op| op.flow == stormer::order::splitting::Flow::Kick)
                 .count();
-            let s = registry::splitting_stepper_quadratic(method, y0).unwrap();
-            (s, kicks as u64, d.word().len() as u64)
+            (stepper.unwrap(), kicks as u64, d.word().len() as u64)
         }
-        registry::MethodRef::Butcher(d) => {
-            let s = registry::stepper(method, y0, &ImplicitOptions::default()).unwrap();
-            (s, d.stages as u64, d.stages as u64)
-        }
+        Method::Tableau(d) => (stepper.unwrap(), d.stages as u64, d.stages as u64),
+        other => panic!("{} is not a catalog method", other.name()),
     };
     let sol = Driver::fixed(scene.run.dt)
         .run(model, &mut stepper, 0.0, y0, scene.run.dt * steps as f64)

@@ -1,7 +1,7 @@
 //! The second-order form `q'' = F(t, q)`.
 
 use crate::flows::QuadraticKinetic;
-use crate::{Hamiltonian, Real, State};
+use crate::{Families, Hamiltonian, Real, State};
 
 /// A second-order system `q'' = F(t, q)`: a Hamiltonian with unit mass, `p = q'` and a
 /// quadratic kinetic energy, so that every splitting method applies, including those
@@ -54,6 +54,14 @@ impl<S: SecondOrder> Hamiltonian for S {
 
     fn energy(&self, t: Self::Scalar, q: &[Self::Scalar], p: &[Self::Scalar]) -> Option<Self::Scalar> {
         SecondOrder::energy(self, t, q, p)
+    }
+
+    /// Every splitting and composition: the kinetic energy is `|v|^2 / 2`.
+    fn families(&self) -> Families<Self>
+    where
+        Self: 'static,
+    {
+        Families::all_splittings()
     }
 }
 

@@ -4,7 +4,7 @@ use super::{halves, halves_mut};
 use crate::flows::Splittable;
 #[allow(unused_imports)]
 use crate::real::ops::*;
-use crate::{Problem, Real, State};
+use crate::{Families, Problem, Real, State};
 
 /// A separable Hamiltonian `H = T(p) + V(q)`, possibly time-dependent through `V`.
 ///
@@ -61,6 +61,16 @@ pub trait Hamiltonian {
     fn energy(&self, _t: Self::Scalar, _q: &[Self::Scalar], _p: &[Self::Scalar]) -> Option<Self::Scalar> {
         None
     }
+
+    /// The families of methods the problem admits ([`Problem::families`]): every general
+    /// splitting and composition. A Hamiltonian whose kinetic energy is quadratic (it
+    /// implements [`crate::QuadraticKinetic`]) returns [`Families::all_splittings`].
+    fn families(&self) -> Families<Self>
+    where
+        Self: Sized + 'static,
+    {
+        Families::general_splittings()
+    }
 }
 
 impl<H: Hamiltonian> Problem for H {
@@ -78,6 +88,13 @@ impl<H: Hamiltonian> Problem for H {
     fn energy(&self, t: Self::Scalar, y: &Self::State) -> Option<Self::Scalar> {
         let (q, p) = halves(y.as_slice());
         Hamiltonian::energy(self, t, q, p)
+    }
+
+    fn families(&self) -> Families<Self>
+    where
+        Self: 'static,
+    {
+        Hamiltonian::families(self)
     }
 }
 

@@ -3,7 +3,7 @@
 use super::gyration::{cross, Gyration, GyrationCache};
 use crate::flows::Splittable;
 use crate::hamiltonian::{halves, halves_mut};
-use crate::{Problem, Real, State};
+use crate::{Families, Problem, Real, State};
 
 /// Particles in 3-D moving under `q' = v`, `v' = a(t, q) + omega_k(q) x v` for particle
 /// `k`: a force field `a` (electric field, potential forces between particles, gravity)
@@ -88,6 +88,15 @@ impl<L: Lorentz> Problem for Charged<L> {
     fn energy(&self, t: Self::Scalar, y: &Self::State) -> Option<Self::Scalar> {
         let (q, v) = halves(y.as_slice());
         self.0.energy(t, q, v)
+    }
+
+    /// The charged-particle pushers, and the general splittings when the field is uniform
+    /// ([`Families::charged`]).
+    fn families(&self) -> Families<Self>
+    where
+        Self: 'static,
+    {
+        Families::charged(self.0.uniform())
     }
 }
 

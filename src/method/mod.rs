@@ -1,5 +1,6 @@
 //! Methods as data: Butcher tableaus, splittings and compositions.
 
+mod any_method;
 mod butcher;
 mod file;
 mod info;
@@ -7,6 +8,7 @@ mod splitting;
 mod splitting_file;
 mod tableau;
 
+pub use any_method::{looks_like_path, Method, StepperResult};
 pub use butcher::{ButcherMethod, ExplicitMethod};
 pub use info::{Flags, MethodInfo, TableauData};
 pub use splitting::{Splitting, SplittingData, SplittingMethod};

@@ -5,7 +5,7 @@ use super::nbody_shape::{AnyShape, Shape};
 use super::orbit::Orbit;
 #[allow(unused_imports)]
 use crate::real::ops::*;
-use crate::{lit, to_f64, Error, Hamiltonian, QuadraticKinetic, Real, State};
+use crate::{lit, to_f64, Error, Families, Hamiltonian, QuadraticKinetic, Real, State};
 use core::marker::PhantomData;
 
 /// `n` bodies attracting each other by Newtonian gravity in `dim` dimensions, on
@@ -442,6 +442,14 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> Hamiltonian for NBody<T, S, K> {
             }
         }
         Some(kinetic + potential)
+    }
+
+    /// Every splitting and composition: the kinetic energy `sum |p_k|^2 / (2 m_k)` is quadratic.
+    fn families(&self) -> Families<Self>
+    where
+        Self: 'static,
+    {
+        Families::all_splittings()
     }
 }
 

@@ -3,8 +3,8 @@
 
 use super::order::slope;
 use super::problems::TreeSystem;
-use super::{OrderMeasurement, Sample, Scheme};
-use crate::{lit, to_f64, Error, ImplicitOptions, Real};
+use super::{OrderMeasurement, Sample};
+use crate::{lit, to_f64, Error, ImplicitOptions, Method, Real};
 use nalgebra::DVector;
 
 /// The integration interval is `[T0, -T0]`.
@@ -80,16 +80,16 @@ impl Default for GlobalOrderOptions {
 /// kinetic energy, Verner's pairs, built to make those coefficients small, measure 7.01,
 /// 7.25, 8.28 and 9.41 for orders 6 to 9: the next term dominates down to round-off.
 ///
-/// Implicit tableaus run with [`ImplicitOptions::fixed_point`] whatever the scheme was
-/// given: the stage equations of the tree system are triangular (a component depends on
+/// Implicit tableaus run with [`ImplicitOptions::fixed_point`] whatever solver the caller
+/// uses elsewhere: the stage equations of the tree system are triangular (a component depends on
 /// smaller trees only), so the iteration is exact after at most `max_order` sweeps, at any
 /// step. A splitting or composition is an error (the tree system is not Hamiltonian). A
 /// run that fails or leaves the finite numbers is skipped before the first counted run and
 /// ends the refinement after it.
 ///
 /// ```
-/// use stormer::verify::{measure_global_order, GlobalOrderOptions, Precision, Scheme};
-/// let verner6 = Scheme::named("verner6").unwrap();
+/// use stormer::verify::{measure_global_order, GlobalOrderOptions, Precision};
+/// let verner6 = stormer::Method::named("verner6").unwrap();
 /// let m = measure_global_order(&verner6, 6, Precision::F64, &GlobalOrderOptions::default()).unwrap();
 /// assert!((m.order - 6.0).abs() < 0.2, "{}", m.order);
 /// // claimed of order 5: the trees up to order 6 are integrated exactly, no error is
@@ -97,26 +97,25 @@ impl Default for GlobalOrderOptions {
 /// assert!(measure_global_order(&verner6, 5, Precision::F64, &GlobalOrderOptions::default()).is_err());
 /// ```
 pub fn measure_global_order(
-    scheme: &Scheme,
+    method: &Method,
     order: usize,
     precision: Precision,
     options: &GlobalOrderOptions,
 ) -> Result<OrderMeasurement, Error> {
     check(options)?;
-    if scheme.tableau().is_none() {
+    if method.tableau().is_none() {
         return Err(Error::invalid(
             "measured order",
             "the tree system measures Butcher tableaus, not splittings or compositions",
         ));
     }
-    let scheme = scheme.clone().with_implicit(ImplicitOptions::fixed_point());
     let system = TreeSystem::<f64>::for_order(order);
     let ratio = f64::EPSILON / f64::from(f32::EPSILON);
     let mut samples: Vec<Sample> = Vec::new();
     let mut counted = 0;
     for n in step_counts(options.max_steps) {
         let h = dyadic_step(n);
-        let runs = run::<f64>(&scheme, &system, n, h).and_then(|y64| Ok((y64, run::<f32>(&scheme, &system, n, h)?)));
+        let runs = run::<f64>(method, &system, n, h).and_then(|y64| Ok((y64, run::<f32>(method, &system, n, h)?)));
         let Ok((y64, y32)) = runs else {
             if counted == 0 {
                 continue;
@@ -184,10 +183,10 @@ fn dyadic_step(n: usize) -> f64 {
 }
 
 /// The state after `n` steps of `h` from the exact `z(T0)` in precision `T`, in `f64`.
-fn run<T: Real>(scheme: &Scheme, system: &TreeSystem<f64>, n: usize, h: f64) -> Result<DVector<f64>, Error> {
+fn run<T: Real>(method: &Method, system: &TreeSystem<f64>, n: usize, h: f64) -> Result<DVector<f64>, Error> {
     let problem = system.with_scalar::<T>();
     let y0 = problem.exact(lit::<T>(T0));
-    let mut stepper = scheme.stepper_any::<TreeSystem<T>>(&y0)?;
+    let mut stepper = method.stepper_for(&problem, &y0, &ImplicitOptions::fixed_point())?;
     let (mut y, mut next) = (y0.clone(), y0);
     let step: T = lit(h);
     for i in 0..n {

@@ -12,8 +12,8 @@
 //! - [`measure_global_order`]: for a Butcher tableau, the slope of the global error on
 //!   Butcher's tree system ([`problems::TreeSystem`]), above its estimated rounding error;
 //!
-//! [`report`] runs all of them on a [`Scheme`] (a method of any family, catalog or
-//! user-made) over the nonlinear test problems of [`problems`]; it is what
+//! [`report`] runs all of them on a [`crate::Method`] (a method of any family, catalog
+//! or user-made) over the nonlinear test problems of [`problems`]; it is what
 //! `stormer verify` prints. `docs/verification.md` explains the checks, their bounds and
 //! the measurements behind them.
 
@@ -24,7 +24,6 @@ mod order;
 pub mod problems;
 mod report;
 mod reversibility;
-mod scheme;
 mod structure;
 
 pub use dual::{jacobian_dual, DualScalar};
@@ -36,7 +35,6 @@ pub use num_dual::{Dual32, Dual64};
 pub use order::{measure_order, reference_flow, OrderMeasurement, OrderOptions, Sample};
 pub use report::{report, Case, Check, OrderError, Report, REVERSIBLE_FACTOR, SYMPLECTIC_FACTOR};
 pub use reversibility::reversibility_defect;
-pub use scheme::Scheme;
 pub use structure::{defect_bound, symplectic_defect, Canonical, Structure};
 
 #[allow(unused_imports)]

@@ -4,10 +4,9 @@
 use super::problems::{HenonHeiles, Pendulum, QuarticKinetic};
 use super::{
     defect_bound, jacobian_dual, jacobian_fd, measure_global_order, measure_order, reversibility_defect, step_once,
-    symplectic_defect, Canonical, GlobalOrderOptions, OrderMeasurement, OrderOptions, Precision, Scheme,
+    symplectic_defect, Canonical, GlobalOrderOptions, OrderMeasurement, OrderOptions, Precision,
 };
-use crate::flows::Splittable;
-use crate::{lit, Error, MethodInfo, Real, Stepper};
+use crate::{lit, Error, ImplicitOptions, Method, MethodInfo, Problem};
 use num_dual::Dual64;
 use stormer_order::stability::Interval;
 
@@ -78,7 +77,7 @@ pub struct Report {
     /// (on the tree system of the embedded order).
     pub embedded_order: Option<Result<OrderMeasurement, Error>>,
     /// The linear stability interval on the imaginary axis, from the coefficients
-    /// ([`Scheme::stability_interval`]): the largest `h omega` at which a step does not
+    /// ([`Method::stability_interval`]): the largest `h omega` at which a step does not
     /// grow on the harmonic oscillator `q'' = -omega^2 q`.
     pub stability: Interval,
     /// `max |J^T S J - S|` with the exact (dual-number) Jacobian.
@@ -97,7 +96,7 @@ const STEPS: [f64; 2] = [0.1, 0.4];
 const PENDULUM_STATES: [[f64; 2]; 2] = [[1.0, 0.5], [-2.0, 0.8]];
 const PLANAR_STATES: [[f64; 4]; 2] = [[0.1, -0.2, 0.3, 0.2], [-0.2, 0.25, 0.1, -0.35]];
 
-/// Runs every check on `scheme`: the measured order (for a Butcher tableau, of the main
+/// Runs every check on `method` (implicit tableaus with [`ImplicitOptions::newton`]): the measured order (for a Butcher tableau, of the main
 /// and the embedded solution from the global error on the tree system,
 /// [`measure_global_order`]; for a splitting or composition, from the centred local error,
 /// [`measure_order`], on [`QuarticKinetic`] for a general method, [`HenonHeiles`] for one
@@ -107,30 +106,30 @@ const PLANAR_STATES: [[f64; 4]; 2] = [[0.1, -0.2, 0.3, 0.2], [-0.2, 0.25, 0.1, -
 /// `h = 0.1, 0.4`.
 ///
 /// ```
-/// use stormer::verify::{report, Scheme};
-/// let r = report(&Scheme::named("rk4").unwrap()).unwrap();
+/// use stormer::{verify::report, Method};
+/// let r = report(&Method::named("rk4").unwrap()).unwrap();
 /// assert!((r.order.unwrap().order - 4.0).abs() < 0.2);
 /// assert!(!r.symplectic.holds && !r.reversible.holds);
 /// ```
-pub fn report(scheme: &Scheme) -> Result<Report, Error> {
-    let general = !scheme.requires_quadratic_kinetic();
+pub fn report(method: &Method) -> Result<Report, Error> {
+    let general = !method.requires_quadratic_kinetic();
     let mut cases: Vec<Outcome> = Vec::new();
     for y in PENDULUM_STATES {
         for h in STEPS {
-            cases.push(case::<Pendulum<f64>, Pendulum<Dual64>, 2>(scheme, "pendulum", y, h)?);
+            cases.push(case::<Pendulum<f64>, Pendulum<Dual64>, 2>(method, "pendulum", y, h)?);
         }
     }
     for y in PLANAR_STATES {
         for h in STEPS {
             cases.push(case::<HenonHeiles<f64>, HenonHeiles<Dual64>, 4>(
-                scheme,
+                method,
                 "henon_heiles",
                 y,
                 h,
             )?);
             if general {
                 cases.push(case::<QuarticKinetic<f64>, QuarticKinetic<Dual64>, 4>(
-                    scheme,
+                    method,
                     "quartic_kinetic",
                     y,
                     h,
@@ -159,20 +158,20 @@ pub fn report(scheme: &Scheme) -> Result<Report, Error> {
     let symplectic = worst(|c| (c.symplectic, c.symplectic_bound));
     let reversible = worst(|c| (c.reversibility, c.reversibility_bound));
     let symplectic_defect_central = cases.iter().map(|c| c.central).fold(0.0, f64::max);
-    let tableau = scheme.tableau().transpose()?;
-    let global = |scheme: &Scheme, order: usize| {
-        measure_global_order(scheme, order, Precision::F64, &GlobalOrderOptions::default())
+    let tableau = method.tableau().transpose()?;
+    let global = |method: &Method, order: usize| {
+        measure_global_order(method, order, Precision::F64, &GlobalOrderOptions::default())
     };
     let (order, order_problem, order_error) = if tableau.is_some() {
-        (global(scheme, scheme.info().order), "tree_system", OrderError::Global)
+        (global(method, method.info().order), "tree_system", OrderError::Global)
     } else if general {
         let y = QuarticKinetic::<f64>::initial();
-        let mut stepper = scheme.stepper::<QuarticKinetic<f64>>(&y)?;
+        let mut stepper = method.stepper_for(&QuarticKinetic::new(), &y, &ImplicitOptions::newton())?;
         let m = measure_order(&mut stepper, &QuarticKinetic::new(), 0.0, &y, &OrderOptions::default());
         (m, "quartic_kinetic", OrderError::CentredLocal)
     } else {
         let y = HenonHeiles::<f64>::initial();
-        let mut stepper = scheme.stepper_quadratic::<HenonHeiles<f64>>(&y)?;
+        let mut stepper = method.stepper_for(&HenonHeiles::new(), &y, &ImplicitOptions::newton())?;
         let m = measure_order(&mut stepper, &HenonHeiles::new(), 0.0, &y, &OrderOptions::default());
         (m, "henon_heiles", OrderError::CentredLocal)
     };
@@ -180,7 +179,7 @@ pub fn report(scheme: &Scheme) -> Result<Report, Error> {
         Some(embedded) => {
             let embedded = embedded?;
             let order = embedded.order();
-            Some(global(&Scheme::from(embedded), order))
+            Some(global(&Method::from(embedded), order))
         }
         None => None,
     };
@@ -188,12 +187,12 @@ pub fn report(scheme: &Scheme) -> Result<Report, Error> {
         .as_ref()
         .map(|t| stormer_order::tableau::symplectic_residual(t.a(), t.b()));
     Ok(Report {
-        info: scheme.info(),
+        info: method.info(),
         order,
         order_problem,
         order_error,
         embedded_order,
-        stability: scheme.stability_interval(),
+        stability: method.stability_interval(),
         symplectic,
         symplectic_defect_central,
         reversible,
@@ -211,43 +210,20 @@ struct Outcome {
     reversibility_bound: f64,
 }
 
-/// A test problem knows which stepper constructor applies to it: every method on the
-/// quadratic kinetic energies, general methods only on [`QuarticKinetic`].
-trait TestProblem: Splittable + Default + Sized + 'static {
-    fn build(scheme: &Scheme, y0: &Self::State) -> Result<Box<dyn Stepper<Self>>, Error>;
-}
-
-impl<T: Real> TestProblem for Pendulum<T> {
-    fn build(scheme: &Scheme, y0: &Self::State) -> Result<Box<dyn Stepper<Self>>, Error> {
-        scheme.stepper_quadratic::<Self>(y0)
-    }
-}
-
-impl<T: Real> TestProblem for HenonHeiles<T> {
-    fn build(scheme: &Scheme, y0: &Self::State) -> Result<Box<dyn Stepper<Self>>, Error> {
-        scheme.stepper_quadratic::<Self>(y0)
-    }
-}
-
-impl<T: Real> TestProblem for QuarticKinetic<T> {
-    fn build(scheme: &Scheme, y0: &Self::State) -> Result<Box<dyn Stepper<Self>>, Error> {
-        scheme.stepper::<Self>(y0)
-    }
-}
-
 /// The checks at one problem, state and step. Building the steppers can fail (an RKN
 /// method on a general problem is not asked for); a step that fails (non-finite state, an
 /// implicit solver that does not converge) makes that check fail with an infinite defect,
 /// so that an unstable user method still gets its report.
-fn case<P, D, const N: usize>(scheme: &Scheme, problem: &'static str, y: [f64; N], h: f64) -> Result<Outcome, Error>
+fn case<P, D, const N: usize>(method: &Method, problem: &'static str, y: [f64; N], h: f64) -> Result<Outcome, Error>
 where
-    P: TestProblem + crate::Problem<Scalar = f64, State = [f64; N]>,
-    D: TestProblem + crate::Problem<Scalar = Dual64, State = [Dual64; N]>,
+    P: Problem<Scalar = f64, State = [f64; N]> + Default + 'static,
+    D: Problem<Scalar = Dual64, State = [Dual64; N]> + Default + 'static,
 {
     let (p, d) = (P::default(), D::default());
     let yd: [Dual64; N] = y.map(lit);
-    let mut exact = D::build(scheme, &yd)?;
-    let mut plain = P::build(scheme, &y)?;
+    let newton = ImplicitOptions::newton();
+    let mut exact = method.stepper_for(&d, &yd, &newton)?;
+    let mut plain = method.stepper_for(&p, &y, &newton)?;
     let mut y1 = y;
     let stepped = step_once(&mut plain, &p, 0.0, h, &y, &mut y1).is_ok();
     let failed = (f64::INFINITY, SYMPLECTIC_FACTOR * f64::EPSILON);

@@ -8,8 +8,9 @@ use crate::{catalog_report, catalog_reports};
 use num_dual::Dual32;
 use stormer::registry;
 use stormer::verify::problems::Pendulum;
-use stormer::verify::{defect_bound, jacobian_dual, symplectic_defect, Canonical, Scheme, SYMPLECTIC_FACTOR};
+use stormer::verify::{defect_bound, jacobian_dual, symplectic_defect, Canonical, SYMPLECTIC_FACTOR};
 use stormer::{lit, Stepper};
+use stormer::{ImplicitOptions, Method};
 
 /// What `stormer verify --format json` reports as `measured_order` (and
 /// `measured_embedded_order`) is within 0.2 of the declared order, for all 89 methods of
@@ -116,8 +117,10 @@ fn defects_scale_with_the_scalars_epsilon() {
         ("gauss_legendre4", true),
         ("rk4", false),
     ] {
-        let mut stepper: Box<dyn Stepper<Pendulum<Dual32>>> =
-            Scheme::named(name).unwrap().stepper_quadratic(&y).unwrap();
+        let mut stepper: Box<dyn Stepper<Pendulum<Dual32>>> = Method::named(name)
+            .unwrap()
+            .stepper_for(&p, &y, &ImplicitOptions::newton())
+            .unwrap();
         let j = jacobian_dual(&mut stepper, &p, 0.0f32, 1.0, &y).unwrap();
         let mut y1 = y;
         stepper.reset();

@@ -7,7 +7,8 @@
 
 use num_dual::Dual64;
 use stormer::verify::problems::Pendulum;
-use stormer::verify::{defect_bound, jacobian_dual, symplectic_defect, Canonical, Scheme, SYMPLECTIC_FACTOR};
+use stormer::verify::{defect_bound, jacobian_dual, symplectic_defect, Canonical, SYMPLECTIC_FACTOR};
+use stormer::Method;
 use stormer::{lit, ImplicitOptions, Stepper};
 
 #[test]
@@ -18,8 +19,9 @@ fn implicit_solvers_converge_the_derivative_at_and_near_equilibria() {
             for y in [[0.0, 0.0], [1e-9, 0.0], [1e-5, 1e-5], [1.0, 0.5]] {
                 for h in [0.01, 0.2, 0.8] {
                     let yd: [Dual64; 2] = y.map(lit);
-                    let scheme = Scheme::named(name).unwrap().with_implicit(options);
-                    let mut stepper: Box<dyn Stepper<Pendulum<Dual64>>> = scheme.stepper_quadratic(&yd).unwrap();
+                    let method = Method::named(name).unwrap();
+                    let mut stepper: Box<dyn Stepper<Pendulum<Dual64>>> =
+                        method.stepper_for(&p, &yd, &options).unwrap();
                     let j = jacobian_dual(&mut stepper, &p, 0.0, h, &yd).unwrap();
                     let mut y1 = yd;
                     stepper.reset();

@@ -13,7 +13,8 @@ mod symplectic;
 
 use std::sync::OnceLock;
 use stormer::registry;
-use stormer::verify::{report, Report, Scheme};
+use stormer::verify::{report, Report};
+use stormer::Method;
 
 /// `stormer::verify::report` (what `stormer verify` prints) of every catalog method, in
 /// the order of `registry::names()`: computed once for the tests that read it.
@@ -21,7 +22,7 @@ pub fn catalog_reports() -> &'static [Report] {
     static REPORTS: OnceLock<Vec<Report>> = OnceLock::new();
     REPORTS.get_or_init(|| {
         registry::names()
-            .map(|name| report(&Scheme::named(name).unwrap()).unwrap())
+            .map(|name| report(&Method::named(name).unwrap()).unwrap())
             .collect()
     })
 }

@@ -6,23 +6,30 @@
 
 use stormer::registry;
 use stormer::verify::problems::{HenonHeiles, QuarticKinetic};
-use stormer::verify::{measure_order, OrderOptions, Scheme};
+use stormer::verify::{measure_order, OrderOptions};
+use stormer::{ImplicitOptions, Method};
+
+fn method(name: &str) -> Method {
+    Method::named(name).unwrap()
+}
+
+fn newton() -> ImplicitOptions {
+    ImplicitOptions::newton()
+}
 use stormer::{RuntimeSplitting, Splitting};
 
 const TOLERANCE: f64 = 0.2;
 
 fn general(name: &str) -> f64 {
-    let scheme = Scheme::named(name).unwrap();
     let y = QuarticKinetic::<f64>::initial();
-    let mut stepper = scheme.stepper::<QuarticKinetic<f64>>(&y).unwrap();
+    let mut stepper = method(name).stepper_for(&QuarticKinetic::new(), &y, &newton()).unwrap();
     let m = measure_order(&mut stepper, &QuarticKinetic::new(), 0.0, &y, &OrderOptions::default());
     m.unwrap_or_else(|e| panic!("{name}: {e}")).order
 }
 
 fn quadratic(name: &str) -> f64 {
-    let scheme = Scheme::named(name).unwrap();
     let y = HenonHeiles::<f64>::initial();
-    let mut stepper = scheme.stepper_quadratic::<HenonHeiles<f64>>(&y).unwrap();
+    let mut stepper = method(name).stepper_for(&HenonHeiles::new(), &y, &newton()).unwrap();
     let m = measure_order(&mut stepper, &HenonHeiles::new(), 0.0, &y, &OrderOptions::default());
     m.unwrap_or_else(|e| panic!("{name}: {e}")).order
 }

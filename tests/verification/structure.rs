@@ -11,9 +11,9 @@ use core::marker::PhantomData;
 use nalgebra::DMatrix;
 use stormer::magnetic::{Charged, Lorentz};
 use stormer::verify::{
-    defect_bound, jacobian_dual, symplectic_defect, Canonical, Dual64, Scheme, Structure, SYMPLECTIC_FACTOR,
+    defect_bound, jacobian_dual, symplectic_defect, Canonical, Dual64, Structure, SYMPLECTIC_FACTOR,
 };
-use stormer::{lit, Real, Stepper};
+use stormer::{lit, ImplicitOptions, Method, Real, Stepper};
 
 const OMEGA: [f64; 3] = [0.3, -0.2, 1.1];
 
@@ -68,7 +68,10 @@ fn defects(name: &str, y: [f64; 6], h: f64) -> (f64, f64) {
     type P = Charged<Trap<Dual64>>;
     let p = Charged(Trap::<Dual64>::default());
     let yd: [Dual64; 6] = y.map(lit);
-    let mut stepper: Box<dyn Stepper<P>> = Scheme::named(name).unwrap().stepper(&yd).unwrap();
+    let mut stepper: Box<dyn Stepper<P>> = Method::named(name)
+        .unwrap()
+        .stepper_for(&p, &yd, &ImplicitOptions::newton())
+        .unwrap();
     let j = jacobian_dual(&mut stepper, &p, 0.0, h, &yd).unwrap();
     let mut y1 = yd;
     stepper.reset();

@@ -19,10 +19,11 @@
 
 use num_dual::Dual64;
 use proptest::prelude::*;
-use stormer::flows::{QuadraticKinetic, Splittable};
+use stormer::flows::Splittable;
 use stormer::verify::problems::{HenonHeiles, Pendulum, QuarticKinetic};
-use stormer::verify::{defect_bound, jacobian_dual, symplectic_defect, Canonical, Scheme, SYMPLECTIC_FACTOR};
+use stormer::verify::{defect_bound, jacobian_dual, symplectic_defect, Canonical, SYMPLECTIC_FACTOR};
 use stormer::{lit, Error, Stepper};
+use stormer::{ImplicitOptions, Method};
 
 /// A random case: a state of each problem and a step.
 #[derive(Debug, Clone)]
@@ -63,17 +64,21 @@ where
     Ok(symplectic_defect(&j, &Canonical, &y, &y1) / defect_bound(&j, 1.0))
 }
 
-fn quadratic<P, const N: usize>(scheme: &Scheme, y: [f64; N], h: f64) -> Result<f64, Error>
+fn quadratic<P, const N: usize>(method: &Method, y: [f64; N], h: f64) -> Result<f64, Error>
 where
-    P: QuadraticKinetic<Scalar = Dual64, State = [Dual64; N]> + Default + 'static,
+    P: Splittable<Scalar = Dual64, State = [Dual64; N]> + Default + 'static,
 {
-    defect::<P, N>(scheme.stepper_quadratic::<P>(&y.map(lit))?, y, h)
+    defect::<P, N>(
+        method.stepper_for(&P::default(), &y.map(lit), &ImplicitOptions::newton())?,
+        y,
+        h,
+    )
 }
 
 /// The defects (in units of `eps max(1, |J|)^2`) on the pendulum, Henon-Heiles and, for
 /// a general method, the quartic kinetic energy.
 fn defects(name: &str, case: &Case, general: bool) -> Result<Vec<f64>, Error> {
-    let scheme = Scheme::named(name)?;
+    let scheme = Method::named(name)?;
     let mut d = vec![
         quadratic::<Pendulum<Dual64>, 2>(&scheme, case.pendulum, case.h)?,
         quadratic::<HenonHeiles<Dual64>, 4>(&scheme, case.planar, case.h)?,
@@ -81,7 +86,7 @@ fn defects(name: &str, case: &Case, general: bool) -> Result<Vec<f64>, Error> {
     if general {
         let y = case.planar.map(lit);
         d.push(defect::<QuarticKinetic<Dual64>, 4>(
-            scheme.stepper::<QuarticKinetic<Dual64>>(&y)?,
+            scheme.stepper_for(&QuarticKinetic::default(), &y, &ImplicitOptions::newton())?,
             case.planar,
             case.h,
         )?);

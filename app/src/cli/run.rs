@@ -1,6 +1,6 @@
 //! `stormer run SCENE`: integrate a scene, stream the records to CSV, summarize on stderr.
 
-use super::choice::MethodChoice;
+use super::choice;
 use super::output::{file_safe, CsvRecorder};
 use anyhow::anyhow;
 use std::io::Write;
@@ -27,7 +27,7 @@ pub struct RunArgs {
     /// [default: the scene's].
     #[arg(long, value_name = "N")]
     pub every: Option<u64>,
-    /// Output CSV file [default: out/<scene>-<method>.csv].
+    /// Output CSV file [default: out/SCENE-METHOD.csv].
     #[arg(long, short, value_name = "FILE.csv")]
     pub out: Option<PathBuf>,
     /// Relative tolerance: adaptive steps (methods with an embedded pair); the other
@@ -116,7 +116,7 @@ impl SceneVisitor for Runner<'_> {
     fn visit<S: Scene>(self, setup: Setup<S>) -> anyhow::Result<()> {
         let args = self.args;
         let method_name = args.method.as_deref().unwrap_or(&setup.run.method);
-        let method = MethodChoice::resolve(method_name, args.alpha)?;
+        let method = choice::resolve(method_name, args.alpha)?;
         let mut implicit = match args.solver {
             Some(SolverArg::Newton) => ImplicitOptions::newton(),
             Some(SolverArg::FixedPoint) | None => ImplicitOptions::fixed_point(),
@@ -124,7 +124,7 @@ impl SceneVisitor for Runner<'_> {
         if let Some(n) = args.max_iterations {
             implicit.max_iterations = n;
         }
-        let mut stepper = method.stepper::<S>(&setup.model, &setup.y0, &implicit)?;
+        let mut stepper = method.stepper_for(&setup.model, &setup.y0, &implicit)?;
         if args.compensated {
             // refused here, before an output file is created (the driver turns it on too)
             stepper.set_compensated(true)?;
@@ -135,7 +135,7 @@ impl SceneVisitor for Runner<'_> {
         let control = if adaptive {
             if stepper.error_order().is_none() {
                 return Err(Error::Unsupported {
-                    name: method.label(),
+                    name: method.name().to_string(),
                     reason: "it has no embedded error estimate, which adaptive steps (--rtol/--atol) need; \
                              use fixed steps (--dt), or a method with an embedded order (`stormer methods`)"
                         .into(),
@@ -153,7 +153,7 @@ impl SceneVisitor for Runner<'_> {
             StepControl::Fixed(args.dt.unwrap_or(setup.run.dt))
         };
         let path = args.out.clone().unwrap_or_else(|| {
-            PathBuf::from("out").join(format!("{}-{}.csv", file_safe(&setup.name), file_safe(&method.label())))
+            PathBuf::from("out").join(format!("{}-{}.csv", file_safe(&setup.name), file_safe(method.name())))
         });
         let mut driver = Driver::with(control).every(every).cancel_when(super::interrupt::flag());
         if args.compensated {
@@ -207,7 +207,7 @@ impl SceneVisitor for Runner<'_> {
             None => format!("no {} before t = {t_end}", stop.event),
         });
         let summary = summary(
-            &format!("{} on {}", method.label(), setup.name),
+            &format!("{} on {}", method.name(), setup.name),
             &stats,
             adaptive,
             &csv,
@@ -216,7 +216,7 @@ impl SceneVisitor for Runner<'_> {
         );
         // The summary is information, not output: a closed stderr is not an error.
         let _ = writeln!(std::io::stderr(), "{summary}");
-        let pictures = super::pictures::draw_run(&path, &setup.name, &method.label())?;
+        let pictures = super::pictures::draw_run(&path, &setup.name, method.name())?;
         let names: Vec<String> = pictures.iter().map(|p| p.display().to_string()).collect();
         let _ = writeln!(std::io::stderr(), "pictures: {}", names.join(", "));
         Ok(())

@@ -1,7 +1,7 @@
 //! `stormer tour`: the experiments of SCENES.md in one run, each with its pictures and a
 //! verdict line computed from the runs, gathered in `index.html` and `summary.md`.
 
-use super::choice::MethodChoice;
+use super::choice;
 use super::plot::{draw, Chart, Scale, Series};
 use anyhow::Context;
 use std::fmt::Write as _;
@@ -128,8 +128,8 @@ impl SceneVisitor for Sim<'_> {
     type Output = anyhow::Result<Trace>;
 
     fn visit<S: Scene>(self, setup: Setup<S>) -> anyhow::Result<Trace> {
-        let method = MethodChoice::resolve(self.method, self.alpha)?;
-        let mut stepper = method.stepper::<S>(&setup.model, &setup.y0, &ImplicitOptions::fixed_point())?;
+        let method = choice::resolve(self.method, self.alpha)?;
+        let mut stepper = method.stepper_for(&setup.model, &setup.y0, &ImplicitOptions::fixed_point())?;
         let (t0, t_end) = (setup.run.t0, self.t_end.unwrap_or(setup.run.t_end));
         let mut driver = Driver::with(StepControl::Fixed(self.dt.unwrap_or(setup.run.dt)))
             .every(self.every.unwrap_or(setup.run.every));

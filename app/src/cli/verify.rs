@@ -3,15 +3,13 @@
 //! splitting or composition, its consistency conditions (`verify_splitting`); for both,
 //! the numerical checks of `stormer::verify` (`verify_checks`).
 
-use super::choice::MethodChoice;
 use super::output::{print, yes_no};
 use super::verify_checks::{self, JsonChecks};
 use super::{verify_splitting, TextFormat};
 use std::fmt::Write as _;
 use stormer::order::{achieved_order, DEFAULT_TOLERANCE, MAX_ORDER};
-use stormer::registry::MethodRef;
-use stormer::verify::{self, Scheme};
-use stormer::{Error, Splitting, Tableau};
+use stormer::verify;
+use stormer::{Error, Method, Splitting, Tableau};
 
 /// What `verify` reports about a tableau.
 struct Report {
@@ -225,9 +223,9 @@ struct JsonCondition<'a> {
 }
 
 /// The report of a splitting or composition: its consistency conditions and the checks.
-fn splitting_report(method: Splitting, source: String, scheme: Scheme, format: TextFormat) -> anyhow::Result<String> {
+fn splitting_report(method: Splitting, source: String, scheme: &Method, format: TextFormat) -> anyhow::Result<String> {
     let report = verify_splitting::Report {
-        checks: verify::report(&scheme)?,
+        checks: verify::report(scheme)?,
         method,
         source,
     };
@@ -238,8 +236,8 @@ fn splitting_report(method: Splitting, source: String, scheme: Scheme, format: T
 }
 
 /// The report of a tableau: its order conditions and the checks.
-fn tableau_report(choice: &MethodChoice, source: String, scheme: Scheme, format: TextFormat) -> anyhow::Result<String> {
-    let report = Report::new(choice.tableau()?, source, verify::report(&scheme)?);
+fn tableau_report(tableau: Tableau, source: String, scheme: &Method, format: TextFormat) -> anyhow::Result<String> {
+    let report = Report::new(tableau, source, verify::report(scheme)?);
     Ok(match format {
         TextFormat::Text => report.text(),
         TextFormat::Json => serde_json::to_string_pretty(&report.json())? + "\n",
@@ -248,36 +246,21 @@ fn tableau_report(choice: &MethodChoice, source: String, scheme: Scheme, format:
 
 /// Verifies a catalog method or a method file and prints the report.
 pub fn run(method: &str, format: TextFormat) -> anyhow::Result<()> {
-    let choice = MethodChoice::resolve(method, None)?;
+    let choice = super::choice::resolve(method, None)?;
+    let source = if stormer::method::looks_like_path(method) {
+        method.to_string()
+    } else {
+        "catalog".to_string()
+    };
     let text = match &choice {
-        MethodChoice::Splitting(d) => splitting_report(
-            Splitting::from_data(d)?,
-            "catalog".into(),
-            Scheme::from(MethodRef::Splitting(d)),
-            format,
-        )?,
-        MethodChoice::SplittingFile { method, path } => splitting_report(
-            method.clone(),
-            path.display().to_string(),
-            Scheme::from(method.clone()),
-            format,
-        )?,
-        MethodChoice::File { path, tableau } => tableau_report(
-            &choice,
-            path.display().to_string(),
-            Scheme::from(tableau.clone()),
-            format,
-        )?,
-        MethodChoice::Theta(t) => tableau_report(
-            &choice,
-            "the theta method (alpha = 1/2)".into(),
-            Scheme::from(t.clone()),
-            format,
-        )?,
-        MethodChoice::Catalog(d) => {
-            tableau_report(&choice, "catalog".into(), Scheme::from(MethodRef::Butcher(d)), format)?
+        Method::Splitting(d) => splitting_report(Splitting::from_data(d)?, source, &choice, format)?,
+        Method::RuntimeSplitting(s) => splitting_report(s.clone(), source, &choice, format)?,
+        Method::Tableau(d) => tableau_report(Tableau::from_data(d)?, source, &choice, format)?,
+        Method::RuntimeTableau(t) if stormer::registry::normalize(method) == "theta" => {
+            tableau_report(t.clone(), "the theta method (alpha = 1/2)".into(), &choice, format)?
         }
-        MethodChoice::Particle(m) => {
+        Method::RuntimeTableau(t) => tableau_report(t.clone(), source, &choice, format)?,
+        Method::Particle(m) => {
             return Err(Error::Unsupported {
                 name: m.name().into(),
                 reason: "it is a charged-particle stepper, not catalog data: `stormer verify` checks tableaus, \

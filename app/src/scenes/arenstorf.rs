@@ -4,10 +4,10 @@
 
 use super::central_force_file::{coordinates, AXES};
 use super::file::{Number, Source};
-use super::{general_splitting, Scene, SplittingChoice};
+use super::Scene;
 use serde::Deserialize;
 use stormer::magnetic::{Charged, Lorentz};
-use stormer::{Error, Stepper};
+use stormer::Error;
 
 /// A body of negligible mass moving near two primaries (masses `1 - mu` and `mu`) that
 /// circle their centre of mass, in the frame rotating with them (angular velocity
@@ -206,10 +206,6 @@ impl Scene for Charged<RestrictedThreeBody> {
     /// that ends short of a period reports no error, rather than the start's zero.)
     fn exact(&self, t0: f64, y0: &[f64; 6], t: f64) -> Option<[f64; 6]> {
         whole_periods(self.0.period?, t0, t).filter(|&n| n != 0.0).map(|_| *y0)
-    }
-
-    fn splitting_stepper(&self, method: SplittingChoice<'_>, y0: &[f64; 6]) -> Result<Box<dyn Stepper<Self>>, Error> {
-        general_splitting(method, y0)
     }
 }
 

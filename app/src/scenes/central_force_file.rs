@@ -2,11 +2,11 @@
 //! ([`CentralForce`], the `kepler` and `kepler-e06` scenes).
 
 use super::file::{Number, Source};
-use super::{quadratic_splitting, Scene, SplittingChoice};
+use super::Scene;
 use nalgebra::DVector;
 use serde::Deserialize;
 use stormer::models::{CentralForce, Orbit};
-use stormer::{Error, Stepper};
+use stormer::Error;
 
 /// The `[parameters]` table of a central-force scene.
 #[derive(Debug, Deserialize)]
@@ -89,14 +89,6 @@ impl Scene for CentralForce<f64, DVector<f64>> {
         let (q, p) = stormer::hamiltonian::halves_mut(y.as_mut_slice());
         orbit.state_at(t - t0, q, p);
         Some(y)
-    }
-
-    fn splitting_stepper(
-        &self,
-        method: SplittingChoice<'_>,
-        y0: &DVector<f64>,
-    ) -> Result<Box<dyn Stepper<Self>>, Error> {
-        quadratic_splitting(method, y0)
     }
 }
 

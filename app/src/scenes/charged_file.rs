@@ -19,13 +19,12 @@
 
 use super::file::{Number, Source};
 use super::nbody_file::{checked_name, column};
-use super::{general_splitting, Scene, SplittingChoice};
+use super::Scene;
 use nalgebra::DVector;
 use serde::Deserialize;
 use stormer::magnetic::Charged;
 use stormer::models::{ChargedParticles, MagneticField};
-use stormer::stepper::ParticleMethod;
-use stormer::{Error, Stepper};
+use stormer::Error;
 use toml::Spanned;
 
 /// The model of the `charged-particles` scenes: [`ChargedParticles`] on `DVector` states,
@@ -300,46 +299,6 @@ impl Scene for ChargedScene {
     /// Known for independent particles in uniform fields ([`ChargedParticles::exact_state`]).
     fn exact(&self, t0: f64, y0: &DVector<f64>, t: f64) -> Option<DVector<f64>> {
         self.0.exact_state(y0, t - t0)
-    }
-
-    /// Every general splitting and composition: the drift is the exact gyration, so
-    /// velocity Verlet is the magnetic Verlet. Runge-Kutta-Nystrom methods are refused.
-    fn splitting_stepper(
-        &self,
-        method: SplittingChoice<'_>,
-        y0: &DVector<f64>,
-    ) -> Result<Box<dyn Stepper<Self>>, Error> {
-        let rkn = match method {
-            SplittingChoice::Compiled(d) => d.requires_quadratic_kinetic,
-            SplittingChoice::Runtime(s) => s.requires_quadratic_kinetic(),
-        };
-        if !stormer::magnetic::Lorentz::uniform(&self.0) {
-            // the drift freezes the field at the start of each drift (SCENES.md 5): first
-            // order, and not a flow, so no splitting or composition keeps its order here
-            return Err(Error::Unsupported {
-                name: method.name().to_string(),
-                reason: "the magnetic field of this scene is not uniform, and the splittings' drift (the gyration \
-                         in the field frozen at the start of the drift) is then only first-order accurate and not \
-                         an exact flow: every splitting and composition drops to order 1; use boris (order 2) \
-                         or a Runge-Kutta method such as rk4 or dop853"
-                    .into(),
-            });
-        }
-        if rkn {
-            return Err(Error::Unsupported {
-                name: method.name().to_string(),
-                reason: "it is a Runge-Kutta-Nystrom method, which reaches its order only when the drift is a free \
-                         flight, and the drift of a charged particle is its gyration in the magnetic field; use a \
-                         general splitting or composition (velocity_verlet_kdk is the magnetic Verlet, \
-                         triple_jump4 and kahan_li6 compose it), boris, or a Runge-Kutta method"
-                    .into(),
-            });
-        }
-        general_splitting(method, y0)
-    }
-
-    fn particle_stepper(&self, method: ParticleMethod, y0: &DVector<f64>) -> Result<Box<dyn Stepper<Self>>, Error> {
-        method.stepper(y0)
     }
 }
 

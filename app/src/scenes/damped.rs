@@ -1,9 +1,9 @@
 //! The damped oscillator `x'' = -w0^2 x - (w0/Q) x'` (SCENES.md 2).
 
 use super::file::{Number, Source};
-use super::{not_splittable, OscillatorInitial, Scene, SplittingChoice};
+use super::{OscillatorInitial, Scene};
 use serde::Deserialize;
-use stormer::{Error, Problem, Stepper};
+use stormer::{Error, Families, Problem};
 
 /// The damped oscillator `x'' = -w0^2 x - (w0/Q) x'`, state `[x, v]`.
 ///
@@ -61,6 +61,14 @@ impl Problem for DampedOscillator {
     fn rhs(&self, _t: f64, y: &[f64; 2], dy: &mut [f64; 2]) {
         *dy = [y[1], -self.w0_squared * y[0] - self.damping * y[1]];
     }
+
+    /// Runge-Kutta methods only: friction makes the oscillator non-Hamiltonian.
+    fn families(&self) -> Families<Self> {
+        Families::runge_kutta_only(
+            "the damped oscillator is not a Hamiltonian system: it has friction (the -(w0/Q) v term), so there \
+             are no drift and kick flows to split it into and a symplectic method's guarantees do not apply",
+        )
+    }
 }
 
 /// The `[parameters]` table of a damped-oscillator scene.
@@ -94,15 +102,6 @@ impl Scene for DampedOscillator {
 
     fn components(&self, _y0: &Self::State) -> Vec<String> {
         vec!["x".into(), "v".into()]
-    }
-
-    /// Refused: friction makes the oscillator non-Hamiltonian.
-    fn splitting_stepper(&self, method: SplittingChoice<'_>, _y0: &[f64; 2]) -> Result<Box<dyn Stepper<Self>>, Error> {
-        Err(not_splittable(
-            method.name(),
-            "the damped oscillator is not a Hamiltonian system: it has friction (the -(w0/Q) v term), so there \
-             are no drift and kick flows to split it into and a symplectic method's guarantees do not apply",
-        ))
     }
 
     fn exact(&self, t0: f64, y0: &[f64; 2], t: f64) -> Option<[f64; 2]> {

@@ -2,10 +2,10 @@
 //! the `free-kick` scene).
 
 use super::file::{Number, Source};
-use super::{not_splittable, Scene, SplittingChoice, Stop};
+use super::{Scene, Stop};
 use serde::Deserialize;
 use stormer::magnetic::gyration_coefficients;
-use stormer::{Error, Problem, Stepper};
+use stormer::{Error, Families, Problem};
 
 /// A ball of radius `R` and mass `m`, spinning at `spin` rad/s about the horizontal axis
 /// `y` perpendicular to its (vertical) plane of motion `(x, z)`, `z` up:
@@ -96,6 +96,15 @@ impl Problem for SpinningBall {
     fn energy(&self, _t: f64, y: &[f64; 4]) -> Option<f64> {
         let [_, z, vx, vz] = *y;
         Some(self.mass * (0.5 * (vx * vx + vz * vz) + self.g * z))
+    }
+
+    /// Runge-Kutta methods only: drag makes the ball's flight non-Hamiltonian.
+    fn families(&self) -> Families<Self> {
+        Families::runge_kutta_only(
+            "the spinning ball is not a Hamiltonian system: it has air drag (the -(1/2) rho Cx pi R^2 |v| v \
+             force takes energy), so there are no drift and kick flows to split it into and a symplectic \
+             method's guarantees do not apply",
+        )
     }
 }
 
@@ -191,16 +200,6 @@ impl Scene for SpinningBall {
 
     fn components(&self, _y0: &[f64; 4]) -> Vec<String> {
         ["x", "z", "vx", "vz"].map(String::from).to_vec()
-    }
-
-    /// Refused: drag makes the ball's flight non-Hamiltonian.
-    fn splitting_stepper(&self, method: SplittingChoice<'_>, _y0: &[f64; 4]) -> Result<Box<dyn Stepper<Self>>, Error> {
-        Err(not_splittable(
-            method.name(),
-            "the spinning ball is not a Hamiltonian system: it has air drag (the -(1/2) rho Cx pi R^2 |v| v \
-             force takes energy), so there are no drift and kick flows to split it into and a symplectic \
-             method's guarantees do not apply",
-        ))
     }
 
     /// Without drag (`Cx = 0` or `rho = 0`) the velocity turns at [`SpinningBall::magnus_rate`]

@@ -1,9 +1,9 @@
 //! The harmonic oscillator `x'' = -w0^2 x` (SCENES.md 2).
 
 use super::file::{Number, Source};
-use super::{quadratic_splitting, Scene, SplittingChoice};
+use super::Scene;
 use serde::Deserialize;
-use stormer::{Error, SecondOrder, Stepper};
+use stormer::{Error, SecondOrder};
 
 /// The harmonic oscillator `x'' = -w0^2 x`, state `[x, v]`.
 ///
@@ -94,10 +94,6 @@ impl Scene for Harmonic {
 
     fn components(&self, _y0: &Self::State) -> Vec<String> {
         vec!["x".into(), "v".into()]
-    }
-
-    fn splitting_stepper(&self, method: SplittingChoice<'_>, y0: &[f64; 2]) -> Result<Box<dyn Stepper<Self>>, Error> {
-        quadratic_splitting(method, y0)
     }
 
     fn exact(&self, t0: f64, y0: &[f64; 2], t: f64) -> Option<[f64; 2]> {

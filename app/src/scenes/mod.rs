@@ -23,8 +23,8 @@
 //!
 //! Each model is a [`Problem`] that also implements [`Scene`] (the names of its
 //! components, how its tables are read, its exact solution when there is one, and the
-//! splitting methods it admits). A loaded
-//! file is a [`Setup`]: the model, its initial state and its [`RunSettings`]. Since the
+//! condition that ends its runs); which methods it admits is the problem's own answer
+//! ([`Problem::families`]). A loaded file is a [`Setup`]: the model, its initial state and its [`RunSettings`]. Since the
 //! model is only known at run time, [`AnyScene`] holds one of them and hands it to a
 //! [`SceneVisitor`], whose code is generic over the model:
 //!
@@ -51,7 +51,6 @@ mod free_kick;
 mod harmonic;
 mod nbody_file;
 mod pendulum;
-mod splitting;
 
 pub use arenstorf::{RestrictedThreeBody, ThreeBodyInitial, ThreeBodyParameters};
 pub use builtin::{builtin, load, parse, BuiltinScene, BUILTIN};
@@ -63,22 +62,20 @@ pub use free_kick::{KickInitial, SpinningBall, SpinningBallParameters};
 pub use harmonic::{Harmonic, HarmonicParameters, OscillatorInitial};
 pub use nbody_file::{BodyEntry, GravityParameters};
 pub use pendulum::{NoParameters, Pendulum, PendulumInitial, PENDULUM_PERIOD_45_DEGREES};
-pub use splitting::{general_splitting, not_splittable, quadratic_splitting, SplittingChoice};
 
 use nalgebra::DVector;
 use serde::de::DeserializeOwned;
 use stormer::magnetic::Charged;
 use stormer::models::{CentralForce, NBody};
-use stormer::stepper::ParticleMethod;
-use stormer::{Error, Problem, Stepper};
+use stormer::{Error, Problem};
 
 /// A model of a scene: a problem in `f64` that knows how a scene file describes it.
 ///
 /// The trait gives what the tools around a run need and the [`Problem`] does not: the
 /// names of the state's components (the CSV header), how the file's `[parameters]` and
 /// `[initial]` tables are read and checked, the exact solution where there is one, and
-/// the splitting methods the model admits. Whether the scene has an energy is
-/// [`Problem::energy`]'s answer.
+/// the condition that ends its runs. Whether the scene has an energy, and which methods it
+/// admits, are the problem's answers ([`Problem::energy`], [`Problem::families`]).
 pub trait Scene: Problem<Scalar = f64> + Sized + 'static {
     /// The `model = "..."` name in scene files.
     const MODEL: &'static str;
@@ -116,39 +113,6 @@ pub trait Scene: Problem<Scalar = f64> + Sized + 'static {
     /// ([`Driver::stop_when`](stormer::Driver::stop_when)).
     fn stop(&self) -> Option<Stop<Self>> {
         None
-    }
-
-    /// A stepper for the splitting or composition `method` on this model, or the sentence
-    /// saying why the model does not admit one and what to use instead.
-    ///
-    /// The default refuses ([`not_splittable`]): a model that is a Hamiltonian returns
-    /// [`quadratic_splitting`] or [`general_splitting`], according to its kinetic energy.
-    fn splitting_stepper(
-        &self,
-        method: SplittingChoice<'_>,
-        _y0: &Self::State,
-    ) -> Result<Box<dyn Stepper<Self>>, Error> {
-        Err(not_splittable(
-            method.name(),
-            &format!(
-                "the {} model does not declare drift and kick sub-flows (it is not set up as a Hamiltonian)",
-                Self::MODEL
-            ),
-        ))
-    }
-
-    /// A charged-particle stepper (Boris, Euler-Cromer) on this model, or the sentence
-    /// saying why it does not apply. The default refuses: only the `charged-particles`
-    /// model has a magnetic field for them to turn in.
-    fn particle_stepper(&self, method: ParticleMethod, _y0: &Self::State) -> Result<Box<dyn Stepper<Self>>, Error> {
-        Err(Error::Unsupported {
-            name: method.name().to_string(),
-            reason: format!(
-                "it is a charged-particle method, for scenes of the charged-particles model, not of the {} model; \
-                 use a Runge-Kutta method or a splitting (`stormer methods`)",
-                Self::MODEL
-            ),
-        })
     }
 }
 

@@ -17,11 +17,11 @@
 
 use super::central_force_file::{coordinates, AXES};
 use super::file::{Number, Source};
-use super::{quadratic_splitting, Scene, SplittingChoice};
+use super::Scene;
 use nalgebra::DVector;
 use serde::Deserialize;
 use stormer::models::NBody;
-use stormer::{Error, Stepper};
+use stormer::Error;
 use toml::Spanned;
 
 /// The `[parameters]` table of an N-body scene.
@@ -161,14 +161,6 @@ impl Scene for NBody<f64, DVector<f64>> {
     /// Known for two bodies on a bound orbit (the `kepler` scene).
     fn exact(&self, t0: f64, y0: &DVector<f64>, t: f64) -> Option<DVector<f64>> {
         self.two_body_exact(y0, t - t0)
-    }
-
-    fn splitting_stepper(
-        &self,
-        method: SplittingChoice<'_>,
-        y0: &DVector<f64>,
-    ) -> Result<Box<dyn Stepper<Self>>, Error> {
-        quadratic_splitting(method, y0)
     }
 }
 

@@ -1,9 +1,9 @@
 //! The simple pendulum `theta'' = -sin(theta)` (SCENES.md 1).
 
 use super::file::{Number, Source};
-use super::{quadratic_splitting, Scene, SplittingChoice};
+use super::Scene;
 use serde::Deserialize;
-use stormer::{Error, SecondOrder, Stepper};
+use stormer::{Error, SecondOrder};
 
 /// The exact period of the pendulum released at rest from `theta0 = pi/4`, in units of
 /// `sqrt(l/g)`: `4 K(sin^2(pi/8))` (K the complete elliptic integral of the first kind,
@@ -79,10 +79,6 @@ impl Scene for Pendulum {
 
     fn components(&self, _y0: &Self::State) -> Vec<String> {
         vec!["theta".into(), "omega".into()]
-    }
-
-    fn splitting_stepper(&self, method: SplittingChoice<'_>, y0: &[f64; 2]) -> Result<Box<dyn Stepper<Self>>, Error> {
-        quadratic_splitting(method, y0)
     }
 }
 

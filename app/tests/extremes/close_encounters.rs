@@ -3,8 +3,8 @@
 
 use nalgebra::DVector;
 use stormer::models::CentralForce;
-use stormer::{registry, Driver, Solution, Stepper, Tolerances};
-use stormer_app::scenes::{self, AnyScene, Scene, Setup, SplittingChoice};
+use stormer::{Driver, Method, Solution, Stepper, Tolerances};
+use stormer_app::scenes::{self, AnyScene, Setup};
 
 type Kepler = CentralForce<f64, DVector<f64>>;
 
@@ -32,10 +32,8 @@ fn setup() -> Setup<Kepler> {
 }
 
 fn stepper(s: &Setup<Kepler>, name: &str) -> Box<dyn Stepper<Kepler>> {
-    match registry::find_splitting(name) {
-        Ok(d) => s.model.splitting_stepper(SplittingChoice::Compiled(d), &s.y0).unwrap(),
-        Err(_) => registry::stepper::<Kepler>(name, &s.y0, &Default::default()).unwrap(),
-    }
+    let method = Method::resolve(name).unwrap();
+    method.stepper_for(&s.model, &s.y0, &Default::default()).unwrap()
 }
 
 /// max |E - E0| / |E0| over the records: what `stormer run` reports as `max |dE/E0|`.

@@ -18,8 +18,8 @@ use nalgebra::DVector;
 use stormer::magnetic::{Charged, Lorentz};
 use stormer::models::{CentralForce, ChargedParticles, NBody};
 use stormer::stepper::{ParticleMethod, PARTICLE_METHODS};
-use stormer::{lit, registry, Driver, Error, Problem, Real, SecondOrder, State, Stepper, Tolerances};
-use stormer_app::scenes::{self, AnyScene, Scene, Setup, SplittingChoice};
+use stormer::{lit, registry, Driver, Error, Method, Problem, Real, SecondOrder, State, Stepper, Tolerances};
+use stormer_app::scenes::{self, AnyScene, Scene, Setup};
 
 /// Steps per run: enough for round-off to accumulate, few enough for a debug build.
 const STEPS: usize = 100;
@@ -94,23 +94,15 @@ fn f32_stepper<P: Problem<Scalar = f32> + 'static>(twin: &Twin<P>, name: &str) -
         .unwrap();
     }
     match registry::lookup(name).unwrap() {
-        registry::MethodRef::Butcher(_) => registry::stepper::<P>(name, &twin.y0, &Default::default()).unwrap(),
-        registry::MethodRef::Splitting(_) => (twin.splitting)(name, &twin.y0).unwrap(),
+        Method::Splitting(_) => (twin.splitting)(name, &twin.y0).unwrap(),
+        _ => registry::stepper::<P>(name, &twin.y0, &Default::default()).unwrap(),
     }
 }
 
 /// The stepper `stormer run` would use, or `None` when the scene refuses the method.
 fn f64_stepper<S: Scene>(setup: &Setup<S>, name: &str) -> Option<Box<dyn Stepper<S>>> {
-    if let Some(m) = ParticleMethod::find(name) {
-        return setup.model.particle_stepper(m, &setup.y0).ok();
-    }
-    match registry::lookup(name).unwrap() {
-        registry::MethodRef::Butcher(_) => Some(registry::stepper::<S>(name, &setup.y0, &Default::default()).unwrap()),
-        registry::MethodRef::Splitting(d) => setup
-            .model
-            .splitting_stepper(SplittingChoice::Compiled(d), &setup.y0)
-            .ok(),
-    }
+    let method = Method::resolve(name).unwrap();
+    method.stepper_for(&setup.model, &setup.y0, &Default::default()).ok()
 }
 
 /// Runs every method the scene admits, in f64 on the scene's model and in f32 on its twin.

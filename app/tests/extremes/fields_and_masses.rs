@@ -4,9 +4,8 @@
 
 use nalgebra::DVector;
 use stormer::models::NBody;
-use stormer::stepper::ParticleMethod;
-use stormer::{registry, Driver, Error, Stepper};
-use stormer_app::scenes::{self, AnyScene, ChargedScene, Scene, Setup, SplittingChoice};
+use stormer::{registry, Driver, Error, Method, Stepper};
+use stormer_app::scenes::{self, AnyScene, ChargedScene, Setup};
 
 /// The cyclotron scene with field `b` along z: the helix of radius `1/b` (a line at b = 0)
 /// through (0, 1, 0) with velocity (1, 0, 0.1).
@@ -33,13 +32,8 @@ t_end = 100.0
 }
 
 fn charged_stepper(s: &Setup<ChargedScene>, name: &str) -> Box<dyn Stepper<ChargedScene>> {
-    if let Some(m) = ParticleMethod::find(name) {
-        return s.model.particle_stepper(m, &s.y0).unwrap();
-    }
-    match registry::find_splitting(name) {
-        Ok(d) => s.model.splitting_stepper(SplittingChoice::Compiled(d), &s.y0).unwrap(),
-        Err(_) => registry::stepper::<ChargedScene>(name, &s.y0, &Default::default()).unwrap(),
-    }
+    let method = Method::resolve(name).unwrap();
+    method.stepper_for(&s.model, &s.y0, &Default::default()).unwrap()
 }
 
 /// max over the records of `| |v| - |v0| | / |v0|` and of `|y - exact|` (max norm).
@@ -90,7 +84,9 @@ t_end = 10.0
 
 fn nbody_stepper(s: &Setup<NBody<f64, DVector<f64>>>, name: &str) -> Box<dyn Stepper<NBody<f64, DVector<f64>>>> {
     match registry::find_splitting(name) {
-        Ok(d) => s.model.splitting_stepper(SplittingChoice::Compiled(d), &s.y0).unwrap(),
+        Ok(d) => Method::Splitting(d)
+            .stepper_for(&s.model, &s.y0, &Default::default())
+            .unwrap(),
         Err(_) => registry::stepper(name, &s.y0, &Default::default()).unwrap(),
     }
 }

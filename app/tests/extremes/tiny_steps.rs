@@ -2,8 +2,8 @@
 //! rest from x = 10, period 1.405), 10^5 steps. Truncation is far below round-off there
 //! (`(w h)^2 ~ 4e-17`), so what is measured is the round-off of 10^5 steps.
 
-use stormer::{registry, Driver, Stepper};
-use stormer_app::scenes::{self, AnyScene, Harmonic, Scene, Setup, SplittingChoice};
+use stormer::{Driver, Method, Stepper};
+use stormer_app::scenes::{self, AnyScene, Harmonic, Setup};
 
 const STEPS: usize = 100_000;
 
@@ -15,10 +15,8 @@ fn setup() -> Setup<Harmonic> {
 }
 
 fn stepper(s: &Setup<Harmonic>, name: &str) -> Box<dyn Stepper<Harmonic>> {
-    match registry::find_splitting(name) {
-        Ok(d) => s.model.splitting_stepper(SplittingChoice::Compiled(d), &s.y0).unwrap(),
-        Err(_) => registry::stepper::<Harmonic>(name, &s.y0, &Default::default()).unwrap(),
-    }
+    let method = Method::resolve(name).unwrap();
+    method.stepper_for(&s.model, &s.y0, &Default::default()).unwrap()
 }
 
 /// The relative energy error, the error against the exact solution over the records, and

@@ -1,7 +1,7 @@
 //! Planning a study on its scene, the reference solution, and running one job.
 
 use super::{fnv1a, Control, Kind, MethodEntry, ReferenceInfo, Row, StudyId};
-use crate::cli::choice::MethodChoice;
+use crate::cli::choice;
 use crate::cli::output::{file_safe, one_line};
 use anyhow::Context;
 use serde::{Deserialize, Serialize};
@@ -107,9 +107,9 @@ impl SceneVisitor for Planner<'_> {
         }
         let mut methods: Vec<MethodEntry> = Vec::new();
         for given in self.methods {
-            let choice = MethodChoice::resolve(given, None)?;
-            let stepper = choice.stepper::<S>(&setup.model, &setup.y0, &ImplicitOptions::fixed_point())?;
-            let label = choice.label();
+            let method = choice::resolve(given, None)?;
+            let stepper = method.stepper_for(&setup.model, &setup.y0, &ImplicitOptions::fixed_point())?;
+            let label = method.name().to_string();
             if methods.iter().any(|m| m.label == label) {
                 return Err(Error::invalid("--methods", format!("{label} is given twice")));
             }
@@ -339,8 +339,8 @@ impl SceneVisitor for JobRunner<'_> {
         let entry = &study.methods[job.method];
         let (t0, t_end) = (study.t0, study.t_end);
         let span = t_end - t0;
-        let mut stepper = match MethodChoice::resolve(&entry.given, None)
-            .and_then(|c| c.stepper::<S>(&setup.model, &setup.y0, &ImplicitOptions::fixed_point()))
+        let mut stepper = match choice::resolve(&entry.given, None)
+            .and_then(|c| c.stepper_for(&setup.model, &setup.y0, &ImplicitOptions::fixed_point()))
         {
             Ok(s) => s,
             Err(e) => return self.failed(Default::default(), &e),
