@@ -1,4 +1,4 @@
-#![doc = include_str!("../README.md")]
+#![doc = include_str!("../docs/library.md")]
 #![forbid(unsafe_code)]
 
 // The macros expand to `::stormer::...` paths; this makes them resolve inside the crate.
@@ -38,6 +38,15 @@ pub use method::{
 pub use problem::Problem;
 pub use real::{lit, to_f64, Real};
 pub use state::State;
+
+/// The nalgebra the library is built with: use it for dynamic states (`DVector`) and the
+/// user's problems, so that its version always matches.
+pub use nalgebra;
+
+/// The README's examples, compiled and run as doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;
 pub use stepper::{
     ExplicitRk, ImplicitOptions, ImplicitRk, ImplicitSolver, RuntimeRk, RuntimeSplitting, SplittingStepper, Stepper,
     Tolerances,

@@ -7,6 +7,8 @@
 mod adaptive;
 mod event;
 mod record;
+#[cfg(test)]
+mod tests;
 
 pub use record::{Interrupted, Recorder, Solution, Stats, StopEvent};
 
@@ -219,6 +221,7 @@ impl<'a, T: Real, S: State<Scalar = T>> Driver<'a, T, S> {
         };
         let setup = check(t0, "start time")
             .and_then(|_| check(t_end, "end time"))
+            .and_then(|_| self.check_span(t0, t_end))
             .and_then(|_| {
                 if y0.is_finite() {
                     Ok(())
@@ -252,6 +255,34 @@ impl<'a, T: Real, S: State<Scalar = T>> Driver<'a, T, S> {
         match result {
             Ok(stop) => Ok((stats, stop)),
             Err(e) => Err((stats, e)),
+        }
+    }
+
+    /// A run that would compute nothing is an error, not an empty success: an empty span,
+    /// or a fixed step longer than the span (it would be shortened to the span, or rounded
+    /// to zero steps, and the user would not get the step they asked for). The run checks
+    /// this first; a caller may check it before it creates its outputs.
+    pub fn check_span(&self, t0: T, t_end: T) -> Result<(), Error> {
+        let span = t_end - t0;
+        if span == T::zero() {
+            return Err(Error::invalid(
+                "time span",
+                format!(
+                    "empty: the end time equals the start time ({}); give an end time different from the start",
+                    to_f64(t0)
+                ),
+            ));
+        }
+        match self.control {
+            StepControl::Fixed(h) if h.is_finite() && h.abs() > span.abs() => Err(Error::invalid(
+                "step size",
+                format!(
+                    "{:e} is longer than the time span ({:e}): not one whole step fits; give a step at most the span, or a longer span",
+                    to_f64(h.abs()),
+                    to_f64(span.abs())
+                ),
+            )),
+            _ => Ok(()),
         }
     }
 

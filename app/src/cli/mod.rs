@@ -8,6 +8,7 @@ mod pictures;
 mod plot;
 mod progress;
 mod run;
+mod sample;
 mod scene;
 mod study;
 mod tour;
@@ -121,7 +122,8 @@ pub fn main() -> ExitCode {
         Err(e) if output::is_broken_pipe(&e) => ExitCode::SUCCESS,
         Err(e) if e.downcast_ref::<interrupt::StoppedByUser>().is_some() => {
             let _ = writeln!(std::io::stderr(), "{e}");
-            ExitCode::from(interrupt::EXIT_CODE)
+            let code = e.downcast_ref::<interrupt::StoppedByUser>().map(|s| s.signal.exit_code());
+            ExitCode::from(code.unwrap_or(130))
         }
         Err(e) => {
             let _ = writeln!(std::io::stderr(), "error: {}", output::one_line(&format!("{e:#}")));

@@ -4,6 +4,8 @@ use std::fs::File;
 use std::io::{self, BufWriter, Write};
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
+
+pub use super::sample::Sample;
 use stormer::driver::Recorder;
 use stormer::{Error, State};
 use stormer_app::scenes::{Scene, Setup};
@@ -67,6 +69,9 @@ pub fn file_safe(name: &str) -> String {
 /// the number of records, the last time, the largest energy drift and the largest
 /// deviation from the exact solution.
 ///
+/// Each record is handed to the buffer as one whole line, and the buffer hands the OS
+/// only what it holds, whole lines, so the file never ends in a torn row, whatever stops
+/// the process (tests/signals.rs kills runs at random moments, SIGKILL included).
 /// The file is flushed at least every [`FLUSH_INTERVAL`] and always after a whole record,
 /// so that a run stopped from outside, even by a signal the program cannot catch, leaves
 /// at most that much output unwritten, and `tail -f` follows the run.
@@ -74,7 +79,7 @@ pub fn file_safe(name: &str) -> String {
 /// Numbers are written with `{:?}`, Rust's shortest representation that reads back to
 /// the same `f64`, so the file holds the computed values bit for bit.
 pub struct CsvRecorder<'a, S: Scene> {
-    out: BufWriter<File>,
+    out: BufWriter<Box<dyn Write>>,
     path: PathBuf,
     setup: &'a Setup<S>,
     /// Records written.
@@ -83,12 +88,14 @@ pub struct CsvRecorder<'a, S: Scene> {
     pub last_t: Option<f64>,
     /// Energy of the first record.
     pub e0: Option<f64>,
-    /// max |E - E0| over the records.
+    /// max |E - E0| over the records; NaN once an energy is not finite.
     pub max_de: f64,
     /// max over records and components of |y - y_exact|, when there is an exact solution.
     pub max_error: Option<f64>,
     /// The progress bar, when the run has one.
     pub progress: Option<super::progress::Progress>,
+    /// A bounded copy of the records, for the pictures.
+    pub sample: Sample,
     line: String,
     last_flush: Instant,
 }
@@ -97,14 +104,23 @@ pub struct CsvRecorder<'a, S: Scene> {
 pub const FLUSH_INTERVAL: Duration = Duration::from_millis(500);
 
 impl<'a, S: Scene> CsvRecorder<'a, S> {
-    /// Creates the file (and its directory) and writes the header.
+    /// Creates the file (and its directory) and writes the header; the path `-` is stdout.
     pub fn create(path: &Path, setup: &'a Setup<S>) -> Result<Self, Error> {
-        if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
-            std::fs::create_dir_all(dir).map_err(|e| io_error(dir, &e))?;
+        let sink: Box<dyn Write> = if is_stdout(path) {
+            Box::new(io::stdout())
+        } else {
+            if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
+                std::fs::create_dir_all(dir).map_err(|e| io_error(dir, &e))?;
+            }
+            Box::new(File::create(path).map_err(|e| io_error(path, &e))?)
+        };
+        let mut header = vec!["t".to_string()];
+        header.extend(setup.model.components(&setup.y0));
+        if setup.initial_energy().is_some() {
+            header.push("energy".into());
         }
-        let file = File::create(path).map_err(|e| io_error(path, &e))?;
         let mut rec = CsvRecorder {
-            out: BufWriter::new(file),
+            out: BufWriter::new(sink),
             path: path.to_path_buf(),
             setup,
             records: 0,
@@ -113,20 +129,23 @@ impl<'a, S: Scene> CsvRecorder<'a, S> {
             e0: None,
             max_de: 0.0,
             max_error: None,
+            sample: Sample::new(header.clone()),
             line: String::new(),
             last_flush: Instant::now(),
         };
-        let mut header = String::from("t");
-        for c in setup.model.components(&setup.y0) {
-            header.push(',');
-            header.push_str(&c);
-        }
-        if setup.initial_energy().is_some() {
-            header.push_str(",energy");
-        }
-        header.push('\n');
-        rec.write(&header)?;
+        rec.write(&(header.join(",") + "\n"))?;
+        // a run stopped at any moment after this leaves at least the header
+        rec.flush()?;
         Ok(rec)
+    }
+
+    /// Where the records go, as the messages name it.
+    pub fn destination(&self) -> String {
+        if is_stdout(&self.path) {
+            "stdout".into()
+        } else {
+            self.path.display().to_string()
+        }
     }
 
     fn write(&mut self, text: &str) -> Result<(), Error> {
@@ -142,7 +161,8 @@ impl<'a, S: Scene> CsvRecorder<'a, S> {
     }
 
     /// The largest relative energy drift `max |E - E0| / |E0|` (absolute when `E0 = 0`),
-    /// and whether it is relative.
+    /// and whether it is relative; NaN when an energy was not finite, never a
+    /// reassuring 0.
     pub fn energy_drift(&self) -> Option<(f64, bool)> {
         let e0 = self.e0?;
         Some(if e0 == 0.0 {
@@ -165,7 +185,13 @@ impl<S: Scene> Recorder<f64, S::State> for CsvRecorder<'_, S> {
         if let Some(e) = energy {
             let _ = write!(line, ",{e:?}");
             let e0 = *self.e0.get_or_insert(e);
-            self.max_de = self.max_de.max((e - e0).abs());
+            // `f64::max` would drop a NaN (inf - inf) and report no drift at all
+            let de = (e - e0).abs();
+            self.max_de = if de.is_finite() && self.max_de.is_finite() {
+                self.max_de.max(de)
+            } else {
+                f64::NAN
+            };
         }
         line.push('\n');
         let written = self.write(&line);
@@ -179,6 +205,7 @@ impl<S: Scene> Recorder<f64, S::State> for CsvRecorder<'_, S> {
                 .fold(0.0f64, |m, (a, b)| m.max((a - b).abs()));
             self.max_error = Some(self.max_error.map_or(dev, |m| m.max(dev)));
         }
+        self.sample.push(t, y.as_slice(), energy);
         self.records += 1;
         if self.last_flush.elapsed() >= FLUSH_INTERVAL {
             self.flush()?;
@@ -189,6 +216,30 @@ impl<S: Scene> Recorder<f64, S::State> for CsvRecorder<'_, S> {
         self.last_t = Some(t);
         Ok(())
     }
+}
+
+/// True for the path `-`: standard output.
+pub fn is_stdout(path: &Path) -> bool {
+    path.as_os_str() == "-"
+}
+
+/// Refuses to write `output` when it is the same file as one of `inputs`, compared as
+/// files (device and inode), not as strings: `--out kepler.toml` must not overwrite the
+/// scene it runs, however the path is spelled.
+pub fn refuse_overwriting(output: &Path, inputs: &[&Path]) -> Result<(), Error> {
+    for input in inputs {
+        if same_file::is_same_file(output, input).unwrap_or(false) {
+            return Err(Error::invalid(
+                "output",
+                format!(
+                    "{} is the input file {}: writing it would destroy the input; choose another output path",
+                    output.display(),
+                    input.display()
+                ),
+            ));
+        }
+    }
+    Ok(())
 }
 
 fn io_error(path: &Path, e: &io::Error) -> Error {

@@ -1,26 +1,34 @@
-//! The pictures of a run, drawn beside its CSV from the CSV itself: the trajectory
-//! projections of every body (columns `x`, `y`, `z`, or `<name>_x`, ...), the state
-//! against time when the model has no positions in the plane (a pendulum's angle), and
-//! the relative energy error on a log scale when the scene has an energy.
+//! The pictures of a run, drawn from the bounded copy of its records the run kept (never
+//! by re-reading the CSV, which may be a pipe or a device): the trajectory projections of
+//! every body (columns `x`, `y`, `z`, or `<name>_x`, ...), the state against time when the
+//! model has no positions in the plane (a pendulum's angle), and the relative energy error
+//! on a log scale when the scene has an energy. A picture that cannot be drawn is skipped
+//! with a warning naming it; the data are complete before the first picture starts.
 
 use super::plot::{draw, Chart, Scale, Series};
+use super::sample::Sample;
 use std::path::{Path, PathBuf};
 
-/// The CSV's header and numeric rows.
-fn read(path: &Path) -> anyhow::Result<(Vec<String>, Vec<Vec<f64>>)> {
-    let text = std::fs::read_to_string(path)?;
-    let mut lines = text.lines();
-    let header: Vec<String> = lines
-        .next()
-        .unwrap_or_default()
-        .split(',')
-        .map(str::to_string)
-        .collect();
-    let rows = lines
-        .filter(|l| !l.is_empty())
-        .map(|l| l.split(',').map(|x| x.parse::<f64>().unwrap_or(f64::NAN)).collect())
-        .collect();
-    Ok((header, rows))
+/// What drawing the pictures gave: the files written, and a warning for each picture
+/// skipped.
+#[derive(Debug, Default)]
+pub struct Pictures {
+    /// Files written.
+    pub written: Vec<PathBuf>,
+    /// One line per picture that could not be drawn.
+    pub skipped: Vec<String>,
+}
+
+impl Pictures {
+    fn draw(&mut self, path: PathBuf, chart: &Chart, series: &[Series]) {
+        if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
+            let _ = std::fs::create_dir_all(dir);
+        }
+        match draw(&path, chart, series) {
+            Ok(()) => self.written.push(path),
+            Err(e) => self.skipped.push(format!("picture {} skipped: {e:#}", path.display())),
+        }
+    }
 }
 
 /// `(body prefix, column of x, column of the second axis, its letter)` for each body with a
@@ -43,14 +51,13 @@ fn planes(header: &[String]) -> Vec<(String, usize, usize, &'static str)> {
     out
 }
 
-/// Draws the pictures of the run whose CSV is `csv`; returns the files written.
-pub fn draw_run(csv: &Path, scene: &str, method: &str) -> anyhow::Result<Vec<PathBuf>> {
-    let (header, rows) = read(csv)?;
-    let stem = csv.with_extension("");
+/// Draws the pictures of a run from its sampled records, as files `STEM-xy.svg`, ...
+pub fn draw_run(sample: &Sample, stem: &Path, scene: &str, method: &str) -> Pictures {
+    let header = sample.header();
     let named = |suffix: &str| PathBuf::from(format!("{}-{suffix}.svg", stem.display()));
     let title = |what: &str| format!("{scene}, {method}: {what}");
-    let column = |j: usize| -> Vec<f64> { rows.iter().map(|r| r.get(j).copied().unwrap_or(f64::NAN)).collect() };
-    let mut written = Vec::new();
+    let column = |j: usize| sample.column(j);
+    let mut pictures = Pictures::default();
     let planes = planes(&header);
     for axis in ["y", "z"] {
         let series: Vec<Series> = planes
@@ -68,10 +75,8 @@ pub fn draw_run(csv: &Path, scene: &str, method: &str) -> anyhow::Result<Vec<Pat
         if series.is_empty() {
             continue;
         }
-        let path = named(&format!("x{axis}"));
         let chart = Chart::new(title(&format!("trajectory, x-{axis} plane")), "x", axis).equal_aspect();
-        draw(&path, &chart, &series)?;
-        written.push(path);
+        pictures.draw(named(&format!("x{axis}")), &chart, &series);
     }
     let energy = header.iter().position(|h| h == "energy");
     if planes.is_empty() {
@@ -84,9 +89,8 @@ pub fn draw_run(csv: &Path, scene: &str, method: &str) -> anyhow::Result<Vec<Pat
             .filter(|(j, _)| Some(*j) != energy)
             .map(|(j, name)| Series::line(name.clone(), t.iter().copied().zip(column(j)).collect()))
             .collect();
-        let path = named("state");
-        draw(&path, &Chart::new(title("state against time"), "t", "state"), &series)?;
-        written.push(path);
+        let chart = Chart::new(title("state against time"), "t", "state");
+        pictures.draw(named("state"), &chart, &series);
     }
     if let Some(j) = energy {
         let e = column(j);
@@ -98,13 +102,11 @@ pub fn draw_run(csv: &Path, scene: &str, method: &str) -> anyhow::Result<Vec<Pat
             .skip(1)
             .map(|(t, e)| (t, (e - e0).abs() / scale))
             .collect();
-        let path = named("energy");
         let y_label = if e0 == 0.0 { "|E - E0|" } else { "|E - E0| / |E0|" };
         let chart = Chart::new(title("energy error"), "t", y_label).scales(Scale::Linear, Scale::Log);
-        draw(&path, &chart, &[Series::line(method, points)])?;
-        written.push(path);
+        pictures.draw(named("energy"), &chart, &[Series::line(method, points)]);
     }
-    Ok(written)
+    pictures
 }
 
 #[cfg(test)]

@@ -107,7 +107,14 @@ fn usable(scale: Scale, v: f64) -> bool {
     v.is_finite() && (scale == Scale::Linear || v > 0.0)
 }
 
-/// The data range of one axis, padded, never empty.
+/// Linear axes stay within this magnitude, so that a range's width is finite.
+const LINEAR_LIMIT: f64 = f64::MAX / 4.0;
+/// Log axes stay within these decades.
+const LOG_DECADES: (f64, f64) = (-300.0, 300.0);
+
+/// The data range of one axis, padded, never empty, of finite width, and wide enough for
+/// the tick labels to tell apart: data spanning 1e308, a subnormal width, one point or all
+/// values equal all give a range a chart can be drawn on in bounded time.
 fn range(values: impl Iterator<Item = f64>, scale: Scale) -> (f64, f64) {
     let (lo, hi) = values.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| (lo.min(v), hi.max(v)));
     if lo > hi {
@@ -118,17 +125,22 @@ fn range(values: impl Iterator<Item = f64>, scale: Scale) -> (f64, f64) {
     }
     match scale {
         Scale::Linear => {
-            let pad = if hi > lo {
+            let (lo, hi) = (lo.clamp(-LINEAR_LIMIT, LINEAR_LIMIT), hi.clamp(-LINEAR_LIMIT, LINEAR_LIMIT));
+            let magnitude = lo.abs().max(hi.abs());
+            // a width below a millionth of the values' magnitude (or subnormal) cannot be
+            // labelled: such data are drawn as flat
+            let pad = if hi - lo > 1e-6 * magnitude && hi - lo > 1e-300 {
                 0.05 * (hi - lo)
             } else {
-                0.5 * lo.abs().max(1.0)
+                0.5 * magnitude.max(1.0).min(LINEAR_LIMIT)
             };
-            (lo - pad, hi + pad)
+            ((lo - pad).max(-2.0 * LINEAR_LIMIT), (hi + pad).min(2.0 * LINEAR_LIMIT))
         }
         Scale::Log => {
             let (llo, lhi) = (lo.log10(), hi.log10());
-            let pad = if lhi > llo { 0.05 * (lhi - llo) } else { 0.5 };
-            (10f64.powf(llo - pad), 10f64.powf(lhi + pad))
+            let pad = if lhi - llo > 1e-6 { 0.05 * (lhi - llo) } else { 0.5 };
+            let (llo, lhi) = ((llo - pad).max(LOG_DECADES.0), (lhi + pad).min(LOG_DECADES.1));
+            (10f64.powf(llo), 10f64.powf(lhi.max(llo + 1.0)))
         }
     }
 }
@@ -294,6 +306,48 @@ mod tests {
         assert!(svg.starts_with("<svg") && svg.contains("convergence") && svg.contains("rk2"));
         // three usable points: three markers
         assert_eq!(svg.matches("<circle").count(), 3);
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn extreme_ranges_give_finite_resolvable_axes() {
+        let cases: [&[f64]; 7] = [
+            &[-1.7e308, 1.7e308],
+            &[1e308, 1.7e308],
+            &[0.0, 5e-324],
+            &[1e-320, 2e-320],
+            &[3.0],
+            &[-0.577, -0.577, -0.577],
+            &[1.0, 1.0 + f64::EPSILON],
+        ];
+        for values in cases {
+            let (lo, hi) = range(values.iter().copied(), Scale::Linear);
+            assert!(lo.is_finite() && hi.is_finite() && (hi - lo).is_finite(), "{values:?}: {lo} {hi}");
+            assert!(hi - lo > 1e-6 * lo.abs().max(hi.abs()), "{values:?}: {lo} {hi}");
+            let positive: Vec<f64> = values.iter().map(|v| v.abs()).filter(|v| *v > 0.0).collect();
+            let (lo, hi) = range(positive.iter().copied(), Scale::Log);
+            assert!(lo > 0.0 && hi.is_finite() && hi / lo >= 10.0, "{values:?}: {lo} {hi}");
+        }
+    }
+
+    #[test]
+    fn charts_of_extreme_data_draw() {
+        let dir = std::env::temp_dir().join(format!("stormer-plot-extreme-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("extreme.svg");
+        let data = [
+            vec![(0.0, -1.7e308), (1.0, 1.7e308), (2.0, f64::NAN), (f64::INFINITY, 1.0)],
+            vec![(0.0, 5e-324), (1.0, 0.0)],
+            vec![(1.0, 1.0)],
+            vec![(f64::NAN, f64::NAN)],
+        ];
+        for points in data {
+            for scales in [(Scale::Linear, Scale::Linear), (Scale::Linear, Scale::Log)] {
+                let chart = Chart::new("extreme", "t", "y").scales(scales.0, scales.1).equal_aspect();
+                eprintln!("{points:?} {scales:?} {:?} {:?}", range(points.iter().map(|p| p.0).filter(|v| usable(scales.0, *v)), scales.0), range(points.iter().map(|p| p.1).filter(|v| usable(scales.1, *v)), scales.1));
+                draw(&path, &chart, &[Series::line("a", points.clone())]).unwrap();
+            }
+        }
         std::fs::remove_dir_all(&dir).unwrap();
     }
 

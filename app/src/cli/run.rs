@@ -152,9 +152,15 @@ impl SceneVisitor for Runner<'_> {
         } else {
             StepControl::Fixed(args.dt.unwrap_or(setup.run.dt))
         };
-        let path = args.out.clone().unwrap_or_else(|| {
-            PathBuf::from("out").join(format!("{}-{}.csv", file_safe(&setup.name), file_safe(method.name())))
-        });
+        let default_path =
+            PathBuf::from("out").join(format!("{}-{}.csv", file_safe(&setup.name), file_safe(method.name())));
+        let path = args.out.clone().unwrap_or_else(|| default_path.clone());
+        let inputs: Vec<&Path> = [Some(args.scene.as_str()), args.method.as_deref()]
+            .into_iter()
+            .flatten()
+            .map(Path::new)
+            .collect();
+        super::output::refuse_overwriting(&path, &inputs)?;
         let mut driver = Driver::with(control).every(every).cancel_when(super::interrupt::flag());
         if args.compensated {
             driver = driver.compensated();
@@ -164,6 +170,7 @@ impl SceneVisitor for Runner<'_> {
             let model = &setup.model;
             driver = driver.stop_when(move |t, y| (stop.g)(model, t, y));
         }
+        driver.check_span(t0, t_end)?;
         let mut csv = CsvRecorder::create(&path, &setup)?;
         csv.progress = Some(super::progress::Progress::new(t0, t_end));
         let result = driver.run_into(&setup.model, &mut stepper, t0, &setup.y0, t_end, &mut csv);
@@ -177,16 +184,17 @@ impl SceneVisitor for Runner<'_> {
         };
         if let Some(Error::Cancelled { t, .. }) = error {
             let kept = match flushed {
-                Ok(()) => format!("{} records kept in {}", csv.records, path.display()),
+                Ok(()) => format!("{} records kept in {}", csv.records, csv.destination()),
                 Err(f) => format!("the records could not all be kept: {f}"),
             };
             let last = csv
                 .last_t
                 .map_or_else(String::new, |t| format!(" (the last at t = {t})"));
-            return Err(super::interrupt::StoppedByUser(format!(
-                "stopped by Ctrl-C at t = {t} after {} steps, {kept}{last}",
-                stats.steps
-            ))
+            let signal = super::interrupt::received();
+            return Err(super::interrupt::StoppedByUser {
+                message: format!("stopped by {} at t = {t} after {} steps, {kept}{last}", signal.name(), stats.steps),
+                signal,
+            }
             .into());
         }
         if let Some(e) = error {
@@ -194,7 +202,7 @@ impl SceneVisitor for Runner<'_> {
                 .last_t
                 .map_or_else(String::new, |t| format!(", the last at t = {t}"));
             let kept = match flushed {
-                Ok(()) => format!("; {} records kept in {}{last}", csv.records, path.display()),
+                Ok(()) => format!("; {} records kept in {}{last}", csv.records, csv.destination()),
                 Err(_) if matches!(e, Error::Io { .. }) => String::new(),
                 Err(f) => format!("; {f}"),
             };
@@ -211,14 +219,29 @@ impl SceneVisitor for Runner<'_> {
             &stats,
             adaptive,
             &csv,
-            &path,
             stop,
         );
         // The summary is information, not output: a closed stderr is not an error.
         let _ = writeln!(std::io::stderr(), "{summary}");
-        let pictures = super::pictures::draw_run(&path, &setup.name, method.name())?;
-        let names: Vec<String> = pictures.iter().map(|p| p.display().to_string()).collect();
-        let _ = writeln!(std::io::stderr(), "pictures: {}", names.join(", "));
+        if let Some((e, _)) = csv.energy_drift().filter(|(e, _)| !e.is_finite()) {
+            let _ = writeln!(
+                std::io::stderr(),
+                "warning: the energy drift is {e}: an energy was not finite (E0 = {}), so the energy column \
+                 says nothing about the accuracy of this run",
+                csv.e0.unwrap_or(f64::NAN)
+            );
+        }
+        // beside the CSV when it is a regular file; a pipe, stdout or a device gets none
+        let beside_csv = std::fs::metadata(&path).is_ok_and(|m| m.is_file());
+        let stem = if beside_csv { &path } else { &default_path }.with_extension("");
+        let pictures = super::pictures::draw_run(&csv.sample, &stem, &setup.name, method.name());
+        for warning in &pictures.skipped {
+            let _ = writeln!(std::io::stderr(), "warning: {warning}");
+        }
+        let names: Vec<String> = pictures.written.iter().map(|p| p.display().to_string()).collect();
+        if !names.is_empty() {
+            let _ = writeln!(std::io::stderr(), "pictures: {}", names.join(", "));
+        }
         Ok(())
     }
 }
@@ -229,7 +252,6 @@ fn summary<S: Scene>(
     stats: &Stats,
     adaptive: bool,
     csv: &CsvRecorder<'_, S>,
-    path: &Path,
     stop: Option<String>,
 ) -> String {
     let mut parts = vec![format!("{what}: {} steps", stats.steps)];
@@ -252,6 +274,6 @@ fn summary<S: Scene>(
         parts.push(format!("max error vs exact {e:.3e}"));
     }
     parts.extend(stop);
-    parts.push(format!("{} records in {}", csv.records, path.display()));
+    parts.push(format!("{} records in {}", csv.records, csv.destination()));
     parts.join(", ")
 }
