@@ -14,7 +14,12 @@ const COLUMNS: usize = 1 + 24 + 1; // t, 4 bodies x (3 positions + 3 momenta), e
 /// every column and every cell is a number. Returns the rows' times.
 fn strict_rows(path: &Path) -> Vec<f64> {
     let text = std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
-    assert!(text.ends_with('\n'), "{}: the last row is torn: {:?}", path.display(), text.lines().last());
+    assert!(
+        text.ends_with('\n'),
+        "{}: the last row is torn: {:?}",
+        path.display(),
+        text.lines().last()
+    );
     let mut lines = text.lines();
     let header: Vec<&str> = lines.next().expect("a header").split(',').collect();
     assert_eq!(header.len(), COLUMNS, "{header:?}");
@@ -24,7 +29,10 @@ fn strict_rows(path: &Path) -> Vec<f64> {
         .map(|(i, line)| {
             let cells: Vec<f64> = line
                 .split(',')
-                .map(|c| c.parse().unwrap_or_else(|_| panic!("row {}: cell {c:?} in {line:?}", i + 1)))
+                .map(|c| {
+                    c.parse()
+                        .unwrap_or_else(|_| panic!("row {}: cell {c:?} in {line:?}", i + 1))
+                })
                 .collect();
             assert_eq!(cells.len(), COLUMNS, "row {} has {} cells", i + 1, cells.len());
             cells[0]
@@ -49,7 +57,16 @@ fn kill_a_run(dir: &Path, signal: &str, after_ms: u64) -> (std::process::ExitSta
     let csv = dir.join("run.csv");
     let _ = std::fs::remove_file(&csv);
     let mut child = Command::new(env!("CARGO_BIN_EXE_stormer"))
-        .args(["run", "outer-solar-system", "--method", "rk4", "--dt", "0.01", "--t-end", "1e6"])
+        .args([
+            "run",
+            "outer-solar-system",
+            "--method",
+            "rk4",
+            "--dt",
+            "0.01",
+            "--t-end",
+            "1e6",
+        ])
         .args(["--every", "1", "--out", "run.csv"])
         .current_dir(dir)
         .stderr(Stdio::piped())
@@ -58,11 +75,17 @@ fn kill_a_run(dir: &Path, signal: &str, after_ms: u64) -> (std::process::ExitSta
     let start = Instant::now();
     // the header is flushed when the file is created
     while std::fs::metadata(&csv).map_or(true, |m| m.len() == 0) {
-        assert!(start.elapsed() < Duration::from_secs(60), "no CSV header after a minute");
+        assert!(
+            start.elapsed() < Duration::from_secs(60),
+            "no CSV header after a minute"
+        );
         std::thread::sleep(Duration::from_millis(5));
     }
     std::thread::sleep(Duration::from_millis(after_ms));
-    let sent = Command::new("kill").args([signal, &child.id().to_string()]).status().unwrap();
+    let sent = Command::new("kill")
+        .args([signal, &child.id().to_string()])
+        .status()
+        .unwrap();
     assert!(sent.success());
     let status = loop {
         if let Some(status) = child.try_wait().unwrap() {
@@ -97,13 +120,19 @@ fn twenty_runs_killed_at_random_moments_leave_whole_rows() {
         assert_eq!(status.code(), Some(code), "run {run} ({signal}): {err}");
         assert_eq!(err.lines().count(), 1, "run {run}: {err}");
         let name = if signal == "-TERM" { "SIGTERM" } else { "SIGHUP" };
-        assert!(err.starts_with(&format!("stopped by {name} at t = ")), "run {run}: {err}");
+        assert!(
+            err.starts_with(&format!("stopped by {name} at t = ")),
+            "run {run}: {err}"
+        );
         assert!(
             err.contains(&format!("{} records kept in run.csv", times.len())),
             "run {run}: {} rows, {err}",
             times.len()
         );
         let last = times.last().unwrap();
-        assert!(err.trim_end().ends_with(&format!("(the last at t = {last})")), "run {run}: {err}");
+        assert!(
+            err.trim_end().ends_with(&format!("(the last at t = {last})")),
+            "run {run}: {err}"
+        );
     }
 }

@@ -46,7 +46,12 @@ pub fn flag() -> &'static AtomicBool {
 /// some other way).
 pub fn received() -> Signal {
     let which = HANDLERS.get().map_or(0, |h| h.which.load(Ordering::Relaxed));
-    Signal(i32::try_from(which).ok().filter(|s| HANDLED.contains(s)).unwrap_or(SIGINT))
+    Signal(
+        i32::try_from(which)
+            .ok()
+            .filter(|s| HANDLED.contains(s))
+            .unwrap_or(SIGINT),
+    )
 }
 
 /// One of the handled signals.

@@ -122,7 +122,9 @@ pub fn main() -> ExitCode {
         Err(e) if output::is_broken_pipe(&e) => ExitCode::SUCCESS,
         Err(e) if e.downcast_ref::<interrupt::StoppedByUser>().is_some() => {
             let _ = writeln!(std::io::stderr(), "{e}");
-            let code = e.downcast_ref::<interrupt::StoppedByUser>().map(|s| s.signal.exit_code());
+            let code = e
+                .downcast_ref::<interrupt::StoppedByUser>()
+                .map(|s| s.signal.exit_code());
             ExitCode::from(code.unwrap_or(130))
         }
         Err(e) => {

@@ -192,7 +192,11 @@ impl SceneVisitor for Runner<'_> {
                 .map_or_else(String::new, |t| format!(" (the last at t = {t})"));
             let signal = super::interrupt::received();
             return Err(super::interrupt::StoppedByUser {
-                message: format!("stopped by {} at t = {t} after {} steps, {kept}{last}", signal.name(), stats.steps),
+                message: format!(
+                    "stopped by {} at t = {t} after {} steps, {kept}{last}",
+                    signal.name(),
+                    stats.steps
+                ),
                 signal,
             }
             .into());

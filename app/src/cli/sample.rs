@@ -83,7 +83,10 @@ impl Sample {
 
     /// Column `j` of the kept rows.
     pub fn column(&self, j: usize) -> Vec<f64> {
-        self.rows().iter().map(|r| r.get(j).copied().unwrap_or(f64::NAN)).collect()
+        self.rows()
+            .iter()
+            .map(|r| r.get(j).copied().unwrap_or(f64::NAN))
+            .collect()
     }
 }
 
@@ -102,7 +105,10 @@ mod tests {
         assert!(t.len() <= MAX_ROWS + 1, "{}", t.len());
         assert!(t.len() > MAX_ROWS / 2);
         let step = t[1] - t[0];
-        assert!(t.windows(2).take(t.len() - 2).all(|w| w[1] - w[0] == step), "even spacing");
+        assert!(
+            t.windows(2).take(t.len() - 2).all(|w| w[1] - w[0] == step),
+            "even spacing"
+        );
         assert_eq!(*t.last().unwrap(), (n - 1) as f64);
         assert_eq!(s.column(1)[5], 2.0 * t[5]);
     }
