@@ -2,12 +2,13 @@
 //! verdict line computed from the runs, gathered in `index.html` and `summary.md`.
 
 use super::choice;
+use super::pipeline::{deviation, Options, SceneRun, Steps};
 use super::plot::{draw, Chart, Scale, Series};
 use anyhow::Context;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 use stormer::driver::Recorder;
-use stormer::{Driver, Error, ImplicitOptions, State, StepControl};
+use stormer::{Error, State};
 use stormer_app::scenes::{self, Scene, SceneVisitor, Setup};
 
 /// Arguments of `stormer tour`.
@@ -99,18 +100,13 @@ impl Trace {
 /// In-memory recorder.
 struct Memory<'a, S: Scene> {
     setup: &'a Setup<S>,
-    trace: Trace,
+    rows: Vec<Row>,
 }
 
 impl<S: Scene> Recorder<f64, S::State> for Memory<'_, S> {
     fn record(&mut self, t: f64, y: &S::State, energy: Option<f64>) -> Result<(), Error> {
-        let dev = self.setup.exact(t).map(|exact| {
-            y.as_slice()
-                .iter()
-                .zip(exact.as_slice())
-                .fold(0.0f64, |m, (a, b)| m.max((a - b).abs()))
-        });
-        self.trace.rows.push((t, y.as_slice().to_vec(), energy, dev));
+        let dev = deviation(self.setup, t, y);
+        self.rows.push((t, y.as_slice().to_vec(), energy, dev));
         Ok(())
     }
 }
@@ -129,33 +125,32 @@ impl SceneVisitor for Sim<'_> {
 
     fn visit<S: Scene>(self, setup: Setup<S>) -> anyhow::Result<Trace> {
         let method = choice::resolve(self.method, self.alpha)?;
-        let mut stepper = method.stepper_for(&setup.model, &setup.y0, &ImplicitOptions::fixed_point())?;
-        let (t0, t_end) = (setup.run.t0, self.t_end.unwrap_or(setup.run.t_end));
-        let mut driver = Driver::with(StepControl::Fixed(self.dt.unwrap_or(setup.run.dt)))
-            .every(self.every.unwrap_or(setup.run.every));
-        let stop = setup.model.stop();
-        if let Some(stop) = stop {
-            let model = &setup.model;
-            driver = driver.stop_when(move |t, y| (stop.g)(model, t, y));
-        }
+        let options = Options {
+            steps: Steps::Fixed(self.dt),
+            t_end: self.t_end,
+            every: self.every,
+            ..Options::default()
+        };
+        let mut run = SceneRun::new(&setup, &method, &options)?;
         let mut memory = Memory {
             setup: &setup,
-            trace: Trace {
-                names: setup.model.components(&setup.y0),
-                ..Trace::default()
-            },
+            rows: Vec::new(),
         };
-        let outcome = driver.run_into(&setup.model, &mut stepper, t0, &setup.y0, t_end, &mut memory);
-        let (_, stopped) = outcome.map_err(|(stats, e)| anyhow::anyhow!("{e}; stopped after {} steps", stats.steps))?;
-        let mut trace = memory.trace;
-        if let (Some(stop), Some(event)) = (stop, stopped) {
-            let sentence = (stop.report)(&setup.model, event.t, &event.y);
-            trace.stop = Some((sentence, event.t, event.y.as_slice().to_vec()));
+        let outcome = run.run_into(&mut memory);
+        if let Some(e) = outcome.error {
+            anyhow::bail!("{e}; stopped after {} steps", outcome.stats.steps);
         }
-        let t_last = trace.rows.last().map_or(t_end, |r| r.0);
-        trace.exact_end = setup.exact(t_last).map(|s| s.as_slice().to_vec());
-        trace.exact_start = setup.exact(t0).map(|s| s.as_slice().to_vec());
-        Ok(trace)
+        let stop = outcome.stopped.as_ref().and_then(|event| {
+            let sentence = run.stop_sentence(Some(event))?;
+            Some((sentence, event.t, event.y.as_slice().to_vec()))
+        });
+        Ok(Trace {
+            names: setup.model.components(&setup.y0),
+            rows: memory.rows,
+            stop,
+            exact_end: run.exact_at_end(&outcome.track),
+            exact_start: setup.exact(run.t0()).map(|s| s.as_slice().to_vec()),
+        })
     }
 }
 
