@@ -1206,20 +1206,10 @@ fn compare_and_scan_measure_the_free_kick_at_its_landing() {
     let dir = workdir("free-kick-studies");
     // the ball lands at t = 1.239 s, long before t = 3: every run of the study, and the
     // reference, stop there, as `stormer run` does
-    let out = stormer(
-        &dir,
-        &with_quick(&[
-            "compare",
-            "free-kick",
-            "--methods",
-            "rk4,dop853",
-            "--dt",
-            "0.001",
-            "--t-end",
-            "3",
-        ]),
-    );
-    assert_ok(&out);
+    let compare: Vec<&str> = "compare free-kick --methods rk4,dop853 --dt 0.001 --t-end 3"
+        .split(' ')
+        .collect();
+    assert_ok(&stormer(&dir, &with_quick(&compare)));
     let (header, rows) = read_table(&dir.join("out/compare-free-kick.csv"));
     assert_eq!(rows.len(), 2);
     let cell = |row: &[String], name: &str| -> f64 { row[column(&header, name)].parse().unwrap() };
@@ -1255,20 +1245,10 @@ fn compare_and_scan_measure_the_free_kick_at_its_landing() {
         &["rk4", "dop853"],
     );
     // scan: the same landing at every step count, and the declared order observed there
-    let out = stormer(
-        &dir,
-        &with_quick(&[
-            "scan",
-            "free-kick",
-            "--method",
-            "heun2",
-            "--steps",
-            "300,600,1200",
-            "--t-end",
-            "3",
-        ]),
-    );
-    assert_ok(&out);
+    let scan: Vec<&str> = "scan free-kick --method heun2 --steps 300,600,1200 --t-end 3"
+        .split(' ')
+        .collect();
+    assert_ok(&stormer(&dir, &with_quick(&scan)));
     let (header, rows) = read_table(&dir.join("out/scan-free-kick-heun2.csv"));
     let cell = |row: &[String], name: &str| -> f64 { row[column(&header, name)].parse().unwrap() };
     for row in &rows {
