@@ -244,10 +244,10 @@ impl<'s, S: Scene> SceneRun<'s, S> {
         })
     }
 
-    /// The exact state where the run ended (its last record), when the scene has an
-    /// exact solution.
-    pub fn exact_at_end(&self, track: &Track) -> Option<Vec<f64>> {
-        let t = track.last_t.unwrap_or(self.t_end);
+    /// The exact state where the run ended, at its stop event or at the end time, when
+    /// the scene has an exact solution.
+    pub fn exact_at_end(&self, outcome: &Outcome<S>) -> Option<Vec<f64>> {
+        let t = outcome.stopped.as_ref().map_or(self.t_end, |event| event.t);
         self.setup.exact(t).map(|y| y.as_slice().to_vec())
     }
 }

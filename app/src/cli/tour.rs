@@ -153,7 +153,7 @@ impl SceneVisitor for Sim<'_> {
             names: setup.model.components(&setup.y0),
             rows: memory.rows,
             stop,
-            exact_end: run.exact_at_end(&outcome.track),
+            exact_end: run.exact_at_end(&outcome),
             exact_start: setup.exact(run.t0()).map(|s| s.as_slice().to_vec()),
         })
     }

@@ -354,7 +354,7 @@ impl SceneVisitor for JobRunner<'_> {
         let (stats, track) = (measured.stats, &measured.track);
         // the truth where the run ended: at the end time, or where the scene's stop
         // condition ended it (the reference stops there too)
-        let exact = run.exact_at_end(track);
+        let exact = run.exact_at_end(&measured);
         let truth: &[f64] = match (&exact, self.reference) {
             (Some(y), _) => y,
             (None, Some(r)) => &r.state,
