@@ -579,52 +579,28 @@ fn interleaved_ratios() {
     let s = setup();
     let w = jump_word();
     let first = |y: [f64; 24]| y[0];
+    // the library's variants of the stepping loop, between the hand-written loops
+    type Variant = fn(&Setup, usize, f64, &[f64; 24]) -> [f64; 24];
     macro_rules! kernels {
         ($m:ty, $evaluations:expr, $hand:expr, $hand_nbody:expr) => {{
-            let v: Vec<Kernel> = vec![
-                ("hand_written", $evaluations, Box::new($hand)),
-                (
-                    "generated",
-                    $evaluations,
-                    Box::new(|| first(generated::<$m>(&s, STEPS, black_box(H), &s.y0))),
-                ),
-                (
-                    "driver",
-                    $evaluations,
-                    Box::new(|| first(driver::<$m>(&s, STEPS, black_box(H), &s.y0))),
-                ),
-                (
-                    "generated_any_shape",
-                    $evaluations,
-                    Box::new(|| first(generated_any_shape::<$m>(&s, STEPS, black_box(H), &s.y0))),
-                ),
-                (
-                    "generated_flows_copy",
-                    $evaluations,
-                    Box::new(|| first(generated_flows_copy::<$m>(&s, STEPS, black_box(H), &s.y0))),
-                ),
-                (
-                    "generated_flows_local",
-                    $evaluations,
-                    Box::new(|| first(generated_flows_local::<$m>(&s, STEPS, black_box(H), &s.y0))),
-                ),
-                (
-                    "generated_in_place",
-                    $evaluations,
-                    Box::new(|| first(generated_in_place::<$m>(&s, STEPS, black_box(H), &s.y0))),
-                ),
-                (
-                    "generated_flows",
-                    $evaluations,
-                    Box::new(|| first(generated_flows::<$m>(&s, STEPS, black_box(H), &s.y0))),
-                ),
-                ("hand_loop_nbody_force", $evaluations, Box::new($hand_nbody)),
-                (
-                    "file_scene",
-                    $evaluations,
-                    Box::new(|| file_scene::<$m>(&s, STEPS, black_box(H))[0]),
-                ),
+            let variants: [(&'static str, Variant); 7] = [
+                ("generated", generated::<$m>),
+                ("driver", driver::<$m>),
+                ("generated_any_shape", generated_any_shape::<$m>),
+                ("generated_flows_copy", generated_flows_copy::<$m>),
+                ("generated_flows_local", generated_flows_local::<$m>),
+                ("generated_in_place", generated_in_place::<$m>),
+                ("generated_flows", generated_flows::<$m>),
             ];
+            let s = &s;
+            let mut v: Vec<Kernel> = vec![("hand_written", $evaluations, Box::new($hand))];
+            for (name, variant) in variants {
+                let run = move || first(variant(s, STEPS, black_box(H), &s.y0));
+                v.push((name, $evaluations, Box::new(run)));
+            }
+            v.push(("hand_loop_nbody_force", $evaluations, Box::new($hand_nbody)));
+            let file = || file_scene::<$m>(s, STEPS, black_box(H))[0];
+            v.push(("file_scene", $evaluations, Box::new(file)));
             v
         }};
     }

@@ -1201,6 +1201,62 @@ fn the_free_kick_stops_when_the_ball_lands() {
     }
 }
 
+#[test]
+fn compare_and_scan_measure_the_free_kick_at_its_landing() {
+    let dir = workdir("free-kick-studies");
+    // the ball lands at t = 1.239 s, long before t = 3: every run of the study, and the
+    // reference, stop there, as `stormer run` does
+    let compare: Vec<&str> = "compare free-kick --methods rk4,dop853 --dt 0.001 --t-end 3"
+        .split(' ')
+        .collect();
+    assert_ok(&stormer(&dir, &with_quick(&compare)));
+    let (header, rows) = read_table(&dir.join("out/compare-free-kick.csv"));
+    assert_eq!(rows.len(), 2);
+    let cell = |row: &[String], name: &str| -> f64 { row[column(&header, name)].parse().unwrap() };
+    for row in &rows {
+        // 1239 whole steps and the one cut at the landing, not the 3000 steps to t = 3
+        assert_eq!(cell(row, "steps"), 1240.0, "{row:?}");
+        // at the landing both methods agree with the reference to round-off; the energy
+        // has lost the drag's work up to there (through the ground to t = 3: 1.42)
+        assert!(cell(row, "error") < 1e-12, "{row:?}");
+        assert!((cell(row, "energy_error") - 0.535).abs() < 1e-3, "{row:?}");
+    }
+    // the reference is the state at the landing: on the ground, 17.679 m away
+    let cached: Vec<PathBuf> = std::fs::read_dir(dir.join("out/references"))
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .collect();
+    let json: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&cached[0]).unwrap()).unwrap();
+    let state: Vec<f64> = json["state"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|x| x.as_f64().unwrap())
+        .collect();
+    assert!(
+        (state[0] - 17.679127633).abs() < 2e-9 && state[1].abs() < 1e-12,
+        "{state:?}"
+    );
+    let md = std::fs::read_to_string(dir.join("out/compare-free-kick.md")).unwrap();
+    assert!(md.contains("|y - y_true| at the landing"), "{md}");
+    assert_diagram(
+        &dir.join("out/compare-free-kick-evaluations.svg"),
+        &["error at the landing or t = 3"],
+        &["rk4", "dop853"],
+    );
+    // scan: the same landing at every step count, and the declared order observed there
+    let scan: Vec<&str> = "scan free-kick --method heun2 --steps 300,600,1200 --t-end 3"
+        .split(' ')
+        .collect();
+    assert_ok(&stormer(&dir, &with_quick(&scan)));
+    let (header, rows) = read_table(&dir.join("out/scan-free-kick-heun2.csv"));
+    let cell = |row: &[String], name: &str| -> f64 { row[column(&header, name)].parse().unwrap() };
+    for row in &rows {
+        assert!((cell(row, "energy_error") - 0.535).abs() < 1e-3, "{row:?}");
+    }
+    assert!((cell(&rows[0], "fitted_order") - 2.0).abs() < 0.05, "{rows:?}");
+}
+
 // ---- compare, scan, merge (issue 5) ----
 
 /// Quick timings: one run each, in the tests (speed is measured in benchmarks, not tests).

@@ -1,12 +1,12 @@
-#![allow(unsafe_code)] // the counting allocator (tests/support/counting_alloc.rs); the library itself forbids unsafe code
+#![allow(unsafe_code)] // the counting allocator (the library's tests/support/counting_alloc.rs); the library itself forbids unsafe code
 //! N-body stepping never allocates: 1000 splitting steps on the outer solar system
 //! allocate nothing on a static state, and as much as one step on the scene file's
 //! `DVector` state (the driver allocates its records, never per step).
 //!
-//! A counting global allocator (tests/support/counting_alloc.rs) counts the calling
-//! thread's allocations.
+//! A counting global allocator (the library's tests/support/counting_alloc.rs, shared
+//! with its allocation tests) counts the calling thread's allocations.
 
-#[path = "support/counting_alloc.rs"]
+#[path = "../../tests/support/counting_alloc.rs"]
 mod counting_alloc;
 use counting_alloc::allocations;
 use stormer::catalog::{TripleJump4, VelocityVerletKdk};

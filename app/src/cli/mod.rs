@@ -5,6 +5,7 @@ mod interrupt;
 mod methods;
 mod output;
 mod pictures;
+mod pipeline;
 mod plot;
 mod progress;
 mod run;

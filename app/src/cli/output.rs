@@ -65,9 +65,9 @@ pub fn file_safe(name: &str) -> String {
     s.trim_matches('_').to_string()
 }
 
-/// Streams the records of a run to a CSV file and keeps what the summary reports:
-/// the number of records, the last time, the largest energy drift and the largest
-/// deviation from the exact solution.
+/// Streams the records of a run to a CSV file or stdout (what they tell is the run's
+/// [`Track`](super::pipeline::Track)), and keeps a bounded [`Sample`] of them for the
+/// pictures.
 ///
 /// Each record is handed to the buffer as one whole line, and the buffer hands the OS
 /// only what it holds, whole lines, so the file never ends in a torn row, whatever stops
@@ -78,20 +78,9 @@ pub fn file_safe(name: &str) -> String {
 ///
 /// Numbers are written with `{:?}`, Rust's shortest representation that reads back to
 /// the same `f64`, so the file holds the computed values bit for bit.
-pub struct CsvRecorder<'a, S: Scene> {
+pub struct CsvRecorder {
     out: BufWriter<Box<dyn Write>>,
     path: PathBuf,
-    setup: &'a Setup<S>,
-    /// Records written.
-    pub records: u64,
-    /// Time of the last record.
-    pub last_t: Option<f64>,
-    /// Energy of the first record.
-    pub e0: Option<f64>,
-    /// max |E - E0| over the records; NaN once an energy is not finite.
-    pub max_de: f64,
-    /// max over records and components of |y - y_exact|, when there is an exact solution.
-    pub max_error: Option<f64>,
     /// The progress bar, when the run has one.
     pub progress: Option<super::progress::Progress>,
     /// A bounded copy of the records, for the pictures.
@@ -103,9 +92,9 @@ pub struct CsvRecorder<'a, S: Scene> {
 /// How long written records may wait in the buffer.
 pub const FLUSH_INTERVAL: Duration = Duration::from_millis(500);
 
-impl<'a, S: Scene> CsvRecorder<'a, S> {
+impl CsvRecorder {
     /// Creates the file (and its directory) and writes the header; the path `-` is stdout.
-    pub fn create(path: &Path, setup: &'a Setup<S>) -> Result<Self, Error> {
+    pub fn create<S: Scene>(path: &Path, setup: &Setup<S>) -> Result<Self, Error> {
         let sink: Box<dyn Write> = if is_stdout(path) {
             Box::new(io::stdout())
         } else {
@@ -122,13 +111,7 @@ impl<'a, S: Scene> CsvRecorder<'a, S> {
         let mut rec = CsvRecorder {
             out: BufWriter::new(sink),
             path: path.to_path_buf(),
-            setup,
-            records: 0,
             progress: None,
-            last_t: None,
-            e0: None,
-            max_de: 0.0,
-            max_error: None,
             sample: Sample::new(header.clone()),
             line: String::new(),
             last_flush: Instant::now(),
@@ -159,22 +142,10 @@ impl<'a, S: Scene> CsvRecorder<'a, S> {
         let r = self.out.flush();
         r.map_err(|e| io_error(&self.path, &e))
     }
-
-    /// The largest relative energy drift `max |E - E0| / |E0|` (absolute when `E0 = 0`),
-    /// and whether it is relative; NaN when an energy was not finite, never a
-    /// reassuring 0.
-    pub fn energy_drift(&self) -> Option<(f64, bool)> {
-        let e0 = self.e0?;
-        Some(if e0 == 0.0 {
-            (self.max_de, false)
-        } else {
-            (self.max_de / e0.abs(), true)
-        })
-    }
 }
 
-impl<S: Scene> Recorder<f64, S::State> for CsvRecorder<'_, S> {
-    fn record(&mut self, t: f64, y: &S::State, energy: Option<f64>) -> Result<(), Error> {
+impl<St: State<Scalar = f64>> Recorder<f64, St> for CsvRecorder {
+    fn record(&mut self, t: f64, y: &St, energy: Option<f64>) -> Result<(), Error> {
         use std::fmt::Write as _;
         let mut line = std::mem::take(&mut self.line);
         line.clear();
@@ -184,36 +155,18 @@ impl<S: Scene> Recorder<f64, S::State> for CsvRecorder<'_, S> {
         }
         if let Some(e) = energy {
             let _ = write!(line, ",{e:?}");
-            let e0 = *self.e0.get_or_insert(e);
-            // `f64::max` would drop a NaN (inf - inf) and report no drift at all
-            let de = (e - e0).abs();
-            self.max_de = if de.is_finite() && self.max_de.is_finite() {
-                self.max_de.max(de)
-            } else {
-                f64::NAN
-            };
         }
         line.push('\n');
         let written = self.write(&line);
         self.line = line;
         written?;
-        if let Some(exact) = self.setup.exact(t) {
-            let dev = y
-                .as_slice()
-                .iter()
-                .zip(exact.as_slice())
-                .fold(0.0f64, |m, (a, b)| m.max((a - b).abs()));
-            self.max_error = Some(self.max_error.map_or(dev, |m| m.max(dev)));
-        }
         self.sample.push(t, y.as_slice(), energy);
-        self.records += 1;
         if self.last_flush.elapsed() >= FLUSH_INTERVAL {
             self.flush()?;
         }
         if let Some(progress) = &mut self.progress {
             progress.update(t);
         }
-        self.last_t = Some(t);
         Ok(())
     }
 }

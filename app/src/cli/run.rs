@@ -2,10 +2,11 @@
 
 use super::choice;
 use super::output::{file_safe, CsvRecorder};
+use super::pipeline::{Options, SceneRun, Steps, Track};
 use anyhow::anyhow;
 use std::io::Write;
 use std::path::{Path, PathBuf};
-use stormer::{Driver, Error, ImplicitOptions, Stats, StepControl, Tolerances};
+use stormer::{Error, ImplicitOptions, Stats, Tolerances};
 use stormer_app::scenes::{self, Scene, SceneVisitor, Setup};
 
 /// Arguments of `stormer run`; every value defaults to the scene file's.
@@ -110,13 +111,10 @@ struct Runner<'a> {
     args: &'a RunArgs,
 }
 
-impl SceneVisitor for Runner<'_> {
-    type Output = anyhow::Result<()>;
-
-    fn visit<S: Scene>(self, setup: Setup<S>) -> anyhow::Result<()> {
+impl Runner<'_> {
+    /// The pipeline's options from the arguments.
+    fn options(&self) -> Options {
         let args = self.args;
-        let method_name = args.method.as_deref().unwrap_or(&setup.run.method);
-        let method = choice::resolve(method_name, args.alpha)?;
         let mut implicit = match args.solver {
             Some(SolverArg::Newton) => ImplicitOptions::newton(),
             Some(SolverArg::FixedPoint) | None => ImplicitOptions::fixed_point(),
@@ -124,34 +122,36 @@ impl SceneVisitor for Runner<'_> {
         if let Some(n) = args.max_iterations {
             implicit.max_iterations = n;
         }
-        let mut stepper = method.stepper_for(&setup.model, &setup.y0, &implicit)?;
-        if args.compensated {
-            // refused here, before an output file is created (the driver turns it on too)
-            stepper.set_compensated(true)?;
-        }
-        let (t0, t_end) = (setup.run.t0, args.t_end.unwrap_or(setup.run.t_end));
-        let every = args.every.unwrap_or(setup.run.every);
-        let adaptive = args.rtol.is_some() || args.atol.is_some();
-        let control = if adaptive {
-            if stepper.error_order().is_none() {
-                return Err(Error::Unsupported {
-                    name: method.name().to_string(),
-                    reason: "it has no embedded error estimate, which adaptive steps (--rtol/--atol) need; \
-                             use fixed steps (--dt), or a method with an embedded order (`stormer methods`)"
-                        .into(),
-                }
-                .into());
-            }
+        let steps = if args.rtol.is_some() || args.atol.is_some() {
             let rtol = args.rtol.or(args.atol).unwrap_or_default();
             let atol = args.atol.or(args.rtol).unwrap_or_default();
-            StepControl::Adaptive {
+            Steps::Adaptive {
                 tol: Tolerances::new(rtol, atol),
                 h0: args.dt,
-                h_max: None,
             }
         } else {
-            StepControl::Fixed(args.dt.unwrap_or(setup.run.dt))
+            Steps::Fixed(args.dt)
         };
+        Options {
+            steps,
+            t_end: args.t_end,
+            every: args.every,
+            implicit,
+            compensated: args.compensated,
+            cancel: Some(super::interrupt::flag()),
+        }
+    }
+}
+
+impl SceneVisitor for Runner<'_> {
+    type Output = anyhow::Result<()>;
+
+    fn visit<S: Scene>(self, setup: Setup<S>) -> anyhow::Result<()> {
+        let args = self.args;
+        let method_name = args.method.as_deref().unwrap_or(&setup.run.method);
+        let method = choice::resolve(method_name, args.alpha)?;
+        let options = self.options();
+        let mut run = SceneRun::new(&setup, &method, &options)?;
         let default_path =
             PathBuf::from("out").join(format!("{}-{}.csv", file_safe(&setup.name), file_safe(method.name())));
         let path = args.out.clone().unwrap_or_else(|| default_path.clone());
@@ -161,33 +161,21 @@ impl SceneVisitor for Runner<'_> {
             .map(Path::new)
             .collect();
         super::output::refuse_overwriting(&path, &inputs)?;
-        let mut driver = Driver::with(control).every(every).cancel_when(super::interrupt::flag());
-        if args.compensated {
-            driver = driver.compensated();
-        }
-        let stop = setup.model.stop();
-        if let Some(stop) = stop {
-            let model = &setup.model;
-            driver = driver.stop_when(move |t, y| (stop.g)(model, t, y));
-        }
-        driver.check_span(t0, t_end)?;
+        run.check_span()?;
         let mut csv = CsvRecorder::create(&path, &setup)?;
-        csv.progress = Some(super::progress::Progress::new(t0, t_end));
-        let result = driver.run_into(&setup.model, &mut stepper, t0, &setup.y0, t_end, &mut csv);
+        csv.progress = Some(super::progress::Progress::new(run.t0(), run.t_end()));
+        let outcome = run.run_into(&mut csv);
         if let Some(progress) = &mut csv.progress {
             progress.finish();
         }
         let flushed = csv.flush();
-        let (stats, stopped, error) = match result {
-            Ok((stats, stopped)) => (stats, stopped, None),
-            Err((stats, e)) => (stats, None, Some(e)),
-        };
-        if let Some(Error::Cancelled { t, .. }) = error {
+        let (stats, track) = (&outcome.stats, &outcome.track);
+        if let Some(Error::Cancelled { t, .. }) = outcome.error {
             let kept = match flushed {
-                Ok(()) => format!("{} records kept in {}", csv.records, csv.destination()),
+                Ok(()) => format!("{} records kept in {}", track.records, csv.destination()),
                 Err(f) => format!("the records could not all be kept: {f}"),
             };
-            let last = csv
+            let last = track
                 .last_t
                 .map_or_else(String::new, |t| format!(" (the last at t = {t})"));
             let signal = super::interrupt::received();
@@ -201,41 +189,38 @@ impl SceneVisitor for Runner<'_> {
             }
             .into());
         }
-        if let Some(e) = error {
-            let last = csv
+        if let Some(e) = &outcome.error {
+            let last = track
                 .last_t
                 .map_or_else(String::new, |t| format!(", the last at t = {t}"));
             let kept = match flushed {
-                Ok(()) => format!("; {} records kept in {}{last}", csv.records, csv.destination()),
+                Ok(()) => format!("; {} records kept in {}{last}", track.records, csv.destination()),
                 Err(_) if matches!(e, Error::Io { .. }) => String::new(),
                 Err(f) => format!("; {f}"),
             };
             return Err(anyhow!("{e}; stopped after {} steps{kept}", stats.steps));
         }
         flushed?;
-        // what the scene's stop condition found: where the run stopped, or that it did not
-        let stop = stop.map(|stop| match &stopped {
-            Some(event) => (stop.report)(&setup.model, event.t, &event.y),
-            None => format!("no {} before t = {t_end}", stop.event),
-        });
         let summary = summary(
             &format!("{} on {}", method.name(), setup.name),
-            &stats,
-            adaptive,
-            &csv,
-            stop,
+            stats,
+            matches!(options.steps, Steps::Adaptive { .. }),
+            track,
+            &csv.destination(),
+            run.stop_sentence(outcome.stopped.as_ref()),
         );
         // The summary is information, not output: a closed stderr is not an error.
         let _ = writeln!(std::io::stderr(), "{summary}");
-        if let Some((e, _)) = csv.energy_drift().filter(|(e, _)| !e.is_finite()) {
+        if let Some((e, _)) = track.energy_drift().filter(|(e, _)| !e.is_finite()) {
             let _ = writeln!(
                 std::io::stderr(),
                 "warning: the energy drift is {e}: an energy was not finite (E0 = {}), so the energy column \
                  says nothing about the accuracy of this run",
-                csv.e0.unwrap_or(f64::NAN)
+                track.e0.unwrap_or(f64::NAN)
             );
         }
-        // beside the CSV when it is a regular file; a pipe, stdout or a device gets none
+        // beside the CSV when it is a regular file; for stdout, a pipe or a device, beside
+        // the default output
         let beside_csv = std::fs::metadata(&path).is_ok_and(|m| m.is_file());
         let stem = if beside_csv { &path } else { &default_path }.with_extension("");
         let pictures = super::pictures::draw_run(&csv.sample, &stem, &setup.name, method.name());
@@ -251,11 +236,12 @@ impl SceneVisitor for Runner<'_> {
 }
 
 /// The one-line summary of a finished run.
-fn summary<S: Scene>(
+fn summary(
     what: &str,
     stats: &Stats,
     adaptive: bool,
-    csv: &CsvRecorder<'_, S>,
+    track: &Track,
+    destination: &str,
     stop: Option<String>,
 ) -> String {
     let mut parts = vec![format!("{what}: {} steps", stats.steps)];
@@ -269,15 +255,15 @@ fn summary<S: Scene>(
     if stats.jacobians > 0 {
         parts.push(format!("{} Jacobians", stats.jacobians));
     }
-    match csv.energy_drift() {
+    match track.energy_drift() {
         Some((d, true)) => parts.push(format!("max |dE/E0| {d:.3e}")),
         Some((d, false)) => parts.push(format!("max |dE| {d:.3e}")),
         None => {}
     }
-    if let Some(e) = csv.max_error {
+    if let Some(e) = track.max_error {
         parts.push(format!("max error vs exact {e:.3e}"));
     }
     parts.extend(stop);
-    parts.push(format!("{} records in {}", csv.records, csv.destination()));
+    parts.push(format!("{} records in {destination}", track.records));
     parts.join(", ")
 }

@@ -2,12 +2,13 @@
 //! verdict line computed from the runs, gathered in `index.html` and `summary.md`.
 
 use super::choice;
+use super::pipeline::{deviation, Options, SceneRun, Steps};
 use super::plot::{draw, Chart, Scale, Series};
 use anyhow::Context;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 use stormer::driver::Recorder;
-use stormer::{Driver, Error, ImplicitOptions, State, StepControl};
+use stormer::{Error, State};
 use stormer_app::scenes::{self, Scene, SceneVisitor, Setup};
 
 /// Arguments of `stormer tour`.
@@ -48,9 +49,14 @@ impl Trace {
             .collect()
     }
 
+    /// The energy of the first record (NaN without one).
+    fn e0(&self) -> f64 {
+        self.rows.first().and_then(|r| r.2).unwrap_or(f64::NAN)
+    }
+
     /// `(t, E - E0)`, the first record left out.
     fn energy_error(&self) -> Vec<(f64, f64)> {
-        let e0 = self.rows.first().and_then(|r| r.2).unwrap_or(f64::NAN);
+        let e0 = self.e0();
         self.rows
             .iter()
             .skip(1)
@@ -60,7 +66,7 @@ impl Trace {
 
     /// `(t, |E - E0| / |E0|)`.
     fn relative_energy_error(&self) -> Vec<(f64, f64)> {
-        let e0 = self.rows.first().and_then(|r| r.2).unwrap_or(f64::NAN).abs();
+        let e0 = self.e0().abs();
         self.energy_error()
             .into_iter()
             .map(|(t, d)| (t, d.abs() / e0))
@@ -99,18 +105,13 @@ impl Trace {
 /// In-memory recorder.
 struct Memory<'a, S: Scene> {
     setup: &'a Setup<S>,
-    trace: Trace,
+    rows: Vec<Row>,
 }
 
 impl<S: Scene> Recorder<f64, S::State> for Memory<'_, S> {
     fn record(&mut self, t: f64, y: &S::State, energy: Option<f64>) -> Result<(), Error> {
-        let dev = self.setup.exact(t).map(|exact| {
-            y.as_slice()
-                .iter()
-                .zip(exact.as_slice())
-                .fold(0.0f64, |m, (a, b)| m.max((a - b).abs()))
-        });
-        self.trace.rows.push((t, y.as_slice().to_vec(), energy, dev));
+        let dev = deviation(self.setup, t, y);
+        self.rows.push((t, y.as_slice().to_vec(), energy, dev));
         Ok(())
     }
 }
@@ -129,38 +130,51 @@ impl SceneVisitor for Sim<'_> {
 
     fn visit<S: Scene>(self, setup: Setup<S>) -> anyhow::Result<Trace> {
         let method = choice::resolve(self.method, self.alpha)?;
-        let mut stepper = method.stepper_for(&setup.model, &setup.y0, &ImplicitOptions::fixed_point())?;
-        let (t0, t_end) = (setup.run.t0, self.t_end.unwrap_or(setup.run.t_end));
-        let mut driver = Driver::with(StepControl::Fixed(self.dt.unwrap_or(setup.run.dt)))
-            .every(self.every.unwrap_or(setup.run.every));
-        let stop = setup.model.stop();
-        if let Some(stop) = stop {
-            let model = &setup.model;
-            driver = driver.stop_when(move |t, y| (stop.g)(model, t, y));
-        }
+        let options = Options {
+            steps: Steps::Fixed(self.dt),
+            t_end: self.t_end,
+            every: self.every,
+            ..Options::default()
+        };
+        let mut run = SceneRun::new(&setup, &method, &options)?;
         let mut memory = Memory {
             setup: &setup,
-            trace: Trace {
-                names: setup.model.components(&setup.y0),
-                ..Trace::default()
-            },
+            rows: Vec::new(),
         };
-        let outcome = driver.run_into(&setup.model, &mut stepper, t0, &setup.y0, t_end, &mut memory);
-        let (_, stopped) = outcome.map_err(|(stats, e)| anyhow::anyhow!("{e}; stopped after {} steps", stats.steps))?;
-        let mut trace = memory.trace;
-        if let (Some(stop), Some(event)) = (stop, stopped) {
-            let sentence = (stop.report)(&setup.model, event.t, &event.y);
-            trace.stop = Some((sentence, event.t, event.y.as_slice().to_vec()));
+        let outcome = run.run_into(&mut memory);
+        if let Some(e) = outcome.error {
+            anyhow::bail!("{e}; stopped after {} steps", outcome.stats.steps);
         }
-        let t_last = trace.rows.last().map_or(t_end, |r| r.0);
-        trace.exact_end = setup.exact(t_last).map(|s| s.as_slice().to_vec());
-        trace.exact_start = setup.exact(t0).map(|s| s.as_slice().to_vec());
-        Ok(trace)
+        let stop = outcome.stopped.as_ref().and_then(|event| {
+            let sentence = run.stop_sentence(Some(event))?;
+            Some((sentence, event.t, event.y.as_slice().to_vec()))
+        });
+        Ok(Trace {
+            names: setup.model.components(&setup.y0),
+            rows: memory.rows,
+            stop,
+            exact_end: run.exact_at_end(&outcome),
+            exact_start: setup.exact(run.t0()).map(|s| s.as_slice().to_vec()),
+        })
     }
 }
 
 fn sim(scene: &str, method: &str, dt: Option<f64>, t_end: Option<f64>, every: Option<u64>) -> anyhow::Result<Trace> {
     sim_alpha(scene, method, None, dt, t_end, every)
+}
+
+/// The runs `(label, method)` of a scene, each at step `dt` to `t_end` with a record
+/// every `every` steps.
+fn sims<'a>(
+    scene: &str,
+    runs: &[(&'a str, &str)],
+    dt: f64,
+    t_end: f64,
+    every: u64,
+) -> anyhow::Result<Vec<(&'a str, Trace)>> {
+    runs.iter()
+        .map(|&(label, m)| Ok((label, sim(scene, m, Some(dt), Some(t_end), Some(every))?)))
+        .collect()
 }
 
 fn sim_alpha(
@@ -227,10 +241,7 @@ fn drift_word(t: &Trace) -> &'static str {
 /// Pendulum: explicit Euler against Stormer-Verlet, energy over t = 60.
 fn pendulum(out: &Path) -> anyhow::Result<Section> {
     let runs = [("explicit Euler", "euler"), ("Stormer-Verlet", "stormer_verlet_dkd")];
-    let mut traces = Vec::new();
-    for (label, m) in runs {
-        traces.push((label, sim("pendulum", m, Some(0.01), Some(60.0), Some(10))?));
-    }
+    let traces = sims("pendulum", &runs, 0.01, 60.0, 10)?;
     let series: Vec<Series> = traces.iter().map(|(l, t)| Series::line(*l, t.energy_error())).collect();
     let chart = Chart::new("pendulum, h = 0.01: energy error against time", "t", "E - E0");
     let energy = picture(out, "pendulum-energy.svg", &chart, &series)?;
@@ -280,7 +291,7 @@ fn energy_table(traces: &[(&str, Trace)]) -> Vec<Vec<String>> {
     ]];
     for (l, t) in traces {
         let (a, b) = t.quarters();
-        let e0 = t.rows.first().and_then(|r| r.2).unwrap_or(f64::NAN).abs();
+        let e0 = t.e0().abs();
         table.push(vec![
             (*l).into(),
             sci(t.max_abs_de() / e0),
@@ -293,27 +304,28 @@ fn energy_table(traces: &[(&str, Trace)]) -> Vec<Vec<String>> {
 }
 
 fn max_rel(t: &Trace) -> f64 {
-    let e0 = t.rows.first().and_then(|r| r.2).unwrap_or(f64::NAN).abs();
-    t.max_abs_de() / e0
+    t.max_abs_de() / t.e0().abs()
 }
 
-/// Kepler: RK4 against velocity Verlet at h = 0.01 over 100 years (about 43 orbits).
-fn kepler(out: &Path) -> anyhow::Result<Section> {
-    let mut traces = Vec::new();
-    for (label, m) in [("RK4", "rk4"), ("velocity Verlet", "velocity_verlet_kdk")] {
-        traces.push((label, sim("kepler", m, Some(0.01), Some(100.0), Some(8))?));
-    }
+/// The picture of each run's `|E - E0| / |E0|` against time, on a log scale.
+fn relative_energy_picture(out: &Path, file: &str, chart: Chart, traces: &[(&str, Trace)]) -> anyhow::Result<Picture> {
     let series: Vec<Series> = traces
         .iter()
         .map(|(l, t)| Series::line(*l, t.relative_energy_error()))
         .collect();
+    picture(out, file, &chart.scales(Scale::Linear, Scale::Log), &series)
+}
+
+/// Kepler: RK4 against velocity Verlet at h = 0.01 over 100 years (about 43 orbits).
+fn kepler(out: &Path) -> anyhow::Result<Section> {
+    let runs = [("RK4", "rk4"), ("velocity Verlet", "velocity_verlet_kdk")];
+    let traces = sims("kepler", &runs, 0.01, 100.0, 8)?;
     let chart = Chart::new(
         "Kepler, h = 0.01 yr: energy error against time",
         "t (years)",
         "|E - E0| / |E0|",
-    )
-    .scales(Scale::Linear, Scale::Log);
-    let energy = picture(out, "kepler-energy.svg", &chart, &series)?;
+    );
+    let energy = relative_energy_picture(out, "kepler-energy.svg", chart, &traces)?;
     // the light body's orbit (the second body's x and y, whatever the components are called)
     let orbit: Vec<Series> = traces
         .iter()
@@ -356,24 +368,13 @@ fn solar(out: &Path) -> anyhow::Result<Section> {
         ("Stormer-Verlet", "stormer_verlet_dkd"),
         ("triple jump (order 4)", "triple_jump4"),
     ];
-    let mut traces = Vec::new();
-    for (label, m) in runs {
-        traces.push((
-            label,
-            sim("outer-solar-system", m, Some(10.0), Some(40000.0), Some(10))?,
-        ));
-    }
-    let series: Vec<Series> = traces
-        .iter()
-        .map(|(l, t)| Series::line(*l, t.relative_energy_error()))
-        .collect();
+    let traces = sims("outer-solar-system", &runs, 10.0, 40000.0, 10)?;
     let chart = Chart::new(
         "outer solar system, dt = 10 days: energy error",
         "t (days)",
         "|H - H0| / |H0|",
-    )
-    .scales(Scale::Linear, Scale::Log);
-    let energy = picture(out, "solar-energy.svg", &chart, &series)?;
+    );
+    let energy = relative_energy_picture(out, "solar-energy.svg", chart, &traces)?;
     let [e, s, v, c] = [0, 1, 2, 3].map(|k| &traces[k].1);
     let smaller = |a: &Trace, b: &Trace| {
         if max_rel(a) < max_rel(b) {
@@ -413,7 +414,7 @@ fn coulomb(out: &Path) -> anyhow::Result<Section> {
     let e: Vec<(f64, f64)> = t.rows.iter().filter_map(|r| r.2.map(|e| (r.0, e))).collect();
     let chart = Chart::new("coulomb-magnetic, h = 0.01: energy against time", "t", "E");
     let energy = picture(out, "coulomb-energy.svg", &chart, &[Series::line(label, e)])?;
-    let e0 = t.rows.first().and_then(|r| r.2).unwrap_or(f64::NAN);
+    let e0 = t.e0();
     let verdict = format!(
         "E(0) = {e0:.6} (-1/sqrt(3) = {:.6}); magnetic Stormer-Verlet's energy {} over t = 100 (max |dE/E0| = {}).",
         -1.0 / 3f64.sqrt(),

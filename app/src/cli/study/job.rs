@@ -3,12 +3,12 @@
 use super::{fnv1a, Control, Kind, MethodEntry, ReferenceInfo, Row, StudyId};
 use crate::cli::choice;
 use crate::cli::output::{file_safe, one_line};
+use crate::cli::pipeline::{max_difference, Options, SceneRun, Steps};
 use anyhow::Context;
 use serde::{Deserialize, Serialize};
 use std::path::Path;
 use std::time::Instant;
-use stormer::driver::Recorder;
-use stormer::{registry, Driver, Error, ImplicitOptions, State, StepControl, Stepper, Tolerances};
+use stormer::{Error, Method, Tolerances};
 use stormer_app::scenes::{self, AnyScene, Scene, SceneVisitor, Setup};
 
 /// A scene's file text, parsed again by each job (each worker thread has its own model).
@@ -58,14 +58,17 @@ pub struct Plan {
     t_end: f64,
     /// The methods as resolved on the scene.
     pub methods: Vec<MethodEntry>,
+    /// The same methods, resolved once for the whole study.
+    resolved: Vec<Method>,
     truth: &'static str,
     energy: bool,
+    stop: Option<&'static str>,
 }
 
 impl Plan {
-    /// The study with this work list.
-    pub fn into_study(self, kind: Kind, jobs: Vec<super::Job>) -> StudyId {
-        StudyId {
+    /// The study with this work list, and the methods its jobs run.
+    pub fn into_study(self, kind: Kind, jobs: Vec<super::Job>) -> (StudyId, Vec<Method>) {
+        let study = StudyId {
             kind,
             scene: self.scene,
             scene_hash: self.scene_hash,
@@ -75,7 +78,9 @@ impl Plan {
             jobs,
             truth: self.truth.into(),
             energy: self.energy,
-        }
+            stop: self.stop.map(String::from),
+        };
+        (study, self.resolved)
     }
 }
 
@@ -106,9 +111,10 @@ impl SceneVisitor for Planner<'_> {
             ));
         }
         let mut methods: Vec<MethodEntry> = Vec::new();
+        let mut resolved = Vec::new();
         for given in self.methods {
             let method = choice::resolve(given, None)?;
-            let stepper = method.stepper_for(&setup.model, &setup.y0, &ImplicitOptions::fixed_point())?;
+            let run = SceneRun::new(&setup, &method, &Options::default())?;
             let label = method.name().to_string();
             if methods.iter().any(|m| m.label == label) {
                 return Err(Error::invalid("--methods", format!("{label} is given twice")));
@@ -116,9 +122,10 @@ impl SceneVisitor for Planner<'_> {
             methods.push(MethodEntry {
                 given: given.clone(),
                 label,
-                order: stepper.info().order,
-                embedded: stepper.error_order().is_some(),
+                order: run.stepper().info().order,
+                embedded: run.stepper().error_order().is_some(),
             });
+            resolved.push(method);
         }
         Ok(Plan {
             scene: setup.name.clone(),
@@ -126,6 +133,8 @@ impl SceneVisitor for Planner<'_> {
             t0,
             t_end,
             methods,
+            resolved,
+            stop: setup.model.stop().map(|stop| stop.event),
             truth: if setup.exact(t_end).is_some() {
                 "exact"
             } else {
@@ -155,7 +164,8 @@ pub struct Reference {
 }
 
 const RECIPE: &str = "dop853, rtol = atol = 1e-14; uncertainty = max difference from rtol = atol = 1e-13";
-const REFERENCE_FORMAT: &str = "stormer-reference/1";
+/// Version 2: the reference stops where the scene's stop condition ends its runs.
+const REFERENCE_FORMAT: &str = "stormer-reference/2";
 
 #[derive(Debug, Serialize, Deserialize)]
 struct CachedReference {
@@ -236,21 +246,21 @@ impl SceneVisitor for ReferenceRunner {
     type Output = Result<(Vec<f64>, f64), Error>;
 
     fn visit<S: Scene>(self, setup: Setup<S>) -> Self::Output {
+        let dop853 = Method::resolve("dop853")?;
         let run = |tol: f64| -> Result<Vec<f64>, Error> {
-            let mut stepper = registry::stepper::<S>("dop853", &setup.y0, &ImplicitOptions::fixed_point())?;
-            let mut last = Measure::default();
-            Driver::adaptive(Tolerances::new(tol, tol))
-                .every(u64::MAX)
-                .run_into(
-                    &setup.model,
-                    &mut stepper,
-                    setup.run.t0,
-                    &setup.y0,
-                    self.t_end,
-                    &mut last,
-                )
-                .map_err(|(_, e)| e)?;
-            Ok(last.last)
+            let options = Options {
+                steps: Steps::Adaptive {
+                    tol: Tolerances::new(tol, tol),
+                    h0: None,
+                },
+                t_end: Some(self.t_end),
+                ..Options::default()
+            };
+            let outcome = SceneRun::new(&setup, &dop853, &options)?.run_quietly();
+            match outcome.error {
+                Some(e) => Err(e),
+                None => Ok(outcome.track.last),
+            }
         };
         let fine = run(1e-14)?;
         let coarse = run(1e-13)?;
@@ -258,44 +268,20 @@ impl SceneVisitor for ReferenceRunner {
     }
 }
 
-fn max_difference(a: &[f64], b: &[f64]) -> f64 {
-    a.iter().zip(b).fold(0.0f64, |m, (x, y)| m.max((x - y).abs()))
-}
-
-/// Keeps the last state and the largest energy drift.
-#[derive(Default)]
-struct Measure {
-    e0: Option<f64>,
-    max_de: f64,
-    last: Vec<f64>,
-}
-
-impl<St: State<Scalar = f64>> Recorder<f64, St> for Measure {
-    fn record(&mut self, _t: f64, y: &St, energy: Option<f64>) -> Result<(), Error> {
-        if let Some(e) = energy {
-            let e0 = *self.e0.get_or_insert(e);
-            self.max_de = self.max_de.max((e - e0).abs());
-        }
-        self.last.clear();
-        self.last.extend_from_slice(y.as_slice());
-        Ok(())
-    }
-}
-
-/// Records nothing (the timing runs).
-struct Nothing;
-
-impl<St> Recorder<f64, St> for Nothing {
-    fn record(&mut self, _t: f64, _y: &St, _energy: Option<f64>) -> Result<(), Error> {
-        Ok(())
-    }
-}
-
-/// Runs job `j` of the study: one measuring run (final error, energy sampled at about a
-/// thousand records), then the timing runs without records.
-pub fn run(scene: &SceneText, study: &StudyId, j: usize, reference: Option<&Reference>, timing: Timing) -> Row {
+/// Runs job `j` of the study with its method (resolved once for the study, in
+/// `methods`): one measuring run (final error, energy sampled at about a thousand
+/// records), then the timing runs without records.
+pub fn run(
+    scene: &SceneText,
+    study: &StudyId,
+    methods: &[Method],
+    j: usize,
+    reference: Option<&Reference>,
+    timing: Timing,
+) -> Row {
     let runner = JobRunner {
         study,
+        method: &methods[study.jobs[j].method],
         j,
         reference,
         timing,
@@ -308,6 +294,7 @@ pub fn run(scene: &SceneText, study: &StudyId, j: usize, reference: Option<&Refe
 
 struct JobRunner<'a> {
     study: &'a StudyId,
+    method: &'a Method,
     j: usize,
     reference: Option<&'a Reference>,
     timing: Timing,
@@ -336,61 +323,56 @@ impl SceneVisitor for JobRunner<'_> {
     fn visit<S: Scene>(self, setup: Setup<S>) -> Row {
         let study = self.study;
         let job = study.jobs[self.j];
-        let entry = &study.methods[job.method];
-        let (t0, t_end) = (study.t0, study.t_end);
-        let span = t_end - t0;
-        let mut stepper = match choice::resolve(&entry.given, None)
-            .and_then(|c| c.stepper_for(&setup.model, &setup.y0, &ImplicitOptions::fixed_point()))
-        {
-            Ok(s) => s,
-            Err(e) => return self.failed(Default::default(), &e),
-        };
+        let span = study.t_end - study.t0;
         // about a thousand energy samples at a fixed cadence; every step when adaptive
         let cadence = |n: f64| ((n / 1000.0).floor() as u64).max(1);
-        let (control, every) = match job.control {
-            Control::Dt(h) => (StepControl::Fixed(h), cadence((span / h).abs().ceil())),
-            Control::Steps(n) => (StepControl::Fixed(span / n as f64), cadence(n as f64)),
+        let (steps, every) = match job.control {
+            Control::Dt(h) => (Steps::Fixed(Some(h)), cadence((span / h).abs().ceil())),
+            Control::Steps(n) => (Steps::Fixed(Some(span / n as f64)), cadence(n as f64)),
             Control::Tolerance(tol) => (
-                StepControl::Adaptive {
+                Steps::Adaptive {
                     tol: Tolerances::new(tol, tol),
                     h0: None,
-                    h_max: None,
                 },
                 1,
             ),
         };
-        let mut measure = Measure::default();
-        let driver = Driver::with(control).every(every);
-        let stats = match driver.run_into(&setup.model, &mut stepper, t0, &setup.y0, t_end, &mut measure) {
-            Ok((stats, _)) => stats,
-            Err((stats, e)) => return self.failed(stats, &e),
+        let options = Options {
+            steps,
+            t_end: Some(study.t_end),
+            every: Some(every),
+            ..Options::default()
         };
-        let exact = setup.exact(t_end);
+        let mut run = match SceneRun::new(&setup, self.method, &options) {
+            Ok(run) => run,
+            Err(e) => return self.failed(Default::default(), &e),
+        };
+        let measured = run.measure();
+        if let Some(e) = &measured.error {
+            return self.failed(measured.stats, e);
+        }
+        let (stats, track) = (measured.stats, &measured.track);
+        // the truth where the run ended: at the end time, or where the scene's stop
+        // condition ended it (the reference stops there too)
+        let exact = run.exact_at_end(&measured);
         let truth: &[f64] = match (&exact, self.reference) {
-            (Some(y), _) => y.as_slice(),
+            (Some(y), _) => y,
             (None, Some(r)) => &r.state,
             (None, None) => &[],
         };
-        let error = (!truth.is_empty()).then(|| max_difference(&measure.last, truth));
+        let error = (!truth.is_empty()).then(|| max_difference(&track.last, truth));
         // below this an error is the reference's or the rounding's, not the method's
         let scale = truth.iter().fold(0.0f64, |m, x| m.max(x.abs()));
         let rounding = 10.0 * f64::EPSILON * stats.steps as f64 * scale;
         let floor = rounding.max(10.0 * self.reference.map_or(0.0, |r| r.info.uncertainty));
-        let energy_error = measure.e0.map(|e0| {
-            if e0 == 0.0 {
-                measure.max_de
-            } else {
-                measure.max_de / e0.abs()
-            }
-        });
-        let quiet = Driver::with(control).every(u64::MAX);
+        let energy_error = track.energy_drift().map(|(drift, _)| drift);
         let (mut best, mut total, mut runs) = (f64::INFINITY, 0.0, 0u32);
         loop {
             let start = Instant::now();
-            let r = quiet.run_into(&setup.model, &mut stepper, t0, &setup.y0, t_end, &mut Nothing);
+            let timed = run.run_quietly();
             let took = start.elapsed().as_secs_f64();
-            if let Err((stats, e)) = r {
-                return self.failed(stats, &e);
+            if let Some(e) = &timed.error {
+                return self.failed(timed.stats, e);
             }
             best = best.min(took);
             total += took;

@@ -14,7 +14,7 @@ use anyhow::{anyhow, bail, Context};
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 use std::path::{Path, PathBuf};
-use stormer::Error;
+use stormer::{Error, Method};
 
 pub use job::SceneText;
 
@@ -168,6 +168,10 @@ pub struct StudyId {
     pub truth: String,
     /// Whether the scene has an energy.
     pub energy: bool,
+    /// The event that ends the scene's runs before the end time, if it has one
+    /// (`landing`): errors are measured where it happens.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub stop: Option<String>,
 }
 
 impl StudyId {
@@ -311,7 +315,8 @@ pub fn compare(args: &CompareArgs) -> anyhow::Result<()> {
             }));
         }
     }
-    execute(&scene, plan.into_study(Kind::Compare, jobs), &args.common)
+    let (study, methods) = plan.into_study(Kind::Compare, jobs);
+    execute(&scene, study, &methods, &args.common)
 }
 
 /// `stormer scan`.
@@ -330,11 +335,12 @@ pub fn scan(args: &ScanArgs) -> anyhow::Result<()> {
             })
         })
         .collect();
-    execute(&scene, plan.into_study(Kind::Scan, jobs), &args.common)
+    let (study, methods) = plan.into_study(Kind::Scan, jobs);
+    execute(&scene, study, &methods, &args.common)
 }
 
 /// Runs the study's jobs (the shard's, with `--shard`) and writes the outputs.
-fn execute(scene: &SceneText, study: StudyId, common: &CommonArgs) -> anyhow::Result<()> {
+fn execute(scene: &SceneText, study: StudyId, methods: &[Method], common: &CommonArgs) -> anyhow::Result<()> {
     let shard = common.shard.unwrap_or((1, 1));
     let reference = if study.truth == "reference" {
         Some(job::reference(scene, &study, &common.cache)?)
@@ -348,7 +354,7 @@ fn execute(scene: &SceneText, study: StudyId, common: &CommonArgs) -> anyhow::Re
     let mine = shard_jobs(study.jobs.len(), shard);
     let work = || -> Vec<Row> {
         mine.par_iter()
-            .map(|&j| job::run(scene, &study, j, reference.as_ref(), timing))
+            .map(|&j| job::run(scene, &study, methods, j, reference.as_ref(), timing))
             .collect()
     };
     let rows = match common.jobs {

@@ -268,8 +268,12 @@ fn context(part: &Part) -> String {
         None => "the scene's exact solution".into(),
     };
     let runs = part.rows.iter().map(|r| r.timing_runs).max().unwrap_or(0);
+    let end = match &s.stop {
+        Some(event) => format!("at the {event} (where the scene's runs stop), or at the end if there is none before"),
+        None => "at the end".into(),
+    };
     format!(
-        "{} on {} (scene file hash {}), t from {} to {}: error = max over components of |y - y_true| at the end, against {truth}; \
+        "{} on {} (scene file hash {}), t from {} to {}: error = max over components of |y - y_true| {end}, against {truth}; \
          evaluations = right-hand-side (force) evaluations, counted; time = best of up to {runs} runs{}.",
         match s.kind {
             Kind::Compare => "compare",
@@ -391,7 +395,10 @@ fn draw(part: &Part, out: &Path, fits: Option<&[Fit]>) -> anyhow::Result<Vec<Pat
     } else {
         "exact solution"
     };
-    let error_label = format!("error at t = {} (max norm, vs {truth})", s.t_end);
+    let error_label = match &s.stop {
+        Some(event) => format!("error at the {event} or t = {} (max norm, vs {truth})", s.t_end),
+        None => format!("error at t = {} (max norm, vs {truth})", s.t_end),
+    };
     let mut files = Vec::new();
     match s.kind {
         Kind::Compare => {

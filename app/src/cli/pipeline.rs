@@ -1,0 +1,301 @@
+//! One run of a scene with one method, the same for every command: the method's stepper
+//! on the scene's model, the driver with the scene's stop condition (the free kick ends
+//! where the ball lands), fixed or adaptive steps, the compensated form, a record every N
+//! steps, the cancel flag, and what the records tell (energy drift, deviation from the
+//! exact solution, the last state). `run`, `compare`, `scan` (their jobs and reference)
+//! and `tour` all run scenes through [`SceneRun`], so they stop and measure alike.
+
+use std::sync::atomic::AtomicBool;
+use stormer::driver::{Recorder, StopEvent};
+use stormer::{Driver, Error, ImplicitOptions, Method, State, Stats, StepControl, Stepper, Tolerances};
+use stormer_app::scenes::{Scene, Setup};
+
+/// How the steps are chosen.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Steps {
+    /// Fixed steps of this size, or of the scene's `dt` when `None`.
+    Fixed(Option<f64>),
+    /// Adaptive steps within `tol` (methods with an embedded pair), the first of size `h0`
+    /// when given.
+    Adaptive {
+        /// Tolerances of the scaled error norm.
+        tol: Tolerances<f64>,
+        /// First step size.
+        h0: Option<f64>,
+    },
+}
+
+/// What a run changes from the scene file's `[run]` settings; `None` keeps the file's.
+#[derive(Debug, Clone)]
+pub struct Options {
+    /// The step control.
+    pub steps: Steps,
+    /// End time.
+    pub t_end: Option<f64>,
+    /// A record every this many steps (the first and last are always recorded).
+    pub every: Option<u64>,
+    /// How implicit methods solve their stage equations.
+    pub implicit: ImplicitOptions,
+    /// Compensated (Kahan) summation of each step's increment.
+    pub compensated: bool,
+    /// The run stops with [`Error::Cancelled`] once this flag is set (Ctrl-C).
+    pub cancel: Option<&'static AtomicBool>,
+}
+
+impl Default for Options {
+    /// The scene file's settings, fixed steps, fixed-point iteration, not compensated.
+    fn default() -> Self {
+        Options {
+            steps: Steps::Fixed(None),
+            t_end: None,
+            every: None,
+            implicit: ImplicitOptions::fixed_point(),
+            compensated: false,
+            cancel: None,
+        }
+    }
+}
+
+/// A scene ready to run with one method: its stepper is built and checked (a method the
+/// scene refuses, or one that cannot take the options, fails here, before any output is
+/// created). Run it once with records ([`SceneRun::run_into`]), and as often as wanted
+/// without ([`SceneRun::run_quietly`]).
+pub struct SceneRun<'s, S: Scene> {
+    setup: &'s Setup<S>,
+    stepper: Box<dyn Stepper<S>>,
+    control: StepControl<f64>,
+    t_end: f64,
+    every: u64,
+    compensated: bool,
+    cancel: Option<&'static AtomicBool>,
+}
+
+/// How a run ended and what its records told.
+#[derive(Debug)]
+pub struct Outcome<S: Scene> {
+    /// The work done (up to the failure, when there is one).
+    pub stats: Stats,
+    /// Where the scene's stop condition ended the run, if it did.
+    pub stopped: Option<StopEvent<f64, S::State>>,
+    /// Why the run stopped early (it diverged, was cancelled, could not write a record).
+    pub error: Option<Error>,
+    /// What the records told.
+    pub track: Track,
+}
+
+/// What the records of a run tell, kept as they are made.
+#[derive(Debug, Clone, Default)]
+pub struct Track {
+    /// Records made.
+    pub records: u64,
+    /// Time of the last record.
+    pub last_t: Option<f64>,
+    /// The last recorded state's components.
+    pub last: Vec<f64>,
+    /// Energy of the first record.
+    pub e0: Option<f64>,
+    /// max |E - E0| over the records; NaN once an energy is not finite, never a
+    /// reassuring 0.
+    pub max_de: f64,
+    /// max over records and components of |y - y_exact|, when there is an exact solution.
+    pub max_error: Option<f64>,
+}
+
+impl Track {
+    /// The largest relative energy drift `max |E - E0| / |E0|` (absolute when `E0 = 0`),
+    /// and whether it is relative.
+    pub fn energy_drift(&self) -> Option<(f64, bool)> {
+        let e0 = self.e0?;
+        Some(if e0 == 0.0 {
+            (self.max_de, false)
+        } else {
+            (self.max_de / e0.abs(), true)
+        })
+    }
+}
+
+/// `max_i |y_i - exact_i|` at `t`, when the scene has an exact solution.
+pub fn deviation<S: Scene>(setup: &Setup<S>, t: f64, y: &S::State) -> Option<f64> {
+    let exact = setup.exact(t)?;
+    Some(max_difference(y.as_slice(), exact.as_slice()))
+}
+
+/// `max_i |a_i - b_i|`.
+pub fn max_difference(a: &[f64], b: &[f64]) -> f64 {
+    a.iter().zip(b).fold(0.0f64, |m, (x, y)| m.max((x - y).abs()))
+}
+
+impl<'s, S: Scene> SceneRun<'s, S> {
+    /// Builds `method`'s stepper on the scene and the run's settings from `options`.
+    pub fn new(setup: &'s Setup<S>, method: &Method, options: &Options) -> Result<Self, Error> {
+        let mut stepper = method.stepper_for(&setup.model, &setup.y0, &options.implicit)?;
+        if options.compensated {
+            // refused here, before an output file is created (the driver turns it on too)
+            stepper.set_compensated(true)?;
+        }
+        let control = match options.steps {
+            Steps::Fixed(h) => StepControl::Fixed(h.unwrap_or(setup.run.dt)),
+            Steps::Adaptive { .. } if stepper.error_order().is_none() => {
+                return Err(Error::Unsupported {
+                    name: method.name().to_string(),
+                    reason: "it has no embedded error estimate, which adaptive steps (--rtol/--atol) need; \
+                             use fixed steps (--dt), or a method with an embedded order (`stormer methods`)"
+                        .into(),
+                });
+            }
+            Steps::Adaptive { tol, h0 } => StepControl::Adaptive { tol, h0, h_max: None },
+        };
+        Ok(SceneRun {
+            setup,
+            stepper,
+            control,
+            t_end: options.t_end.unwrap_or(setup.run.t_end),
+            every: options.every.unwrap_or(setup.run.every),
+            compensated: options.compensated,
+            cancel: options.cancel,
+        })
+    }
+
+    /// The stepper (its order, its embedded pair).
+    pub fn stepper(&self) -> &dyn Stepper<S> {
+        &*self.stepper
+    }
+
+    /// Start time (the scene's).
+    pub fn t0(&self) -> f64 {
+        self.setup.run.t0
+    }
+
+    /// End time, unless the scene's stop condition ends the run before.
+    pub fn t_end(&self) -> f64 {
+        self.t_end
+    }
+
+    /// Refuses a run that would compute nothing (an empty span, a step longer than the
+    /// span), before the caller creates its outputs.
+    pub fn check_span(&self) -> Result<(), Error> {
+        self.driver(1).check_span(self.t0(), self.t_end)
+    }
+
+    /// The driver of this run, recording every `every` steps.
+    fn driver(&self, every: u64) -> Driver<'s, f64, S::State> {
+        let mut driver = Driver::with(self.control).every(every);
+        if let Some(stop) = self.setup.model.stop() {
+            let model = &self.setup.model;
+            driver = driver.stop_when(move |t, y| (stop.g)(model, t, y));
+        }
+        if self.compensated {
+            driver = driver.compensated();
+        }
+        if let Some(flag) = self.cancel {
+            driver = driver.cancel_when(flag);
+        }
+        driver
+    }
+
+    /// Runs, handing each record to `out` as it is made.
+    pub fn run_into<R: Recorder<f64, S::State> + ?Sized>(&mut self, out: &mut R) -> Outcome<S> {
+        self.run_recording(self.every, out)
+    }
+
+    /// Runs keeping of the records only what they tell (the outcome's track).
+    pub fn measure(&mut self) -> Outcome<S> {
+        self.run_recording(self.every, &mut Nothing)
+    }
+
+    /// Runs with no records but the first and the last (a study's reference and timing
+    /// runs): what the outcome's track tells is of those two.
+    pub fn run_quietly(&mut self) -> Outcome<S> {
+        self.run_recording(u64::MAX, &mut Nothing)
+    }
+
+    fn run_recording<R: Recorder<f64, S::State> + ?Sized>(&mut self, every: u64, out: &mut R) -> Outcome<S> {
+        let mut tracking = Tracking {
+            setup: self.setup,
+            track: Track::default(),
+            out,
+        };
+        let (driver, setup) = (self.driver(every), self.setup);
+        let result = driver.run_into(
+            &setup.model,
+            &mut *self.stepper,
+            setup.run.t0,
+            &setup.y0,
+            self.t_end,
+            &mut tracking,
+        );
+        let track = tracking.track;
+        match result {
+            Ok((stats, stopped)) => Outcome {
+                stats,
+                stopped,
+                error: None,
+                track,
+            },
+            Err((stats, e)) => Outcome {
+                stats,
+                stopped: None,
+                error: Some(e),
+                track,
+            },
+        }
+    }
+
+    /// The scene's sentence about its stop condition: where it ended the run ("the ball
+    /// lands at ..."), or that it did not before the end; `None` for a scene without one.
+    pub fn stop_sentence(&self, stopped: Option<&StopEvent<f64, S::State>>) -> Option<String> {
+        let stop = self.setup.model.stop()?;
+        Some(match stopped {
+            Some(event) => (stop.report)(&self.setup.model, event.t, &event.y),
+            None => format!("no {} before t = {}", stop.event, self.t_end),
+        })
+    }
+
+    /// The exact state where the run ended, at its stop event or at the end time, when
+    /// the scene has an exact solution.
+    pub fn exact_at_end(&self, outcome: &Outcome<S>) -> Option<Vec<f64>> {
+        let t = outcome.stopped.as_ref().map_or(self.t_end, |event| event.t);
+        self.setup.exact(t).map(|y| y.as_slice().to_vec())
+    }
+}
+
+/// Keeps the [`Track`] of the records on their way to `out`.
+struct Tracking<'a, S: Scene, R: ?Sized> {
+    setup: &'a Setup<S>,
+    track: Track,
+    out: &'a mut R,
+}
+
+impl<S: Scene, R: Recorder<f64, S::State> + ?Sized> Recorder<f64, S::State> for Tracking<'_, S, R> {
+    fn record(&mut self, t: f64, y: &S::State, energy: Option<f64>) -> Result<(), Error> {
+        self.out.record(t, y, energy)?;
+        let track = &mut self.track;
+        if let Some(e) = energy {
+            let e0 = *track.e0.get_or_insert(e);
+            // `f64::max` would drop a NaN (inf - inf) and report no drift at all
+            let de = (e - e0).abs();
+            track.max_de = if de.is_finite() && track.max_de.is_finite() {
+                track.max_de.max(de)
+            } else {
+                f64::NAN
+            };
+        }
+        if let Some(dev) = deviation(self.setup, t, y) {
+            track.max_error = Some(track.max_error.map_or(dev, |m| m.max(dev)));
+        }
+        track.last.clear();
+        track.last.extend_from_slice(y.as_slice());
+        track.last_t = Some(t);
+        track.records += 1;
+        Ok(())
+    }
+}
+
+/// Records nothing (the timing runs).
+struct Nothing;
+
+impl<St> Recorder<f64, St> for Nothing {
+    fn record(&mut self, _t: f64, _y: &St, _energy: Option<f64>) -> Result<(), Error> {
+        Ok(())
+    }
+}
