@@ -10,6 +10,7 @@ mod error;
 mod families;
 pub mod flows;
 pub mod hamiltonian;
+pub mod input;
 pub mod magnetic;
 pub mod method;
 pub mod models;

@@ -1,8 +1,10 @@
 //! Bad input never panics: the binary on a corpus of bad scene and method files
-//! (tests/bad_input/) answers with one clear error line and a non-zero exit, and the
+//! and shards (tests/bad_input/, with what each must get in EXPECTED.txt) answers with one
+//! clear error line and a non-zero exit, and the
 //! parsers, fed arbitrary text, return errors instead of panicking (proptest).
 
 use proptest::prelude::*;
+use std::collections::HashMap;
 use std::path::Path;
 use std::process::Command;
 use stormer::{Splitting, Tableau};
@@ -13,17 +15,34 @@ fn corpus() -> Vec<std::path::PathBuf> {
     let mut files: Vec<_> = std::fs::read_dir(&dir)
         .unwrap()
         .map(|e| e.unwrap().path())
-        .filter(|p| p.extension().is_some_and(|e| e == "toml"))
+        .filter(|p| p.extension().is_some_and(|e| e == "toml" || e == "json"))
         .collect();
     files.sort();
     files
 }
 
-/// Every bad file: non-zero exit, one line on stderr naming what is wrong, no panic.
+/// `bad_input/EXPECTED.txt`: what each file must get.
+fn expected() -> HashMap<String, String> {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/bad_input/EXPECTED.txt");
+    std::fs::read_to_string(path)
+        .unwrap()
+        .lines()
+        .filter(|l| !l.starts_with('#') && !l.trim().is_empty())
+        .map(|l| {
+            let (file, text) = l.split_once(": ").expect("FILE: TEXT");
+            (file.to_string(), text.to_string())
+        })
+        .collect()
+}
+
+/// Every bad file: non-zero exit, one line on stderr with what EXPECTED.txt says it must
+/// get, no panic.
 #[test]
 fn the_binary_refuses_every_bad_file_without_panicking() {
     let files = corpus();
-    assert!(files.len() >= 20);
+    let expected = expected();
+    assert!(files.len() >= 30);
+    assert_eq!(files.len(), expected.len(), "one line of EXPECTED.txt per file");
     let dir = std::env::temp_dir().join(format!("stormer-bad-input-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     for file in files {
@@ -31,6 +50,8 @@ fn the_binary_refuses_every_bad_file_without_panicking() {
         let path = file.to_string_lossy().to_string();
         let args: Vec<&str> = if name.starts_with("scene_") {
             vec!["run", &path, "--t-end", "0.1"]
+        } else if name.starts_with("shard_") {
+            vec!["merge", &path]
         } else {
             vec!["verify", &path]
         };
@@ -40,10 +61,15 @@ fn the_binary_refuses_every_bad_file_without_panicking() {
             .output()
             .unwrap();
         let stderr = String::from_utf8_lossy(&out.stderr);
-        assert!(!out.status.success(), "{name}: accepted\n{stderr}");
+        assert_eq!(out.status.code(), Some(1), "{name}: exit code\n{stderr}");
         assert!(!stderr.contains("panicked"), "{name}: {stderr}");
         assert_eq!(stderr.trim().lines().count(), 1, "{name}: not one line:\n{stderr}");
         assert!(stderr.starts_with("error: "), "{name}: {stderr}");
+        let must = expected
+            .get(&name)
+            .unwrap_or_else(|| panic!("{name} is not in EXPECTED.txt"));
+        assert!(stderr.contains(must), "{name}: expected {must:?} in\n{stderr}");
+        assert!(stderr.contains(&name), "{name}: the file is not named in\n{stderr}");
     }
     std::fs::remove_dir_all(&dir).unwrap();
 }

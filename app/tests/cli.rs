@@ -1683,7 +1683,7 @@ fn a_study_in_three_shards_merges_into_the_whole() {
     );
     assert_error(&out, "different studies");
     let out = stormer(&dir, &["merge", "parts/none.json"]);
-    assert_error(&out, "cannot read parts/none.json");
+    assert_error(&out, "parts/none.json: cannot read the file");
 }
 
 /// `run` draws its pictures beside the CSV: the orbit in the plane (one line per body)

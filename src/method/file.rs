@@ -1,6 +1,7 @@
 //! Method files in the catalog's TOML format, shared by every family: one method at top
 //! level, or a `[[method]]` array whose entries of the wanted family are read.
 
+use crate::error::{one_line, toml_message};
 use crate::Error;
 use serde::de::DeserializeOwned;
 
@@ -20,23 +21,34 @@ where
         name: origin.to_string(),
         reason,
     };
-    let value: toml::Table = text.parse().map_err(|e: toml::de::Error| fail(e.to_string()))?;
-    let entries = match value.get("method") {
-        Some(toml::Value::Array(list)) => list
-            .iter()
-            .filter(|m| wanted(m.get("family").and_then(|f| f.as_str())))
-            .cloned()
-            .collect(),
+    let value: toml::Table = text.parse().map_err(|e| fail(toml_message(&e, text)))?;
+    let list = match value.get("method") {
+        Some(toml::Value::Array(list)) => list,
         Some(_) => return Err(fail("`method` must be an array of tables ([[method]])".into())),
-        None => vec![toml::Value::Table(value)],
+        None => {
+            // one method at top level: read from the text, so that errors carry their line
+            let file: F = toml::from_str(text).map_err(|e| fail(toml_message(&e, text)))?;
+            return Ok(vec![convert(file)?]);
+        }
     };
-    entries
-        .into_iter()
+    // the lines of the `[[method]]` headers, for errors (an inline array has none)
+    let mut headers: Vec<usize> = text
+        .lines()
         .enumerate()
+        .filter(|(_, l)| l.trim_start().starts_with("[[method]]"))
+        .map(|(i, _)| i + 1)
+        .collect();
+    if headers.len() != list.len() {
+        headers.clear();
+    }
+    list.iter()
+        .enumerate()
+        .filter(|(_, m)| wanted(m.get("family").and_then(|f| f.as_str())))
         .map(|(i, entry)| {
-            let file: F = entry
-                .try_into()
-                .map_err(|e: toml::de::Error| fail(format!("method {}: {}", i + 1, e.to_string().trim())))?;
+            let file: F = entry.clone().try_into().map_err(|e: toml::de::Error| {
+                let at = headers.get(i).map_or_else(String::new, |l| format!(" (line {l})"));
+                fail(format!("method {}{at}: {}", i + 1, one_line(e.message())))
+            })?;
             convert(file)
         })
         .collect()
@@ -53,12 +65,13 @@ pub(super) fn exactly_one<M>(mut all: Vec<M>, origin: &str, what: &str) -> Resul
     }
 }
 
-/// The text of the method file at `path` and its name for messages.
+/// The text of the method file at `path` (read through the bound of [`crate::input`])
+/// and its name for messages.
 pub(super) fn read_file(path: &std::path::Path) -> Result<(String, String), Error> {
     let origin = path.display().to_string();
-    let text = std::fs::read_to_string(path).map_err(|e| Error::InvalidMethod {
+    let text = crate::input::read_text(path).map_err(|reason| Error::InvalidMethod {
         name: origin.clone(),
-        reason: format!("cannot read the file: {e}"),
+        reason,
     })?;
     Ok((text, origin))
 }

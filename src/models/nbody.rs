@@ -45,8 +45,9 @@ pub struct NBody<T, S, K = AnyShape> {
     names: Vec<String>,
     /// `1 / m_k` for every coordinate of body `k` (`n dim` values).
     inverse_mass: Vec<T>,
-    /// `G m_k m_l` for the pairs `k < l`, in the order the force visits them.
-    pair_gm: Vec<T>,
+    /// `G m_k` for every body: the pair `k < l` attracts with `(G m_k) m_l`, computed in
+    /// the force's loop (a table of the pairs would hold `n (n - 1) / 2` numbers).
+    gm: Vec<T>,
     state: PhantomData<fn() -> (S, K)>,
 }
 
@@ -58,7 +59,7 @@ impl<T: Real, S, K> Clone for NBody<T, S, K> {
             masses: self.masses.clone(),
             names: self.names.clone(),
             inverse_mass: self.inverse_mass.clone(),
-            pair_gm: self.pair_gm.clone(),
+            gm: self.gm.clone(),
             state: PhantomData,
         }
     }
@@ -110,12 +111,6 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> NBody<T, S, K> {
             }
         }
         let n = masses.len();
-        let mut pair_gm = Vec::with_capacity(n * (n - 1) / 2);
-        for k in 0..n {
-            for l in k + 1..n {
-                pair_gm.push(g * masses[k] * masses[l]);
-            }
-        }
         Ok(NBody {
             g,
             dim,
@@ -125,7 +120,7 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> NBody<T, S, K> {
                 .iter()
                 .flat_map(|&m| core::iter::repeat(T::one() / m).take(dim))
                 .collect(),
-            pair_gm,
+            gm: masses.iter().map(|&m| g * m).collect(),
             state: PhantomData,
         })
     }
@@ -249,18 +244,16 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> NBody<T, S, K> {
         for x in f.iter_mut() {
             *x = T::zero();
         }
-        let mut first_pair = 0;
         for k in 0..n {
-            let pairs = &self.pair_gm[first_pair..first_pair + (n - 1 - k)];
-            first_pair += n - 1 - k;
+            let gmk = self.gm[k];
             let (head, tail) = f.split_at_mut((k + 1) * D);
             let qk = &q[k * D..(k + 1) * D];
             // body k's share of its pairs with later bodies, summed in registers
             let mut fk = [T::zero(); D];
-            for ((ql, fl), &gm) in q[(k + 1) * D..]
+            for ((ql, fl), &ml) in q[(k + 1) * D..]
                 .chunks_exact(D)
                 .zip(tail.chunks_exact_mut(D))
-                .zip(pairs)
+                .zip(&self.masses[k + 1..])
             {
                 let mut d = [T::zero(); D];
                 for c in 0..D {
@@ -270,7 +263,7 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> NBody<T, S, K> {
                 for c in 1..D {
                     r2 += d[c] * d[c];
                 }
-                let s = gm / (r2 * r2.sqrt());
+                let s = gmk * ml / (r2 * r2.sqrt());
                 for c in 0..D {
                     let x = s * d[c];
                     fk[c] -= x;
@@ -292,10 +285,9 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> NBody<T, S, K> {
     #[inline(always)]
     pub(super) fn pairwise_fixed<const D: usize, const N: usize>(&self, q: &[T], f: &mut [T]) {
         let (q, f) = (&q[..N * D], &mut f[..N * D]);
-        let gm = &self.pair_gm[..N * (N - 1) / 2];
+        let (gm, m) = (&self.gm[..N], &self.masses[..N]);
         let qs: [[T; D]; N] = core::array::from_fn(|k| core::array::from_fn(|c| q[k * D + c]));
         let mut fs = [[T::zero(); D]; N];
-        let mut pair = 0;
         for k in 0..N {
             let mut fk = [T::zero(); D];
             for l in k + 1..N {
@@ -307,8 +299,7 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> NBody<T, S, K> {
                 for c in 1..D {
                     r2 += d[c] * d[c];
                 }
-                let s = gm[pair] / (r2 * r2.sqrt());
-                pair += 1;
+                let s = gm[k] * m[l] / (r2 * r2.sqrt());
                 for c in 0..D {
                     let x = s * d[c];
                     fk[c] -= x;
@@ -385,12 +376,10 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> NBody<T, S, K> {
         for x in f.iter_mut() {
             *x = T::zero();
         }
-        let mut pair = 0;
         for k in 0..n {
             for l in k + 1..n {
                 let r2 = (0..d).fold(T::zero(), |s, c| s + (q[k * d + c] - q[l * d + c]).powi(2));
-                let s = self.pair_gm[pair] / (r2 * r2.sqrt());
-                pair += 1;
+                let s = self.gm[k] * self.masses[l] / (r2 * r2.sqrt());
                 for c in 0..d {
                     let x = s * (q[k * d + c] - q[l * d + c]);
                     f[k * d + c] -= x;
@@ -433,12 +422,10 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> Hamiltonian for NBody<T, S, K> {
             kinetic += pk.iter().fold(T::zero(), |s, &x| s + x * w * x) * half;
         }
         let mut potential = T::zero();
-        let mut pair = 0;
         for k in 0..n {
             for l in k + 1..n {
                 let r2 = (0..d).fold(T::zero(), |s, c| s + (q[k * d + c] - q[l * d + c]).powi(2));
-                potential -= self.pair_gm[pair] / r2.sqrt();
-                pair += 1;
+                potential -= self.gm[k] * self.masses[l] / r2.sqrt();
             }
         }
         Some(kinetic + potential)

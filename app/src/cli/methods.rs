@@ -1,13 +1,14 @@
-//! `stormer methods`: the catalog as a table or as JSON, then the charged-particle steppers.
+//! `stormer methods`: the catalog as a table or as JSON, then the charged-particle steppers;
+//! each method with the names other libraries give it (`registry::ALIASES`).
 
 use super::output::{print, yes_no};
 use super::TableFormat;
-use stormer::registry::{BUTCHER, SPLITTING};
+use stormer::registry::{aliases_of, BUTCHER, SPLITTING};
 use stormer::stepper::PARTICLE_METHODS;
 use stormer::MethodInfo;
 
 /// The table's columns, in order.
-const HEADER: [&str; 9] = [
+const HEADER: [&str; 10] = [
     "name",
     "family",
     "order",
@@ -17,10 +18,11 @@ const HEADER: [&str; 9] = [
     "FSAL",
     "symplectic",
     "symmetric",
+    "aliases",
 ];
 
 /// One method as the table's cells.
-fn cells(m: &MethodInfo) -> [String; 9] {
+fn cells(m: &MethodInfo) -> [String; 10] {
     [
         m.name.clone(),
         m.family.to_string(),
@@ -31,6 +33,7 @@ fn cells(m: &MethodInfo) -> [String; 9] {
         yes_no(m.flags.fsal).into(),
         yes_no(m.flags.symplectic).into(),
         yes_no(m.flags.symmetric).into(),
+        aliases_of(&m.name).collect::<Vec<_>>().join(", "),
     ]
 }
 
@@ -46,6 +49,9 @@ struct Row<'a> {
     fsal: bool,
     symplectic: bool,
     symmetric: bool,
+    /// The names other libraries give it (`RK45`, `DP5`, `leapfrog`...), accepted by
+    /// `--method`.
+    aliases: Vec<&'static str>,
 }
 
 fn json(m: &MethodInfo) -> Row<'_> {
@@ -59,18 +65,19 @@ fn json(m: &MethodInfo) -> Row<'_> {
         fsal: m.flags.fsal,
         symplectic: m.flags.symplectic,
         symmetric: m.flags.symmetric,
+        aliases: aliases_of(&m.name).collect(),
     }
 }
 
 /// Aligned columns: text left, numbers right.
-fn table(rows: &[[String; 9]]) -> String {
+fn table(rows: &[[String; 10]]) -> String {
     let mut width = HEADER.map(str::len);
     for row in rows {
         for (w, cell) in width.iter_mut().zip(row) {
             *w = (*w).max(cell.len());
         }
     }
-    let numeric = [false, false, true, true, false, true, false, false, false];
+    let numeric = [false, false, true, true, false, true, false, false, false, false];
     let line = |row: &[String]| {
         let cols: Vec<String> = row
             .iter()

@@ -37,6 +37,9 @@ enum Command {
         /// Output format.
         #[arg(long, value_enum, default_value_t = TableFormat::Table)]
         format: TableFormat,
+        /// Short for `--format json`.
+        #[arg(long, conflicts_with = "format")]
+        json: bool,
     },
     /// Check a method: flags, every order (or consistency) condition with its residual, and
     /// the numerical checks: measured order, symplecticity (J^T S J = S) and reversibility.
@@ -105,7 +108,7 @@ pub fn main() -> ExitCode {
         }
     };
     let result = match cli.command {
-        Command::Methods { format } => methods::run(format),
+        Command::Methods { format, json } => methods::run(if json { TableFormat::Json } else { format }),
         Command::Verify { method, format } => verify::run(&method, format),
         Command::Run(args) => run::run(&args),
         Command::Compare(args) => study::compare(&args),

@@ -1,7 +1,8 @@
 //! `stormer verify METHOD|FILE`: for a Butcher tableau, flags, row sums, every order
 //! condition with its residual and the highest order the coefficients reach; for a
 //! splitting or composition, its consistency conditions (`verify_splitting`); for both,
-//! the numerical checks of `stormer::verify` (`verify_checks`).
+//! the numerical checks of `stormer::verify` (`verify_checks`). The exit is non-zero when
+//! what it measures contradicts what the method declares (its order, its symmetry...).
 
 use super::output::{print, yes_no};
 use super::verify_checks::{self, JsonChecks};
@@ -53,6 +54,32 @@ impl Report {
         self.tableau.conditions().iter().all(|c| c.holds())
     }
 
+    /// What the measurements contradict: the numerical checks
+    /// ([`verify_checks::contradictions`]), failing order conditions, an achieved order
+    /// below the declared one, and the symplecticity condition against the measured defect.
+    fn contradictions(&self) -> Vec<String> {
+        let t = &self.tableau;
+        let mut found = verify_checks::contradictions(&self.checks, t.order(), t.flags().symmetric);
+        if !self.conditions_ok() {
+            found.push("order conditions fail".into());
+        }
+        if self.achieved < t.order() {
+            found.push(format!(
+                "the coefficients reach order {}, not the declared {}",
+                self.achieved,
+                t.order()
+            ));
+        }
+        if t.flags().symplectic != self.checks.symplectic.holds {
+            found.push(format!(
+                "the symplecticity condition says {}, the measured defect says {}",
+                yes_no(t.flags().symplectic),
+                yes_no(self.checks.symplectic.holds)
+            ));
+        }
+        found
+    }
+
     /// One sentence on the achieved order against the declared one.
     fn verdict(achieved: usize, declared: usize, limit: usize) -> String {
         if achieved == declared && limit > declared {
@@ -92,29 +119,9 @@ impl Report {
                 ),
             ),
         ];
-        for (key, value) in rows {
-            let _ = writeln!(out, "  {key:<15} {value}");
-        }
-        let conditions = t.conditions();
-        let _ = writeln!(out, "order conditions ({}):", conditions.len());
-        let width = conditions.iter().map(|c| c.text.len()).max().unwrap_or(0).max(9);
-        let _ = writeln!(
-            out,
-            "  {:<5}  {:<width$}  {:<22}  {:<22}  {:<9}",
-            "order", "condition", "expected", "got", "residual"
-        );
-        for c in conditions {
-            let _ = writeln!(
-                out,
-                "  {:<5}  {:<width$}  {:<22}  {:<22}  {:<9.1e}  {}",
-                c.order,
-                c.text,
-                format!("{:?}", c.expected),
-                format!("{:?}", c.got),
-                c.residual,
-                if c.holds() { "ok" } else { "FAILS" }
-            );
-        }
+        properties(&mut out, &rows);
+        let conditions: Vec<ConditionRow<'_>> = t.conditions().iter().map(ConditionRow::tableau).collect();
+        condition_table(&mut out, "order conditions", "residual", &conditions);
         let _ = writeln!(
             out,
             "achieved order {}",
@@ -143,19 +150,7 @@ impl Report {
             symplectic: self.checks.symplectic.holds,
             symmetric: f.symmetric,
             row_sum_residual: self.row_sum_residual,
-            conditions: t
-                .conditions()
-                .iter()
-                .map(|c| JsonCondition {
-                    order: c.order,
-                    condition: &c.text,
-                    expected: c.expected,
-                    got: c.got,
-                    residual: c.residual,
-                    tolerance: c.tolerance,
-                    ok: c.holds(),
-                })
-                .collect(),
+            conditions: t.conditions().iter().map(ConditionRow::tableau).collect(),
             achieved_order: self.achieved,
             achieved_order_checked_up_to: self.limit,
             achieved_embedded_order: self.achieved_embedded.map(|(q, _)| q),
@@ -195,7 +190,7 @@ struct JsonReport<'a> {
     symplectic: bool,
     symmetric: bool,
     row_sum_residual: f64,
-    conditions: Vec<JsonCondition<'a>>,
+    conditions: Vec<ConditionRow<'a>>,
     achieved_order: usize,
     achieved_order_checked_up_to: usize,
     achieved_embedded_order: Option<usize>,
@@ -210,38 +205,106 @@ struct JsonReport<'a> {
     checks: JsonChecks,
 }
 
-/// One order condition in `verify --format json`.
+/// One order (or consistency) condition, in the text table and in `verify --format
+/// json`: a tableau's has a residual and its tolerance, a splitting's a bound.
 #[derive(serde::Serialize)]
-struct JsonCondition<'a> {
+pub(super) struct ConditionRow<'a> {
     order: usize,
     condition: &'a str,
     expected: f64,
     got: f64,
-    residual: f64,
-    tolerance: f64,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    residual: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    tolerance: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    bound: Option<f64>,
     ok: bool,
 }
 
+impl<'a> ConditionRow<'a> {
+    fn tableau(c: &'a stormer::order::Condition) -> Self {
+        ConditionRow {
+            order: c.order,
+            condition: &c.text,
+            expected: c.expected,
+            got: c.got,
+            residual: Some(c.residual),
+            tolerance: Some(c.tolerance),
+            bound: None,
+            ok: c.holds(),
+        }
+    }
+
+    pub(super) fn splitting(c: &'a stormer::order::SplitCondition) -> Self {
+        ConditionRow {
+            order: c.order,
+            condition: &c.text,
+            expected: c.expected,
+            got: c.value,
+            residual: None,
+            tolerance: None,
+            bound: Some(c.bound),
+            ok: c.holds(),
+        }
+    }
+}
+
+/// The `  key             value` lines under a report's first line.
+pub(super) fn properties(out: &mut String, rows: &[(&str, String)]) {
+    for (key, value) in rows {
+        let _ = writeln!(out, "  {key:<15} {value}");
+    }
+}
+
+/// The table of conditions, `margin` naming the column of residuals or bounds.
+pub(super) fn condition_table(out: &mut String, title: &str, margin: &str, conditions: &[ConditionRow<'_>]) {
+    let _ = writeln!(out, "{title} ({}):", conditions.len());
+    let width = conditions.iter().map(|c| c.condition.len()).max().unwrap_or(0).max(9);
+    let _ = writeln!(
+        out,
+        "  {:<5}  {:<width$}  {:<22}  {:<22}  {:<9}",
+        "order", "condition", "expected", "got", margin
+    );
+    for c in conditions {
+        let _ = writeln!(
+            out,
+            "  {:<5}  {:<width$}  {:<22}  {:<22}  {:<9.1e}  {}",
+            c.order,
+            c.condition,
+            format!("{:?}", c.expected),
+            format!("{:?}", c.got),
+            c.residual.or(c.bound).unwrap_or(f64::NAN),
+            if c.ok { "ok" } else { "FAILS" }
+        );
+    }
+}
+
+/// A report, and what its measurements contradict among the method's declarations.
+type Outcome = (String, Vec<String>);
+
 /// The report of a splitting or composition: its consistency conditions and the checks.
-fn splitting_report(method: Splitting, source: String, scheme: &Method, format: TextFormat) -> anyhow::Result<String> {
+fn splitting_report(method: Splitting, source: String, scheme: &Method, format: TextFormat) -> anyhow::Result<Outcome> {
     let report = verify_splitting::Report {
         checks: verify::report(scheme)?,
         method,
         source,
     };
-    Ok(match format {
+    let text = match format {
         TextFormat::Text => report.text(),
         TextFormat::Json => serde_json::to_string_pretty(&report.json())? + "\n",
-    })
+    };
+    Ok((text, report.contradictions()))
 }
 
 /// The report of a tableau: its order conditions and the checks.
-fn tableau_report(tableau: Tableau, source: String, scheme: &Method, format: TextFormat) -> anyhow::Result<String> {
+fn tableau_report(tableau: Tableau, source: String, scheme: &Method, format: TextFormat) -> anyhow::Result<Outcome> {
     let report = Report::new(tableau, source, verify::report(scheme)?);
-    Ok(match format {
+    let text = match format {
         TextFormat::Text => report.text(),
         TextFormat::Json => serde_json::to_string_pretty(&report.json())? + "\n",
-    })
+    };
+    Ok((text, report.contradictions()))
 }
 
 /// Verifies a catalog method or a method file and prints the report.
@@ -252,7 +315,7 @@ pub fn run(method: &str, format: TextFormat) -> anyhow::Result<()> {
     } else {
         "catalog".to_string()
     };
-    let text = match &choice {
+    let (text, contradictions) = match &choice {
         Method::Splitting(d) => splitting_report(Splitting::from_data(d)?, source, &choice, format)?,
         Method::RuntimeSplitting(s) => splitting_report(s.clone(), source, &choice, format)?,
         Method::Tableau(d) => tableau_report(Tableau::from_data(d)?, source, &choice, format)?,
@@ -272,5 +335,16 @@ pub fn run(method: &str, format: TextFormat) -> anyhow::Result<()> {
         }
     };
     print(&text)?;
-    Ok(())
+    if contradictions.is_empty() {
+        return Ok(());
+    }
+    let name = if stormer::method::looks_like_path(method) {
+        format!("{} ({method})", choice.name())
+    } else {
+        choice.name().to_string()
+    };
+    Err(anyhow::anyhow!(
+        "{name}: the measurements contradict what the method declares: {}",
+        contradictions.join("; ")
+    ))
 }

@@ -129,6 +129,40 @@ pub fn text(r: &Report, declared: usize, symmetric: bool) -> String {
     out
 }
 
+/// A measured order agrees with the declared one within 0.2 (the slope of a fit over a
+/// range of steps; docs/verification.md).
+fn agrees(measured: f64, declared: usize) -> bool {
+    (measured - declared as f64).abs() <= 0.2
+}
+
+/// What the measurements contradict among the method's declarations, with `declared` its
+/// declared order and `symmetric` its symmetric flag: a measured order (main or embedded)
+/// that differs from the declared one, a step-back test that differs from the flag.
+/// An order that could not be measured contradicts nothing.
+pub fn contradictions(r: &Report, declared: usize, symmetric: bool) -> Vec<String> {
+    let mut found = Vec::new();
+    let mut order = |what: &str, measured: &Result<OrderMeasurement, Error>, declared: usize| {
+        if let Some(m) = measured.as_ref().ok().filter(|m| !agrees(m.order, declared)) {
+            found.push(format!(
+                "the {what} measured is {:.2}, not the declared {declared}",
+                m.order
+            ));
+        }
+    };
+    order("order", &r.order, declared);
+    if let (Some(m), Some(q)) = (&r.embedded_order, r.info.embedded_order) {
+        order("embedded order", m, q);
+    }
+    if r.reversible.holds != symmetric {
+        found.push(format!(
+            "the step-back test says reversible = {}, the coefficients say symmetric = {}",
+            yes_no(r.reversible.holds),
+            yes_no(symmetric)
+        ));
+    }
+    found
+}
+
 /// The line of a measured order (`label` 16 characters wide).
 fn order_line(
     label: &str,
@@ -143,7 +177,7 @@ fn order_line(
     };
     let fitted = &m.samples[m.fitted.clone()];
     let (first, last) = (fitted[0], fitted[fitted.len() - 1]);
-    let agrees = if (m.order - declared as f64).abs() <= 0.2 {
+    let agrees = if agrees(m.order, declared) {
         "agrees with"
     } else {
         "DIFFERS from"

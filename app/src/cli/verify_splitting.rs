@@ -2,6 +2,7 @@
 //! consistency condition with its value, and the numerical checks.
 
 use super::output::yes_no;
+use super::verify::{condition_table, properties, ConditionRow};
 use super::verify_checks::{self, JsonChecks};
 use std::fmt::Write as _;
 use stormer::order::splitting::Flow;
@@ -18,6 +19,21 @@ pub struct Report {
 impl Report {
     fn conditions_ok(&self) -> bool {
         self.method.conditions().iter().all(|c| c.holds())
+    }
+
+    /// What the measurements contradict: the numerical checks
+    /// ([`verify_checks::contradictions`]), failing consistency conditions, and a measured
+    /// symplecticity defect (a composition of exact flows is symplectic).
+    pub fn contradictions(&self) -> Vec<String> {
+        let m = &self.method;
+        let mut found = verify_checks::contradictions(&self.checks, m.order(), m.flags().symmetric);
+        if !self.conditions_ok() {
+            found.push("consistency conditions fail".into());
+        }
+        if !self.checks.symplectic.holds {
+            found.push("the measured symplecticity defect is above its bound".into());
+        }
+        found
     }
 
     /// The word as `D(c) K(c) ...`, shortened in the middle when long.
@@ -75,29 +91,9 @@ impl Report {
             ),
             ("word", self.word()),
         ];
-        for (key, value) in rows {
-            let _ = writeln!(out, "  {key:<15} {value}");
-        }
-        let conditions = m.conditions();
-        let _ = writeln!(out, "consistency conditions ({}):", conditions.len());
-        let width = conditions.iter().map(|c| c.text.len()).max().unwrap_or(0).max(9);
-        let _ = writeln!(
-            out,
-            "  {:<5}  {:<width$}  {:<22}  {:<22}  {:<9}",
-            "order", "condition", "expected", "got", "bound"
-        );
-        for c in conditions {
-            let _ = writeln!(
-                out,
-                "  {:<5}  {:<width$}  {:<22}  {:<22}  {:<9.1e}  {}",
-                c.order,
-                c.text,
-                format!("{:?}", c.expected),
-                format!("{:?}", c.value),
-                c.bound,
-                if c.holds() { "ok" } else { "FAILS" }
-            );
-        }
+        properties(&mut out, &rows);
+        let conditions: Vec<ConditionRow<'_>> = m.conditions().iter().map(ConditionRow::splitting).collect();
+        condition_table(&mut out, "consistency conditions", "bound", &conditions);
         out += &verify_checks::text(&self.checks, m.order(), f.symmetric);
         out.lines().map(|l| l.trim_end().to_string() + "\n").collect()
     }
@@ -120,18 +116,7 @@ impl Report {
             drift: m.drift(),
             kick: m.kick(),
             gamma: m.gamma(),
-            conditions: m
-                .conditions()
-                .iter()
-                .map(|c| JsonCondition {
-                    order: c.order,
-                    condition: &c.text,
-                    expected: c.expected,
-                    got: c.value,
-                    bound: c.bound,
-                    ok: c.holds(),
-                })
-                .collect(),
+            conditions: m.conditions().iter().map(ConditionRow::splitting).collect(),
             checks: JsonChecks::new(&self.checks),
         }
     }
@@ -155,18 +140,7 @@ pub struct JsonReport<'a> {
     drift: &'a [f64],
     kick: &'a [f64],
     gamma: Option<&'a [f64]>,
-    conditions: Vec<JsonCondition<'a>>,
+    conditions: Vec<ConditionRow<'a>>,
     #[serde(flatten)]
     checks: JsonChecks,
-}
-
-/// One consistency condition in `verify --format json`.
-#[derive(serde::Serialize)]
-struct JsonCondition<'a> {
-    order: usize,
-    condition: &'a str,
-    expected: f64,
-    got: f64,
-    bound: f64,
-    ok: bool,
 }

@@ -88,7 +88,8 @@ pub fn builtin(name: &str) -> Option<&'static BuiltinScene> {
     BUILTIN.iter().find(|s| s.name == key)
 }
 
-/// Loads a scene: a built-in name, or a path to a `.toml` scene file.
+/// Loads a scene: a built-in name, or a path to a `.toml` scene file (read through the
+/// bound of [`stormer::input`]).
 ///
 /// ```
 /// let scene = stormer_app::scenes::load("harmonic").unwrap();
@@ -118,9 +119,9 @@ pub fn load(name_or_path: &str) -> Result<AnyScene, Error> {
         });
     }
     let origin = path.display().to_string();
-    let text = std::fs::read_to_string(path).map_err(|e| Error::Scene {
+    let text = stormer::input::read_text(path).map_err(|reason| Error::Scene {
         file: origin.clone(),
-        reason: format!("cannot read the file: {e}"),
+        reason,
     })?;
     let name = path
         .file_stem()

@@ -18,7 +18,7 @@
 //! ```
 
 use super::file::{Number, Source};
-use super::nbody_file::{checked_name, column};
+use super::nbody_file::{column, Taken};
 use super::Scene;
 use nalgebra::DVector;
 use serde::Deserialize;
@@ -216,10 +216,11 @@ impl Scene for ChargedScene {
         }
         let (mut names, mut masses, mut charges) = (Vec::new(), Vec::new(), Vec::new());
         let (mut positions, mut velocities) = (Vec::<f64>::new(), Vec::new());
+        let mut taken = Taken::default();
         for (k, entry) in particles.get_ref().iter().enumerate() {
             let p = entry.get_ref();
             let name = match &p.name {
-                Some(n) => checked_name(src, "particles", k, n, &names)?,
+                Some(n) => taken.name(src, "particles", k, n)?,
                 None => format!("p{k}"),
             };
             let (mass, charge) = mass_and_charge(src, k, &name, entry)?;
@@ -235,7 +236,7 @@ impl Scene for ChargedScene {
                 ));
             }
             if interaction.is_some() {
-                if let Some(other) = (0..k).find(|&l| positions[3 * l..3 * l + 3] == q) {
+                if let Some(other) = taken.position(&q, k) {
                     return Err(src.error_at(
                         p.position.span(),
                         format!(

@@ -144,7 +144,20 @@ struct Header {
 }
 
 /// The model named by a scene file (syntax errors are reported here, with their line).
+///
+/// `model` is a top-level key, so it is written before the first table: that part of
+/// the file is read alone when it names the model (the whole file, of 10^5 bodies, is
+/// read once, by the second pass). Otherwise the whole file is, for its errors.
 pub(super) fn model_name(src: &Source<'_>) -> Result<Spanned<String>, Error> {
+    let first_table = src
+        .text
+        .match_indices('\n')
+        .map(|(i, _)| i + 1)
+        .find(|&i| src.text[i..].trim_start_matches([' ', '\t']).starts_with('['))
+        .unwrap_or(src.text.len());
+    if let Ok(header) = toml::from_str::<Header>(&src.text[..first_table]) {
+        return Ok(header.model);
+    }
     toml::from_str::<Header>(src.text)
         .map(|h| h.model)
         .map_err(|e| src.toml_error(&e))

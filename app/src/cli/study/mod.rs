@@ -7,6 +7,9 @@
 //! with the other parts into the same table and diagrams as one run.
 
 mod job;
+mod part_check;
+#[cfg(test)]
+mod part_mutations;
 mod report;
 
 use super::output::file_safe;
@@ -394,32 +397,40 @@ fn write_json<T: Serialize>(path: &Path, value: &T) -> anyhow::Result<()> {
 pub fn merge(args: &MergeArgs) -> anyhow::Result<()> {
     let mut parts = Vec::new();
     for path in &args.parts {
-        let text = std::fs::read_to_string(path).with_context(|| format!("cannot read {}", path.display()))?;
-        let part: Part = serde_json::from_str(&text).map_err(|e| {
-            anyhow!(
-                "{} is not a partial table of `compare --shard` or `scan --shard`: {e}",
-                path.display()
-            )
-        })?;
-        if part.format != FORMAT {
-            bail!("{}: format '{}', expected '{FORMAT}'", path.display(), part.format);
-        }
-        parts.push((path, part));
+        parts.push((path, read_part(path)?));
     }
     let merged = join(parts)?;
     report::write(&merged, &args.out)
 }
 
+/// The partial table at `path`, read through the input bound and checked field by field
+/// ([`part_check::check`]); every error names the file.
+fn read_part(path: &Path) -> anyhow::Result<Part> {
+    let text = stormer::input::read_text(path).map_err(|reason| anyhow!("{}: {reason}", path.display()))?;
+    parse_part(&text, &path.display().to_string())
+}
+
+/// A partial table from its JSON text, checked; errors name `file`.
+fn parse_part(text: &str, file: &str) -> anyhow::Result<Part> {
+    let part: Part = serde_json::from_str(text)
+        .map_err(|e| anyhow!("{file} is not a partial table of `compare --shard` or `scan --shard`: {e}"))?;
+    if part.format != FORMAT {
+        bail!("{file}: format '{}', expected '{FORMAT}'", part.format);
+    }
+    part_check::check(&part).map_err(|reason| anyhow!("{file}: {reason}"))?;
+    Ok(part)
+}
+
 /// Joins the parts of one study, checking that they belong together and that none is
 /// missing or given twice.
 fn join(parts: Vec<(&PathBuf, Part)>) -> anyhow::Result<Part> {
-    let (first_path, first) = &parts[0];
+    let (first_path, first) = parts.first().context("no partial tables given")?;
     let n = first.shard.1;
-    let mut seen = vec![None::<&Path>; n];
+    let mut seen = std::collections::BTreeMap::<usize, &Path>::new();
     for (path, part) in &parts {
-        if part.study != first.study {
+        if let Some(field) = part_check::differing_field(&first.study, &part.study) {
             bail!(
-                "{} and {} are parts of different studies (scene, scene file, time span, methods or steps differ)",
+                "{} and {} are parts of different studies: their {field} differ",
                 first_path.display(),
                 path.display()
             );
@@ -433,39 +444,55 @@ fn join(parts: Vec<(&PathBuf, Part)>) -> anyhow::Result<Part> {
             );
         }
         let i = part.shard.0;
-        if !(1..=n).contains(&i) {
-            bail!("{}: shard {i}/{n} is out of range", path.display());
-        }
-        if let Some(other) = seen[i - 1] {
+        if let Some(other) = seen.insert(i, path) {
             bail!(
                 "shard {i}/{n} is given twice: {} and {}",
                 other.display(),
                 path.display()
             );
         }
-        seen[i - 1] = Some(path);
         let expected = shard_jobs(part.study.jobs.len(), part.shard);
         let got: Vec<usize> = part.rows.iter().map(|r| r.job).collect();
         if got != expected {
             bail!(
-                "{}: its rows are not those of shard {i}/{n} of the study",
-                path.display()
+                "{}: rows: their jobs {} are not those of shard {i}/{n} of the study ({})",
+                path.display(),
+                list_of(&got),
+                list_of(&expected)
             );
         }
     }
-    let missing: Vec<String> = (1..=n)
-        .filter(|i| seen[i - 1].is_none())
-        .map(|i| format!("{i}/{n}"))
-        .collect();
-    if !missing.is_empty() {
-        bail!("shard {} missing: the study has {n} parts", missing.join(", "));
+    // `n` comes from a file: the missing shards are listed without counting to `n`
+    if seen.len() < n {
+        let missing: Vec<String> = (1..=n)
+            .filter(|i| !seen.contains_key(i))
+            .take(5)
+            .map(|i| format!("{i}/{n}"))
+            .collect();
+        let more = if n - seen.len() > missing.len() { ", ..." } else { "" };
+        bail!(
+            "shard {}{more} missing: the study of {} has {n} parts",
+            missing.join(", "),
+            first_path.display()
+        );
     }
     let mut rows: Vec<Row> = parts.iter().flat_map(|(_, p)| p.rows.iter().cloned()).collect();
     rows.sort_by_key(|r| r.job);
-    let mut whole = parts.into_iter().next().map(|(_, p)| p).expect("at least one part");
+    let mut whole = parts
+        .into_iter()
+        .next()
+        .map(|(_, p)| p)
+        .context("no partial tables given")?;
     whole.rows = rows;
     whole.shard = (1, 1);
     Ok(whole)
+}
+
+/// `[0, 3, 6]`, shortened after 8 entries.
+fn list_of(jobs: &[usize]) -> String {
+    let shown: Vec<String> = jobs.iter().take(8).map(usize::to_string).collect();
+    let more = if jobs.len() > 8 { ", ..." } else { "" };
+    format!("[{}{more}]", shown.join(", "))
 }
 
 #[cfg(test)]

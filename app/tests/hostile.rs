@@ -1,0 +1,275 @@
+//! The binary under input a careless or hostile user gives it (issue 18): devices and
+//! endless files, damaged shards for `merge`, the method names other libraries use, and a
+//! method file whose declarations its coefficients contradict.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+use std::time::{Duration, Instant};
+
+fn workdir(name: &str) -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("hostile").join(name);
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn stormer(dir: &Path, args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_stormer"))
+        .args(args)
+        .current_dir(dir)
+        .output()
+        .expect("the binary runs")
+}
+
+fn stderr(out: &Output) -> String {
+    String::from_utf8_lossy(&out.stderr).into_owned()
+}
+
+/// Exit code 1, one line on stderr, `error: ` and `needle` in it, no panic.
+fn assert_error(out: &Output, needle: &str) {
+    let err = stderr(out);
+    assert_eq!(out.status.code(), Some(1), "exit code; stderr: {err}");
+    assert!(!err.contains("panicked"), "{err}");
+    assert_eq!(err.trim_end().lines().count(), 1, "one line: {err}");
+    assert!(err.starts_with("error: "), "{err}");
+    assert!(err.contains(needle), "expected {needle:?} in: {err}");
+}
+
+// ---- readers: devices, endless input ----
+
+/// `/dev/zero` as a scene, a method file and a shard: an error at once (the first byte is
+/// a NUL), not a read without bound.
+#[test]
+fn devices_are_refused_quickly() {
+    let dir = workdir("devices");
+    for args in [
+        &["run", "/dev/zero"][..],
+        &["run", "kepler", "--method", "/dev/zero"],
+        &["verify", "/dev/zero"],
+        &["merge", "/dev/zero"],
+        &["compare", "/dev/zero", "--methods", "rk4", "--dt", "0.1"],
+    ] {
+        let start = Instant::now();
+        let out = stormer(&dir, args);
+        assert_error(&out, "/dev/zero");
+        assert_error(&out, "NUL byte");
+        // not a speed assertion: a read without bound takes minutes and gigabytes
+        assert!(start.elapsed() < Duration::from_secs(60), "{args:?}");
+    }
+}
+
+/// A file over the bound is refused with the bound and how to raise it; raised, it is
+/// read (and then refused for what it holds).
+#[test]
+fn the_input_bound_is_stated_and_can_be_raised() {
+    let dir = workdir("bound");
+    let big = dir.join("big.toml");
+    // 2 MiB of comments, then a scene
+    let mut text = "# padding\n".repeat(2 * 1024 * 1024 / 10 + 1);
+    text.push_str("model = \"harmonic\"\n");
+    std::fs::write(&big, &text).unwrap();
+    let path = big.to_str().unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_stormer"))
+        .args(["run", path])
+        .env("STORMER_INPUT_LIMIT_MIB", "1")
+        .current_dir(&dir)
+        .output()
+        .unwrap();
+    assert_error(&out, "larger than 1 MiB");
+    assert_error(&out, "set STORMER_INPUT_LIMIT_MIB");
+    let out = stormer(&dir, &["run", path]);
+    assert_error(&out, "missing field `run`");
+}
+
+// ---- merge: damaged shards ----
+
+/// The two shards of a small compare study, as JSON values.
+fn shards(dir: &Path) -> [serde_json::Value; 2] {
+    for shard in ["1/2", "2/2"] {
+        let out = stormer(
+            dir,
+            &[
+                "compare",
+                "pendulum",
+                "--methods",
+                "rk4,euler",
+                "--dt",
+                "0.1,0.05",
+                "--t-end",
+                "1",
+                "--runs",
+                "1",
+                "--min-time",
+                "0",
+                "--shard",
+                shard,
+                "--out",
+                "parts",
+            ],
+        );
+        assert!(out.status.success(), "{}", stderr(&out));
+    }
+    ["1", "2"].map(|i| {
+        let text = std::fs::read_to_string(dir.join(format!("parts/compare-pendulum.shard-{i}-of-2.json"))).unwrap();
+        serde_json::from_str(&text).unwrap()
+    })
+}
+
+/// `merge` on the two shards after `damage` is done to the first: the outcome.
+fn merge_damaged(dir: &Path, good: &[serde_json::Value; 2], damage: impl Fn(&mut serde_json::Value)) -> Output {
+    let mut first = good[0].clone();
+    damage(&mut first);
+    std::fs::write(dir.join("a.json"), serde_json::to_string(&first).unwrap()).unwrap();
+    std::fs::write(dir.join("b.json"), serde_json::to_string(&good[1]).unwrap()).unwrap();
+    stormer(dir, &["merge", "a.json", "b.json", "--out", "merged"])
+}
+
+#[test]
+fn merge_checks_every_index_and_figure_of_a_shard() {
+    let dir = workdir("merge");
+    let good = shards(&dir);
+    assert!(merge_damaged(&dir, &good, |_| {}).status.success());
+    type Damage = fn(&mut serde_json::Value);
+    let cases: [(Damage, &str); 10] = [
+        // panicked (exit 101) before
+        (
+            |v| v["study"]["jobs"][0]["method"] = 7.into(),
+            "a.json: study.jobs[0].method: 7 is out of range, the study has 2 methods",
+        ),
+        // drawn before
+        (
+            |v| v["rows"][0]["error"] = (-1.0).into(),
+            "a.json: rows[0].error: must be a finite number >= 0, got -1",
+        ),
+        (
+            |v| v["rows"][0]["seconds"] = (-0.5).into(),
+            "a.json: rows[0].seconds: must be a finite number >= 0",
+        ),
+        (
+            |v| v["rows"][1]["energy_error"] = (-1e-3).into(),
+            "a.json: rows[1].energy_error: must be a finite number >= 0",
+        ),
+        (
+            |v| v["rows"][0]["job"] = 1_000_000.into(),
+            "a.json: rows[0].job: 1000000 is out of range",
+        ),
+        (
+            |v| v["study"]["jobs"][0]["control"] = serde_json::json!({"dt": -0.1}),
+            "a.json: study.jobs[0].control.dt: must be a finite number > 0",
+        ),
+        // a shard count from the file: not an allocation of 10^18 entries (panicked before)
+        (
+            |v| v["shard"] = serde_json::json!([1, 1_000_000_000_000_000_000u64]),
+            "a.json: rows: their jobs [0, 2] are not those of shard 1/1000000000000000000",
+        ),
+        (
+            |v| v["shard"] = serde_json::json!([0, 2]),
+            "a.json: shard: [0, 2] is not",
+        ),
+        // parts of another study: the field that differs is named
+        (
+            |v| v["study"]["t_end"] = 2.0.into(),
+            "a.json and b.json are parts of different studies: their t_end differ",
+        ),
+        (|v| v["study"]["scene"] = "kepler".into(), "their scene differ"),
+    ];
+    for (damage, expected) in cases {
+        assert_error(&merge_damaged(&dir, &good, damage), expected);
+    }
+    // a number JSON cannot hold, and a shard that is not JSON
+    std::fs::write(dir.join("c.json"), "{\"format\": 1e999}").unwrap();
+    assert_error(&stormer(&dir, &["merge", "c.json"]), "c.json is not a partial table");
+    // the first of 10^12 shards alone: the missing ones named without counting to 10^12
+    let mut alone = good[0].clone();
+    alone["shard"] = serde_json::json!([1, 1_000_000_000_000u64]);
+    let first_row = alone["rows"][0].clone();
+    alone["rows"] = serde_json::json!([first_row]);
+    std::fs::write(dir.join("alone.json"), serde_json::to_string(&alone).unwrap()).unwrap();
+    let out = stormer(&dir, &["merge", "alone.json"]);
+    assert_error(
+        &out,
+        "shard 2/1000000000000, 3/1000000000000, 4/1000000000000, 5/1000000000000, 6/1000000000000, ... missing",
+    );
+}
+
+// ---- names users bring ----
+
+#[test]
+fn the_names_of_other_libraries_run_and_typos_suggest_them() {
+    let dir = workdir("aliases");
+    for (alias, method) in [
+        ("rk45", "dormand_prince5"),
+        ("RK45", "dormand_prince5"),
+        ("leapfrog", "stormer_verlet_dkd"),
+        ("DP5", "dormand_prince5"),
+        ("Vern7", "verner7"),
+        ("VelocityVerlet", "velocity_verlet_kdk"),
+    ] {
+        let out = stormer(&dir, &["run", "kepler", "--method", alias, "--t-end", "0.1"]);
+        assert!(out.status.success(), "{alias}: {}", stderr(&out));
+        assert!(stderr(&out).contains(method), "{alias}: {}", stderr(&out));
+    }
+    // a typo of an alias suggests it (rk45 suggested rk4, rk4_38 before)
+    let out = stormer(&dir, &["run", "kepler", "--method", "leapfrg"]);
+    assert_error(&out, "leapfrog");
+    let out = stormer(&dir, &["run", "kepler", "--method", "Vern77"]);
+    assert_error(&out, "Vern7");
+}
+
+#[test]
+fn methods_lists_the_aliases() {
+    let dir = workdir("methods");
+    let out = stormer(&dir, &["methods", "--json"]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    let list: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let aliases = |name: &str| -> Vec<String> {
+        let m = list.as_array().unwrap().iter().find(|m| m["name"] == name).unwrap();
+        m["aliases"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|a| a.as_str().unwrap().to_string())
+            .collect()
+    };
+    assert_eq!(aliases("dormand_prince5"), ["RK45", "DP5", "dopri5", "ode45"]);
+    assert_eq!(aliases("dop853"), ["DP8", "dopri853"]);
+    assert!(aliases("rk4").is_empty());
+    // every alias of the registry appears once, under its method
+    let listed: usize = list
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|m| m["aliases"].as_array().unwrap().len())
+        .sum();
+    assert_eq!(listed, stormer::registry::ALIASES.len());
+    let table = stormer(&dir, &["methods"]);
+    let text = String::from_utf8_lossy(&table.stdout);
+    assert!(text.lines().next().unwrap().trim_end().ends_with("aliases"), "{text}");
+    let verlet = text.lines().find(|l| l.starts_with("stormer_verlet_dkd ")).unwrap();
+    assert!(verlet.contains("leapfrog, LeapfrogDriftKickDrift"), "{verlet}");
+}
+
+// ---- verify: declarations the measurements contradict ----
+
+/// Velocity Verlet's coefficients declared as order 4: the report says so and the exit
+/// is non-zero (it was 0, with `DIFFERS from the declared 4` in the report).
+#[test]
+fn verify_fails_when_the_measurements_contradict_the_file() {
+    let dir = workdir("verify");
+    let file = dir.join("verlet-as-4.toml");
+    std::fs::write(
+        &file,
+        "name = \"verlet_as_4\"\nfamily = \"splitting\"\norder = 4\ndrift = [\"0\", \"1\"]\nkick = [\"1/2\", \"1/2\"]\n",
+    )
+    .unwrap();
+    let out = stormer(&dir, &["verify", file.to_str().unwrap()]);
+    let report = String::from_utf8_lossy(&out.stdout);
+    assert!(report.contains("DIFFERS from the declared 4"), "{report}");
+    assert_error(&out, "not the declared 4");
+    let out = stormer(&dir, &["verify", file.to_str().unwrap(), "--format", "json"]);
+    assert!(serde_json::from_slice::<serde_json::Value>(&out.stdout).is_ok());
+    assert_error(&out, "contradict");
+    // the catalog's velocity Verlet, declared 2: no contradiction
+    let out = stormer(&dir, &["verify", "velocity_verlet_kdk"]);
+    assert!(out.status.success(), "{}", stderr(&out));
+}
