@@ -273,3 +273,114 @@ fn verify_fails_when_the_measurements_contradict_the_file() {
     let out = stormer(&dir, &["verify", "velocity_verlet_kdk"]);
     assert!(out.status.success(), "{}", stderr(&out));
 }
+
+// ---- outputs: never clobber an input, never beside a device, never silent ----
+
+/// `--out` naming the scene or the method file, however spelled, is refused and the file
+/// is left as it was.
+#[test]
+fn a_run_never_overwrites_its_inputs() {
+    let dir = workdir("clobber");
+    let scene = stormer(&dir, &["scene", "show", "kepler"]);
+    std::fs::write(dir.join("kepler.toml"), &scene.stdout).unwrap();
+    for out in ["kepler.toml", "./kepler.toml", "../clobber/kepler.toml"] {
+        assert_error(
+            &stormer(&dir, &["run", "kepler.toml", "--out", out]),
+            "is the input file kepler.toml",
+        );
+    }
+    assert_eq!(std::fs::read(dir.join("kepler.toml")).unwrap(), scene.stdout);
+    let method = "name = \"mine\"\norder = 2\nc = [0, 1]\na = [[0, 0], [1, 0]]\nb = [0.5, 0.5]\n";
+    std::fs::write(dir.join("mine.toml"), method).unwrap();
+    assert_error(
+        &stormer(&dir, &["run", "kepler", "--method", "mine.toml", "--out", "mine.toml"]),
+        "is the input file mine.toml",
+    );
+    assert_eq!(std::fs::read_to_string(dir.join("mine.toml")).unwrap(), method);
+}
+
+/// A step longer than the span or an empty span ran 0 steps and exited 0; now an error
+/// that says what to change, before any output file is made.
+#[test]
+fn a_run_that_would_compute_nothing_is_an_error() {
+    let dir = workdir("nothing");
+    assert_error(
+        &stormer(&dir, &["run", "kepler", "--dt", "1e12"]),
+        "invalid step size: 1e12 is longer than the time span (1e2)",
+    );
+    assert_error(&stormer(&dir, &["run", "kepler", "--t-end", "0"]), "time span: empty");
+    assert!(!dir.join("out").exists(), "no output for a run that did not start");
+}
+
+/// An initial energy that overflows printed `max |dE/E0| 0.000e0`; now NaN and a warning.
+#[test]
+fn a_non_finite_energy_is_never_reported_as_no_drift() {
+    let dir = workdir("inf-energy");
+    let scene = "model = \"central-force\"\n[parameters]\nmu = 1.0\n[initial]\nq = [1.0, 0.0]\n\
+                 p = [0.0, 1e200]\n[run]\nmethod = \"rk4\"\ndt = 0.01\nt_end = 0.1\n";
+    std::fs::write(dir.join("fast.toml"), scene).unwrap();
+    let out = stormer(&dir, &["run", "fast.toml"]);
+    let err = stderr(&out);
+    assert_eq!(out.status.code(), Some(0), "{err}");
+    assert!(err.contains("max |dE/E0| NaN"), "{err}");
+    assert!(err.contains("warning: the energy drift is NaN"), "{err}");
+    assert!(!err.contains("0.000e0"), "{err}");
+}
+
+/// `--out -` writes the CSV to stdout; the pictures go beside the default output, drawn
+/// from the run's own records; a device gets no pictures beside it, and a pipe as the
+/// output never blocks the run.
+#[test]
+fn the_csv_can_go_to_stdout_or_a_device_and_the_pictures_stay_out_of_dev() {
+    let dir = workdir("stdout");
+    let out = stormer(&dir, &["run", "kepler", "--out", "-"]);
+    let err = stderr(&out);
+    assert_eq!(out.status.code(), Some(0), "{err}");
+    let csv = String::from_utf8(out.stdout).unwrap();
+    assert!(csv.starts_with("t,star_x,"), "{}", &csv[..40.min(csv.len())]);
+    assert_eq!(csv.lines().count(), 1 + 1251);
+    assert!(err.contains("1251 records in stdout"), "{err}");
+    assert!(err.contains("pictures: out/kepler-velocity_verlet_kdk-xy.svg"), "{err}");
+    assert!(dir.join("out/kepler-velocity_verlet_kdk-energy.svg").is_file());
+    assert!(!dir.join("out/kepler-velocity_verlet_kdk.csv").exists());
+    for device in ["/dev/null", "/dev/stdout"] {
+        let start = Instant::now();
+        let out = stormer(&dir, &["run", "kepler", "--out", device]);
+        let err = stderr(&out);
+        assert_eq!(out.status.code(), Some(0), "{device}: {err}");
+        assert!(
+            start.elapsed() < Duration::from_secs(60),
+            "{device}: {:?}",
+            start.elapsed()
+        );
+        assert!(!err.contains("/dev/stdout-") && !err.contains("/dev/null-"), "{err}");
+        assert!(err.contains("pictures: out/kepler-velocity_verlet_kdk-xy.svg"), "{err}");
+    }
+}
+
+/// `--jobs 100000` for one job started 100000 threads; now capped, with a note.
+#[test]
+fn the_worker_threads_are_capped() {
+    let dir = workdir("jobs");
+    let out = stormer(
+        &dir,
+        &[
+            "compare",
+            "kepler",
+            "--methods",
+            "rk4",
+            "--dt",
+            "0.01",
+            "--t-end",
+            "1",
+            "--jobs",
+            "100000",
+        ],
+    );
+    let err = stderr(&out);
+    assert_eq!(out.status.code(), Some(0), "{err}");
+    assert!(
+        err.contains("note: --jobs 100000 capped at 1 worker threads (1 jobs"),
+        "{err}"
+    );
+}

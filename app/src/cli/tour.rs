@@ -597,7 +597,7 @@ fn work_precision(out: &Path) -> anyhow::Result<Section> {
                 legend: vec![],
             });
         } else if name.ends_with(".md") && table.is_empty() {
-            let text = std::fs::read_to_string(&path)?;
+            let text = stormer::input::read_text(&path).map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
             table = text
                 .lines()
                 .filter(|l| l.starts_with('|') && !l.contains("---"))

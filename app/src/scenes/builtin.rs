@@ -100,8 +100,30 @@ pub fn builtin(name: &str) -> Option<&'static BuiltinScene> {
 /// assert!(err.to_string().contains("did you mean 'pendulum'"));
 /// ```
 pub fn load(name_or_path: &str) -> Result<AnyScene, Error> {
+    let source = source(name_or_path)?;
+    parse(&source.text, &source.origin, &source.name)
+}
+
+/// A scene's text before it is parsed, read once (a pipe can be read only once).
+#[derive(Debug, Clone)]
+pub struct SceneSource {
+    /// The TOML text.
+    pub text: String,
+    /// `built-in` or the path, for messages.
+    pub origin: String,
+    /// The scene's name (the built-in name or the file's stem).
+    pub name: String,
+}
+
+/// The text of a built-in scene or a scene file (read through the bounded reader), with
+/// its origin and name; [`load`] parses it.
+pub fn source(name_or_path: &str) -> Result<SceneSource, Error> {
     if let Some(scene) = builtin(name_or_path) {
-        return parse(scene.text, "built-in", scene.name);
+        return Ok(SceneSource {
+            text: scene.text.to_string(),
+            origin: "built-in".into(),
+            name: scene.name.into(),
+        });
     }
     let path = Path::new(name_or_path);
     let looks_like_path = name_or_path.ends_with(".toml") || name_or_path.contains(['/', '\\']) || path.is_file();
@@ -126,7 +148,7 @@ pub fn load(name_or_path: &str) -> Result<AnyScene, Error> {
     let name = path
         .file_stem()
         .map_or_else(|| origin.clone(), |s| s.to_string_lossy().into_owned());
-    parse(&text, &origin, &name)
+    Ok(SceneSource { text, origin, name })
 }
 
 /// Reads a scene from TOML text; `origin` (a path, or `built-in`) appears in errors and

@@ -53,7 +53,7 @@ mod nbody_file;
 mod pendulum;
 
 pub use arenstorf::{RestrictedThreeBody, ThreeBodyInitial, ThreeBodyParameters};
-pub use builtin::{builtin, load, parse, BuiltinScene, BUILTIN};
+pub use builtin::{builtin, load, parse, source, BuiltinScene, SceneSource, BUILTIN};
 pub use central_force_file::{CentralForceInitial, CentralForceParameters};
 pub use charged_file::{BottleTable, ChargedParameters, ChargedScene, ParticleEntry};
 pub use damped::{DampedOscillator, DampedParameters};

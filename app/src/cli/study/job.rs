@@ -22,23 +22,15 @@ pub struct SceneText {
 impl SceneText {
     /// A built-in name or a path to a scene file, with the errors of `stormer run`.
     pub fn load(arg: &str) -> Result<Self, Error> {
-        if let Some(b) = scenes::builtin(arg) {
-            return Ok(SceneText {
-                text: b.text.to_string(),
-                origin: "built-in".into(),
-                name: b.name.into(),
-            });
-        }
-        let scene = scenes::load(arg)?;
-        let text = std::fs::read_to_string(arg).map_err(|e| Error::Scene {
-            file: arg.to_string(),
-            reason: format!("cannot read the file: {e}"),
-        })?;
-        Ok(SceneText {
-            text,
-            origin: arg.to_string(),
-            name: scene.name().to_string(),
-        })
+        // read once: a pipe (`/dev/stdin`) can be read only once
+        let source = scenes::source(arg)?;
+        let text = SceneText {
+            text: source.text,
+            origin: source.origin,
+            name: source.name,
+        };
+        text.parse()?;
+        Ok(text)
     }
 
     fn parse(&self) -> Result<AnyScene, Error> {
@@ -197,7 +189,8 @@ pub fn reference(scene: &SceneText, study: &StudyId, cache: &Path) -> anyhow::Re
             && c.t0.to_bits() == study.t0.to_bits()
             && c.t_end.to_bits() == study.t_end.to_bits()
     };
-    if let Some(c) = std::fs::read_to_string(&path)
+    // a cache that cannot be read (too large, damaged, not ours) is recomputed
+    if let Some(c) = stormer::input::read_text(&path)
         .ok()
         .and_then(|text| serde_json::from_str::<CachedReference>(&text).ok())
         .filter(fits)

@@ -16,6 +16,7 @@ use super::output::file_safe;
 use anyhow::{anyhow, bail, Context};
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
+use std::io::Write as _;
 use std::path::{Path, PathBuf};
 use stormer::{Error, Method};
 
@@ -342,6 +343,25 @@ pub fn scan(args: &ScanArgs) -> anyhow::Result<()> {
     execute(&scene, study, &methods, &args.common)
 }
 
+/// At most this many worker threads per core: more only adds switching (and a
+/// `--jobs 100000` would start a hundred thousand threads for a few jobs).
+const THREADS_PER_CORE: usize = 4;
+
+/// The worker threads for `--jobs asked` and `jobs` jobs: no more than the jobs, nor than
+/// [`THREADS_PER_CORE`] per core, with a note on stderr when the request is capped.
+fn worker_threads(asked: usize, jobs: usize) -> usize {
+    let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
+    let cap = jobs.clamp(1, THREADS_PER_CORE * cores);
+    if asked > cap {
+        let _ = writeln!(
+            std::io::stderr(),
+            "note: --jobs {asked} capped at {cap} worker threads ({jobs} jobs, {cores} cores, at most \
+             {THREADS_PER_CORE} threads per core)"
+        );
+    }
+    asked.min(cap)
+}
+
 /// Runs the study's jobs (the shard's, with `--shard`) and writes the outputs.
 fn execute(scene: &SceneText, study: StudyId, methods: &[Method], common: &CommonArgs) -> anyhow::Result<()> {
     let shard = common.shard.unwrap_or((1, 1));
@@ -361,8 +381,8 @@ fn execute(scene: &SceneText, study: StudyId, methods: &[Method], common: &Commo
             .collect()
     };
     let rows = match common.jobs {
-        Some(n) => rayon::ThreadPoolBuilder::new()
-            .num_threads(n)
+        Some(asked) => rayon::ThreadPoolBuilder::new()
+            .num_threads(worker_threads(asked, mine.len()))
             .build()
             .context("cannot start the worker threads")?
             .install(work),
