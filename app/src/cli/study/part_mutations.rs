@@ -58,6 +58,7 @@ fn good_part() -> String {
                 },
             ],
             truth: "reference".into(),
+            stop: None,
             energy: true,
         },
         shard: (1, 2),
