@@ -38,12 +38,18 @@ impl SecondOrder for Pendulum {
 }
 
 /// A light body on an orbit of eccentricity 0.5 about a heavy one (G = 1, plane), from
-/// its pericentre: 100 steps of 1/128 sweep through the fast part of the orbit.
+/// its pericentre, the heavy one recoiling so that the total momentum is zero: 100 steps
+/// of 1/128 sweep through the fast part of the orbit.
 fn kepler() -> (NBody<f64, [f64; 8]>, [f64; 8]) {
-    let bodies = NBody::new(1.0, &[1.0, 1e-3], 2).expect("two bodies in the plane");
+    let masses = [1.0, 1e-3];
+    let bodies = NBody::new(1.0, &masses, 2).expect("two bodies in the plane");
     let (r, e): (f64, f64) = (0.5, 0.5);
-    let v = ((1.0 + 1e-3) * (1.0 + e) / r).sqrt();
-    (bodies, [0.0, 0.0, r, 0.0, 0.0, 0.0, 0.0, v])
+    let v = ((masses[0] + masses[1]) * (1.0 + e) / r).sqrt();
+    let mut y0 = [0.0; 8];
+    bodies
+        .set_state(&[0.0, 0.0, r, 0.0], &[0.0, -masses[1] * v, 0.0, v], &mut y0)
+        .expect("two bodies in the plane");
+    (bodies, y0)
 }
 
 /// The run-time twins of the catalog, by name, read from the data files.
