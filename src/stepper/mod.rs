@@ -11,7 +11,6 @@ mod explicit;
 mod implicit;
 mod particle;
 mod runtime;
-mod runtime_splitting;
 mod splitting;
 mod two_step;
 
@@ -23,8 +22,7 @@ pub use explicit::{ExplicitRk, ExplicitStages, ExplicitStepper, Unrolled};
 pub use implicit::{ImplicitOptions, ImplicitRk, ImplicitSolver};
 pub use particle::{ParticleMethod, PARTICLE_METHODS};
 pub use runtime::{RuntimeRk, RuntimeStages};
-pub use runtime_splitting::RuntimeSplitting;
-pub use splitting::SplittingStepper;
+pub use splitting::{RuntimeSplitting, RuntimeWord, SplittingStepper, SplittingWord, UnrolledWord, WordStepper};
 pub use two_step::StormerTwoStep;
 
 use crate::{Error, MethodInfo, Problem};
