@@ -22,7 +22,9 @@ pub use explicit::{ExplicitRk, ExplicitStages, ExplicitStepper, Unrolled};
 pub use implicit::{ImplicitOptions, ImplicitRk, ImplicitSolver};
 pub use particle::{ParticleMethod, PARTICLE_METHODS};
 pub use runtime::{RuntimeRk, RuntimeStages};
-pub use splitting::{RuntimeSplitting, RuntimeWord, SplittingStepper, SplittingWord, UnrolledWord, WordStepper};
+pub use splitting::{
+    RuntimeSplitting, RuntimeWord, SplittingStepper, SplittingWord, UnrolledWord, WordStep, WordStepper,
+};
 pub use two_step::StormerTwoStep;
 
 use crate::{Error, MethodInfo, Problem};

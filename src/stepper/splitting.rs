@@ -27,23 +27,34 @@ pub trait SplittingWord<S: State>: Clone + core::fmt::Debug {
     fn fsal(&self) -> bool;
     /// The word as `(flow, fraction, node)` per op (for the compensated form).
     fn ops(&self) -> Ops<S::Scalar>;
-    /// The word applied in place on the halves `q`, `p` ([`SplittingMethod::flows`]);
-    /// returns the number of force evaluations.
-    #[allow(clippy::too_many_arguments)]
-    fn flows<P>(
-        &self,
-        problem: &P,
-        t: S::Scalar,
-        h: S::Scalar,
-        q: &mut [S::Scalar],
-        p: &mut [S::Scalar],
-        v: &mut [S::Scalar],
-        f: &mut [S::Scalar],
-        cache: &mut P::FlowCache,
-        cached: bool,
-    ) -> u64
+    /// One step of the word in place ([`SplittingMethod::flows`]); returns the number of
+    /// force evaluations.
+    fn flows<P>(&self, problem: &P, step: WordStep<'_, P>) -> u64
     where
         P: Splittable<Scalar = S::Scalar, State = S>;
+}
+
+/// One step of a word: from `t`, of size `h`, on the halves `q` and `p` of the state in
+/// place, with the drift's scratch `v`, the force `f` (on return, the last one evaluated)
+/// and the flows' cache; `cached`: `f` already holds the force at `(t, q)`.
+#[derive(Debug)]
+pub struct WordStep<'a, P: Splittable> {
+    /// Start of the step.
+    pub t: P::Scalar,
+    /// Step size.
+    pub h: P::Scalar,
+    /// Positions.
+    pub q: &'a mut [P::Scalar],
+    /// Momenta.
+    pub p: &'a mut [P::Scalar],
+    /// Drift scratch.
+    pub v: &'a mut [P::Scalar],
+    /// Force.
+    pub f: &'a mut [P::Scalar],
+    /// The problem's cache of its flows.
+    pub cache: &'a mut P::FlowCache,
+    /// `f` holds the force at `(t, q)` (reused by a first kick).
+    pub cached: bool,
 }
 
 /// The word `splitting!` or `composition!` generated for `M`, with its coefficients
@@ -71,22 +82,14 @@ impl<M: SplittingMethod, S: State> SplittingWord<S> for UnrolledWord<M, S> {
     }
 
     #[inline(always)]
-    fn flows<P>(
-        &self,
-        problem: &P,
-        t: S::Scalar,
-        h: S::Scalar,
-        q: &mut [S::Scalar],
-        p: &mut [S::Scalar],
-        v: &mut [S::Scalar],
-        f: &mut [S::Scalar],
-        cache: &mut P::FlowCache,
-        cached: bool,
-    ) -> u64
+    fn flows<P>(&self, problem: &P, step: WordStep<'_, P>) -> u64
     where
         P: Splittable<Scalar = S::Scalar, State = S>,
     {
-        M::flows(&self.co, problem, t, h, q, p, v, f, cache, cached)
+        let (t, h, cached) = (step.t, step.h, step.cached);
+        M::flows(
+            &self.co, problem, t, h, step.q, step.p, step.v, step.f, step.cache, cached,
+        )
     }
 }
 
@@ -114,27 +117,17 @@ impl<S: State> SplittingWord<S> for RuntimeWord<S> {
         self.ops.clone()
     }
 
-    fn flows<P>(
-        &self,
-        problem: &P,
-        t: S::Scalar,
-        h: S::Scalar,
-        q: &mut [S::Scalar],
-        p: &mut [S::Scalar],
-        v: &mut [S::Scalar],
-        f: &mut [S::Scalar],
-        cache: &mut P::FlowCache,
-        cached: bool,
-    ) -> u64
+    fn flows<P>(&self, problem: &P, step: WordStep<'_, P>) -> u64
     where
         P: Splittable<Scalar = S::Scalar, State = S>,
     {
+        let (t, h, q, p, v, f) = (step.t, step.h, step.q, step.p, step.v, step.f);
         let mut evaluations = 0;
         for (i, &(flow, coef, node)) in self.ops.iter().enumerate() {
             match flow {
-                Flow::Drift => problem.drift(t + node * h, coef * h, q, p, v, cache),
+                Flow::Drift => problem.drift(t + node * h, coef * h, q, p, v, step.cache),
                 Flow::Kick => {
-                    if !(i == 0 && cached) {
+                    if !(i == 0 && step.cached) {
                         problem.force(t + node * h, q, f);
                         evaluations += 1;
                     }
@@ -291,7 +284,18 @@ impl<W: SplittingWord<S>, S: State, C> WordStepper<W, S, C> {
     {
         let (q, mom) = halves_mut(y.as_mut_slice());
         let (v, f) = halves_mut(self.work.as_mut_slice());
-        self.counters.evaluations += self.word.flows(p, t, h, q, mom, v, f, &mut self.cache, cached);
+        let cache = &mut self.cache;
+        let step = WordStep {
+            t,
+            h,
+            q,
+            p: mom,
+            v,
+            f,
+            cache,
+            cached,
+        };
+        self.counters.evaluations += self.word.flows(p, step);
     }
 }
 
