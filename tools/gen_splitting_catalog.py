@@ -45,6 +45,8 @@ def upper_first(text):
     return text[:1].upper() + text[1:]
 
 
+HEADER = g.generated_header("gen_splitting_catalog.py", "data/splitting.toml")
+
 TRANSCRIBED = """\
 //! Coefficients are transcribed from the project's `data/splitting.toml` by
 //! `tools/gen_splitting_catalog.py` and checked at compile time by the `{macro}!` macro.
@@ -123,7 +125,7 @@ def module(family, methods):
     title = {"splitting": "Splitting methods (drift/kick sequences), drift-first as in the catalog.",
              "composition": "Composition methods: weights over a symmetric second-order base."}[family]
     body = [line for m in methods for line in [""] + declaration(m)]
-    return f"//! {title}\n//!\n{TRANSCRIBED.format(macro=family)}" + "\n".join(body) + "\n"
+    return f"{HEADER}//! {title}\n//!\n{TRANSCRIBED.format(macro=family)}" + "\n".join(body) + "\n"
 
 
 LIST_RS = """\
@@ -157,7 +159,7 @@ def list_rs(methods):
 
     general = [m for m in methods if not m.get("requires_quadratic_kinetic", False)]
     quadratic = [m for m in methods if m.get("requires_quadratic_kinetic", False)]
-    return LIST_RS.format(count=len(methods), general=names(general), quadratic=names(quadratic))
+    return HEADER + LIST_RS.format(count=len(methods), general=names(general), quadratic=names(quadratic))
 
 
 DATA_HEADER = """\

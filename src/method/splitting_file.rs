@@ -1,86 +1,47 @@
 //! Splittings and compositions read from TOML text in the catalog's format, validated by
 //! the same code as the `splitting!` and `composition!` macros.
 
+use super::file::check_declared;
 use super::tableau::{vector, Coefficient};
 use super::Splitting;
 use crate::Error;
 use serde::Deserialize;
 use stormer_order::splitting::{CompositionSpec, SplittingSpec};
 
-/// The keys of one splitting or composition in a file. Descriptive keys of the catalog
-/// are accepted and ignored; declared stages and flags, when given, must agree with the
-/// coefficients.
+/// The keys of a splitting or composition in the catalog that describe it and are not
+/// read, besides those every method may have.
+const DESCRIPTIVE: &[&str] = &[
+    "class",
+    "order_general",
+    "order_rkn",
+    "n_kick",
+    "n_drift",
+    "convention",
+    "generalized_order",
+    "corrector",
+    "corrector_c",
+    "corrector_c_closed_form",
+    "base",
+    "source_convention",
+];
+
+/// The keys of one splitting or composition in a file, but for the descriptive ones;
+/// declared stages and flags, when given, must agree with the coefficients.
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
-#[allow(dead_code)] // the descriptive keys are read only to be accepted
 struct SplittingFile {
     name: String,
-    #[serde(default)]
     family: Option<String>,
     order: usize,
-    #[serde(default)]
     drift: Option<Vec<Coefficient>>,
-    #[serde(default)]
     kick: Option<Vec<Coefficient>>,
-    #[serde(default)]
     gamma: Option<Vec<Coefficient>>,
-    #[serde(default)]
     requires_quadratic_kinetic: Option<bool>,
-    #[serde(default)]
     stages: Option<usize>,
-    #[serde(default)]
     tolerance: Option<f64>,
-    #[serde(default)]
     explicit: Option<bool>,
-    #[serde(default)]
     fsal: Option<bool>,
-    #[serde(default)]
     symmetric: Option<bool>,
-    // Descriptive keys of the catalog.
-    #[serde(default)]
-    aliases: Option<toml::Value>,
-    #[serde(default)]
-    class: Option<toml::Value>,
-    #[serde(default)]
-    order_general: Option<toml::Value>,
-    #[serde(default)]
-    order_rkn: Option<toml::Value>,
-    #[serde(default)]
-    n_kick: Option<toml::Value>,
-    #[serde(default)]
-    n_drift: Option<toml::Value>,
-    #[serde(default)]
-    convention: Option<toml::Value>,
-    #[serde(default)]
-    generalized_order: Option<toml::Value>,
-    #[serde(default)]
-    corrector: Option<toml::Value>,
-    #[serde(default)]
-    corrector_c: Option<toml::Value>,
-    #[serde(default)]
-    corrector_c_closed_form: Option<toml::Value>,
-    #[serde(default)]
-    base: Option<toml::Value>,
-    #[serde(default)]
-    reference: Option<toml::Value>,
-    #[serde(default)]
-    source_repo: Option<toml::Value>,
-    #[serde(default)]
-    source_path: Option<toml::Value>,
-    #[serde(default)]
-    source_commit: Option<toml::Value>,
-    #[serde(default)]
-    source_convention: Option<toml::Value>,
-    #[serde(default)]
-    precision: Option<toml::Value>,
-    #[serde(default)]
-    notes: Option<toml::Value>,
-    #[serde(default)]
-    closed_form: Option<toml::Value>,
-    #[serde(default)]
-    checked_ok: Option<toml::Value>,
-    #[serde(default)]
-    checked: Option<toml::Value>,
 }
 
 impl SplittingFile {
@@ -133,32 +94,9 @@ impl SplittingFile {
             Error::InvalidMethod { reason, .. } => fail(reason),
             other => other,
         })?;
-        let flags = method.flags();
-        let declared = [
-            (
-                "stages",
-                self.stages.map(|s| s.to_string()),
-                method.stages().to_string(),
-            ),
-            (
-                "explicit",
-                self.explicit.map(|x| x.to_string()),
-                flags.explicit.to_string(),
-            ),
-            ("fsal", self.fsal.map(|x| x.to_string()), flags.fsal.to_string()),
-            (
-                "symmetric",
-                self.symmetric.map(|x| x.to_string()),
-                flags.symmetric.to_string(),
-            ),
-        ];
-        for (key, said, derived) in declared {
-            if let Some(said) = said.filter(|s| *s != derived) {
-                return Err(fail(format!(
-                    "the file declares {key} = {said} but the coefficients give {derived}"
-                )));
-            }
-        }
+        // a splitting is symplectic by construction: the file does not say
+        let declared = [self.explicit, self.fsal, None, self.symmetric];
+        check_declared(self.stages, declared, &method.info()).map_err(fail)?;
         Ok(method)
     }
 }
@@ -190,7 +128,7 @@ impl Splitting {
     /// `[[method]]` array; Butcher tableaus are skipped), or the one method at top level.
     pub fn all_from_toml_str(text: &str, origin: &str) -> Result<Vec<Self>, Error> {
         let not_butcher = |family: Option<&str>| family != Some("butcher");
-        super::file::read_entries(text, origin, not_butcher, |file: SplittingFile| {
+        super::file::read_entries(text, origin, not_butcher, DESCRIPTIVE, |file: SplittingFile| {
             file.into_splitting(origin)
         })
     }

@@ -1,6 +1,7 @@
 //! A Butcher tableau built at run time: from coefficients, or from a TOML file in the
 //! catalog's format, validated by the same code the compile-time macro uses.
 
+use super::file::check_declared;
 use super::{Flags, MethodInfo, TableauData};
 use crate::Error;
 use serde::Deserialize;
@@ -82,7 +83,7 @@ impl Tableau {
     /// array; methods of other families are skipped), or the one method at top level.
     pub fn all_from_toml_str(text: &str, origin: &str) -> Result<Vec<Self>, Error> {
         let butcher = |family: Option<&str>| family.unwrap_or("butcher") == "butcher";
-        super::file::read_entries(text, origin, butcher, |file: MethodFile| file.into_tableau(origin))
+        super::file::read_entries(text, origin, butcher, &[], |file: MethodFile| file.into_tableau(origin))
     }
 
     /// Reads a method file from disk.
@@ -179,59 +180,26 @@ pub(super) enum Coefficient {
     Float(f64),
 }
 
-/// The keys of one Butcher method in a file (catalog format). Descriptive keys of the
-/// catalog are accepted and ignored; the flags, when given, must agree with the data.
+/// The keys of one Butcher method in a file (catalog format), but for the descriptive ones
+/// every method may have; the flags, when given, must agree with the data.
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
-#[allow(dead_code)] // the descriptive keys are read only to be accepted
 struct MethodFile {
     name: String,
-    #[serde(default)]
     family: Option<String>,
     order: usize,
-    #[serde(default)]
     embedded_order: Option<usize>,
-    #[serde(default)]
     stages: Option<usize>,
-    #[serde(default)]
     c: Option<Vec<Coefficient>>,
     a: Vec<Vec<Coefficient>>,
     b: Vec<Coefficient>,
-    #[serde(default)]
     b_hat: Option<Vec<Coefficient>>,
-    #[serde(default)]
     b_hat3: Option<Vec<Coefficient>>,
-    #[serde(default)]
     tolerance: Option<f64>,
-    #[serde(default)]
     explicit: Option<bool>,
-    #[serde(default)]
     fsal: Option<bool>,
-    #[serde(default)]
     symplectic: Option<bool>,
-    #[serde(default)]
     symmetric: Option<bool>,
-    // Descriptive keys of the catalog.
-    #[serde(default)]
-    aliases: Option<toml::Value>,
-    #[serde(default)]
-    reference: Option<toml::Value>,
-    #[serde(default)]
-    source_repo: Option<toml::Value>,
-    #[serde(default)]
-    source_path: Option<toml::Value>,
-    #[serde(default)]
-    source_commit: Option<toml::Value>,
-    #[serde(default)]
-    precision: Option<toml::Value>,
-    #[serde(default)]
-    notes: Option<toml::Value>,
-    #[serde(default)]
-    closed_form: Option<toml::Value>,
-    #[serde(default)]
-    checked_ok: Option<toml::Value>,
-    #[serde(default)]
-    checked: Option<toml::Value>,
 }
 
 fn coefficient(c: &Coefficient, field: &str) -> Result<f64, String> {
@@ -290,47 +258,8 @@ impl MethodFile {
             Error::InvalidMethod { reason, .. } => fail(reason),
             other => other,
         })?;
-        let flags = tableau.flags();
-        let declared = [
-            (
-                "stages",
-                self.stages.map(|s| s == tableau.stages()),
-                self.stages.map(|s| s.to_string()),
-                tableau.stages().to_string(),
-            ),
-            (
-                "explicit",
-                self.explicit.map(|x| x == flags.explicit),
-                self.explicit.map(|x| x.to_string()),
-                flags.explicit.to_string(),
-            ),
-            (
-                "fsal",
-                self.fsal.map(|x| x == flags.fsal),
-                self.fsal.map(|x| x.to_string()),
-                flags.fsal.to_string(),
-            ),
-            (
-                "symplectic",
-                self.symplectic.map(|x| x == flags.symplectic),
-                self.symplectic.map(|x| x.to_string()),
-                flags.symplectic.to_string(),
-            ),
-            (
-                "symmetric",
-                self.symmetric.map(|x| x == flags.symmetric),
-                self.symmetric.map(|x| x.to_string()),
-                flags.symmetric.to_string(),
-            ),
-        ];
-        for (key, agrees, said, derived) in declared {
-            if agrees == Some(false) {
-                return Err(fail(format!(
-                    "the file declares {key} = {} but the coefficients give {derived}",
-                    said.unwrap_or_default()
-                )));
-            }
-        }
+        let declared = [self.explicit, self.fsal, self.symplectic, self.symmetric];
+        check_declared(self.stages, declared, &tableau.info()).map_err(fail)?;
         Ok(tableau)
     }
 }

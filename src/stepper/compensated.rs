@@ -19,7 +19,7 @@ use crate::hamiltonian::{halves, halves_mut};
 #[allow(unused_imports)]
 use crate::real::ops::*;
 use crate::{lit, State};
-use stormer_order::splitting::{Flow, Op};
+use stormer_order::splitting::Flow;
 
 /// Turns a stepper's compensated form on (made by `make` unless it is on already, so a
 /// running carry is kept) or off: the one `set_compensated` of every stepper that has one.
@@ -189,20 +189,10 @@ impl<S: State> CompensatedCombination<S> {
 #[derive(Debug, Clone)]
 pub(crate) struct CompensatedWord<S: State> {
     increment: WordIncrement<S>,
-    /// The state at the start of a step in place (which overwrites the caller's).
-    start: S,
     carry: Carry<S>,
 }
 
 impl<S: State> CompensatedWord<S> {
-    /// For a word of sub-flows, buffers shaped like `y0` (a phase-space state).
-    pub(crate) fn from_word(word: &[Op], y0: &S) -> Self {
-        Self::new(
-            word.iter().map(|op| (op.flow, lit(op.coef), lit(op.node))).collect(),
-            y0,
-        )
-    }
-
     /// For a word given as `(flow, fraction, node)` per op, buffers shaped like `y0`.
     pub(crate) fn new(ops: Vec<(Flow, S::Scalar, S::Scalar)>, y0: &S) -> Self {
         CompensatedWord {
@@ -212,7 +202,6 @@ impl<S: State> CompensatedWord<S> {
                 point: y0.zeros_like(),
                 work: vec![S::Scalar::zero(); 2 * y0.dim()],
             },
-            start: y0.zeros_like(),
             carry: Carry::new(y0),
         }
     }
@@ -233,26 +222,6 @@ impl<S: State> CompensatedWord<S> {
     {
         let evaluations = self.increment.compute(p, t, h, y, cache);
         self.carry.add(y, &self.increment.delta, y_new);
-        evaluations
-    }
-
-    /// One step that overwrites `y` and is accepted at once.
-    pub(crate) fn step_in_place<P>(
-        &mut self,
-        p: &P,
-        t: S::Scalar,
-        h: S::Scalar,
-        y: &mut S,
-        cache: &mut P::FlowCache,
-    ) -> u64
-    where
-        P: Splittable<Scalar = S::Scalar, State = S>,
-    {
-        // the start moves to our buffer (a swap: no copy of a heap state, no allocation)
-        core::mem::swap(&mut self.start, y);
-        let evaluations = self.increment.compute(p, t, h, &self.start, cache);
-        self.carry.add(&self.start, &self.increment.delta, y);
-        self.carry.commit();
         evaluations
     }
 

@@ -1,12 +1,92 @@
-//! The stepper of a compiled explicit tableau: the macro's unrolled stages, plus FSAL
-//! bookkeeping and the error estimate.
+//! The explicit Runge-Kutta stepper, one for compiled and run-time tableaus: FSAL
+//! bookkeeping, compensated summation and the error estimate over the stages of an
+//! [`ExplicitStages`] (the macro's unrolled code, or loops over a run-time tableau).
 
 use super::compensated::CompensatedCombination;
 use super::{Counters, Stepper, Tolerances};
 use crate::method::ExplicitMethod;
-#[allow(unused_imports)]
-use crate::real::ops::*;
 use crate::{Error, MethodInfo, Problem, State};
+
+/// The stages of an explicit tableau, as [`ExplicitStepper`] runs them: compiled
+/// ([`Unrolled`], the code `tableau!` generates) or read at run time
+/// ([`super::RuntimeStages`]). Both perform the same floating-point operations in the same
+/// order, so their trajectories are bitwise equal (`tests/compiled_vs_runtime.rs`).
+pub trait ExplicitStages<S: State>: Clone + core::fmt::Debug {
+    /// Name, order, stages and flags.
+    fn info(&self) -> MethodInfo;
+    /// The weights `b` as declared (for the compensated combination).
+    fn weights(&self) -> &[f64];
+    /// Whether the tableau has `b_hat`, and DOP853's `b_hat3`.
+    fn estimates(&self) -> (bool, bool);
+    /// Stages 2..=s and the new state: `k[0]` already holds `f(t, y)`; writes `k[1..s]`
+    /// and `y_new = y + h sum_i b_i k_i` (`y_new` doubles as the stage state).
+    fn stages<P>(&self, p: &P, t: S::Scalar, h: S::Scalar, y: &S, k: &mut [S], y_new: &mut S)
+    where
+        P: Problem<Scalar = S::Scalar, State = S>;
+    /// `err = h sum_i (b_i - b_hat_i) k_i`.
+    fn error(&self, h: S::Scalar, k: &[S], err: &mut S);
+    /// `err = h sum_i (b_i - b_hat3_i) k_i`.
+    fn error3(&self, h: S::Scalar, k: &[S], err: &mut S);
+}
+
+/// The stages `tableau!` generated for `M`, with its coefficients converted to the
+/// state's scalar.
+#[derive(Debug, Clone, Copy)]
+pub struct Unrolled<M: ExplicitMethod, S: State> {
+    co: M::Coeffs<S::Scalar>,
+}
+
+impl<M: ExplicitMethod, S: State> ExplicitStages<S> for Unrolled<M, S> {
+    fn info(&self) -> MethodInfo {
+        M::DATA.info()
+    }
+
+    fn weights(&self) -> &[f64] {
+        M::DATA.b
+    }
+
+    #[inline(always)]
+    fn estimates(&self) -> (bool, bool) {
+        (M::DATA.b_hat.is_some(), M::DATA.b_hat3.is_some())
+    }
+
+    #[inline(always)]
+    fn stages<P>(&self, p: &P, t: S::Scalar, h: S::Scalar, y: &S, k: &mut [S], y_new: &mut S)
+    where
+        P: Problem<Scalar = S::Scalar, State = S>,
+    {
+        M::stages(&self.co, p, t, h, y, k, y_new);
+    }
+
+    #[inline(always)]
+    fn error(&self, h: S::Scalar, k: &[S], err: &mut S) {
+        M::error(&self.co, h, k, err);
+    }
+
+    #[inline(always)]
+    fn error3(&self, h: S::Scalar, k: &[S], err: &mut S) {
+        M::error3(&self.co, h, k, err);
+    }
+}
+
+/// Stepper for an explicit tableau whose stages `C` gives, on states `S`: the generated
+/// code of a compiled method ([`ExplicitRk`]) or a tableau read at run time
+/// ([`super::RuntimeRk`]).
+#[derive(Debug, Clone)]
+pub struct ExplicitStepper<C, S: State> {
+    stages: C,
+    /// Whether the last stage is `f` at the new state (and becomes the next `k[0]`).
+    fsal: bool,
+    /// The order of the error estimate ([`Stepper::error_order`]).
+    error_order: Option<usize>,
+    k: Vec<S>,
+    err: Option<S>,
+    err3: Option<S>,
+    k0_valid: bool,
+    /// The final combination summed with a carry, when turned on.
+    compensated: Option<CompensatedCombination<S>>,
+    counters: Counters,
+}
 
 /// Stepper for an explicit method `M` declared with [`crate::tableau!`], on states `S`.
 ///
@@ -23,30 +103,43 @@ use crate::{Error, MethodInfo, Problem, State};
 /// rk4.step(&Decay, 0.0, 0.1, &[1.0], &mut y, None).unwrap();
 /// assert!((y[0] - (-0.1f64).exp()).abs() < 1e-7);
 /// ```
-#[derive(Debug, Clone)]
-pub struct ExplicitRk<M: ExplicitMethod, S: State> {
-    co: M::Coeffs<S::Scalar>,
-    k: Vec<S>,
-    err: Option<S>,
-    err3: Option<S>,
-    k0_valid: bool,
-    /// The final combination summed with a carry, when turned on.
-    compensated: Option<CompensatedCombination<S>>,
-    counters: Counters,
-}
+pub type ExplicitRk<M, S> = ExplicitStepper<Unrolled<M, S>, S>;
 
-impl<M: ExplicitMethod, S: State> ExplicitRk<M, S> {
+impl<M: ExplicitMethod, S: State> ExplicitStepper<Unrolled<M, S>, S> {
     /// A stepper with stage buffers shaped like `y0`.
     pub fn new(y0: &S) -> Self {
-        let data = M::DATA;
-        ExplicitRk {
-            co: M::coeffs(),
-            k: vec![y0.zeros_like(); data.stages],
-            err: data.b_hat.map(|_| y0.zeros_like()),
-            err3: data.b_hat3.map(|_| y0.zeros_like()),
+        Self::with_stages(Unrolled { co: M::coeffs() }, y0)
+    }
+
+    /// Boxed for run-time method choice (used by the macro's `dyn_stepper`).
+    pub fn boxed<P>(y0: &S) -> Box<dyn Stepper<P>>
+    where
+        P: Problem<Scalar = S::Scalar, State = S> + 'static,
+        S: 'static,
+    {
+        Box::new(Self::new(y0))
+    }
+}
+
+impl<C: ExplicitStages<S>, S: State> ExplicitStepper<C, S> {
+    /// A stepper over `stages`, with buffers shaped like `y0`.
+    pub(crate) fn with_stages(stages: C, y0: &S) -> Self {
+        let info = stages.info();
+        let (estimate, estimate3) = stages.estimates();
+        ExplicitStepper {
+            // DOP853's combined estimate behaves like an order-7 one (Hairer's exponent 1/8).
+            error_order: match (info.embedded_order, estimate3) {
+                (Some(_), true) => Some(info.order - 1),
+                (q, _) => q,
+            },
+            fsal: info.flags.fsal,
+            k: vec![y0.zeros_like(); info.stages],
+            err: estimate.then(|| y0.zeros_like()),
+            err3: estimate3.then(|| y0.zeros_like()),
             k0_valid: false,
             compensated: None,
             counters: Counters::default(),
+            stages,
         }
     }
 
@@ -60,29 +153,23 @@ impl<M: ExplicitMethod, S: State> ExplicitRk<M, S> {
             p.rhs(t, y, &mut self.k[0]);
             self.counters.evaluations += 1;
         }
-        M::stages(&self.co, p, t, h, y, &mut self.k, y_new);
-        self.counters.evaluations += M::DATA.stages as u64 - 1;
+        self.stages.stages(p, t, h, y, &mut self.k, y_new);
+        self.counters.evaluations += self.k.len() as u64 - 1;
         self.k0_valid = true;
     }
 }
 
-impl<M, P> Stepper<P> for ExplicitRk<M, P::State>
+impl<C, P> Stepper<P> for ExplicitStepper<C, P::State>
 where
-    M: ExplicitMethod,
+    C: ExplicitStages<P::State>,
     P: Problem,
 {
     fn info(&self) -> MethodInfo {
-        M::DATA.info()
+        self.stages.info()
     }
 
     fn error_order(&self) -> Option<usize> {
-        let data = M::DATA;
-        // DOP853's combined estimate behaves like an order-7 one (Hairer's exponent 1/8).
-        match (data.embedded_order, data.b_hat3) {
-            (Some(_), Some(_)) => Some(data.order - 1),
-            (q, None) => q,
-            (None, Some(_)) => None,
-        }
+        self.error_order
     }
 
     #[inline]
@@ -102,10 +189,10 @@ where
         let (Some(tol), Some(err)) = (tol, self.err.as_mut()) else {
             return Ok(None);
         };
-        M::error(&self.co, h, &self.k, err);
+        self.stages.error(h, &self.k, err);
         let norm = match self.err3.as_mut() {
             Some(err3) => {
-                M::error3(&self.co, h, &self.k, err3);
+                self.stages.error3(h, &self.k, err3);
                 tol.dop853(y, y_new, err, err3)
             }
             None => tol.rms(y, y_new, err),
@@ -118,7 +205,7 @@ where
             // the last stage was evaluated at the uncompensated y_new: no FSAL reuse
             sum.accept();
             self.k0_valid = false;
-        } else if M::DATA.flags.fsal {
+        } else if self.fsal {
             let s = self.k.len();
             self.k.swap(0, s - 1);
         } else {
@@ -135,23 +222,12 @@ where
 
     fn set_compensated(&mut self, on: bool) -> Result<(), Error> {
         super::compensated::switch(&mut self.compensated, on, || {
-            CompensatedCombination::new(M::DATA.b, &self.k[0])
+            CompensatedCombination::new(self.stages.weights(), &self.k[0])
         });
         Ok(())
     }
 
     fn counters(&self) -> Counters {
         self.counters
-    }
-}
-
-impl<M: ExplicitMethod, S: State> ExplicitRk<M, S> {
-    /// Boxed for run-time method choice (used by the macro's `dyn_stepper`).
-    pub fn boxed<P>(y0: &S) -> Box<dyn Stepper<P>>
-    where
-        P: Problem<Scalar = S::Scalar, State = S> + 'static,
-        S: 'static,
-    {
-        Box::new(Self::new(y0))
     }
 }

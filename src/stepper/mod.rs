@@ -11,7 +11,6 @@ mod explicit;
 mod implicit;
 mod particle;
 mod runtime;
-mod runtime_splitting;
 mod splitting;
 mod two_step;
 
@@ -19,12 +18,13 @@ pub use boris::{Boris, BorisRotation};
 pub use composed::Composed;
 pub use error_norm::Tolerances;
 pub use euler_cromer::EulerCromer;
-pub use explicit::ExplicitRk;
+pub use explicit::{ExplicitRk, ExplicitStages, ExplicitStepper, Unrolled};
 pub use implicit::{ImplicitOptions, ImplicitRk, ImplicitSolver};
 pub use particle::{ParticleMethod, PARTICLE_METHODS};
-pub use runtime::RuntimeRk;
-pub use runtime_splitting::RuntimeSplitting;
-pub use splitting::SplittingStepper;
+pub use runtime::{RuntimeRk, RuntimeStages};
+pub use splitting::{
+    RuntimeSplitting, RuntimeWord, SplittingStepper, SplittingWord, UnrolledWord, WordStep, WordStepper,
+};
 pub use two_step::StormerTwoStep;
 
 use crate::{Error, MethodInfo, Problem};

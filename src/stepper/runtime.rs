@@ -1,7 +1,7 @@
-//! The generic explicit stepper over a tableau known only at run time.
+//! The stages of an explicit tableau known only at run time: loops over its nonzero
+//! coefficients where the generated code is unrolled.
 
-use super::compensated::CompensatedCombination;
-use super::{Counters, Stepper, Tolerances};
+use super::explicit::{ExplicitStages, ExplicitStepper};
 #[allow(unused_imports)]
 use crate::real::ops::*;
 use crate::{lit, Error, MethodInfo, Problem, Real, State, Tableau};
@@ -17,33 +17,26 @@ fn sparse<T: Real>(row: impl IntoIterator<Item = f64>) -> Sparse<T> {
         .collect()
 }
 
-/// Stepper for an explicit [`Tableau`] built at run time (e.g. read from a file).
-///
-/// Same operation order as the generated steppers (zero coefficients skipped, sums in
-/// column order), so both give bitwise-equal trajectories; it only loops where the
-/// generated code is unrolled.
+/// The stages of a run-time [`Tableau`], in the generated code's operation order (zero
+/// coefficients skipped, sums in column order).
 #[derive(Debug, Clone)]
-pub struct RuntimeRk<S: State> {
-    info: MethodInfo,
-    error_order: Option<usize>,
-    fsal: bool,
+pub struct RuntimeStages<S: State> {
+    tableau: Tableau,
     a: Vec<Sparse<S::Scalar>>,
     c: Vec<S::Scalar>,
     b: Sparse<S::Scalar>,
+    /// `b - b_hat` and `b - b_hat3`, computed in `f64` as the macro does.
     d: Option<Sparse<S::Scalar>>,
     d3: Option<Sparse<S::Scalar>>,
-    k: Vec<S>,
-    err: S,
-    err3: S,
-    k0_valid: bool,
-    /// The weights `b` as declared, for the compensated combination.
-    b_declared: Vec<f64>,
-    /// The final combination summed with a carry, when turned on.
-    compensated: Option<CompensatedCombination<S>>,
-    counters: Counters,
 }
 
-impl<S: State> RuntimeRk<S> {
+/// Stepper for an explicit [`Tableau`] built at run time (e.g. read from a file).
+///
+/// Same operation order as the generated steppers, so both give bitwise-equal
+/// trajectories; it only loops where the generated code is unrolled.
+pub type RuntimeRk<S> = ExplicitStepper<RuntimeStages<S>, S>;
+
+impl<S: State> ExplicitStepper<RuntimeStages<S>, S> {
     /// A stepper for an explicit tableau; an implicit one is an error.
     pub fn new(tableau: &Tableau, y0: &S) -> Result<Self, Error> {
         if !tableau.flags().explicit {
@@ -52,28 +45,20 @@ impl<S: State> RuntimeRk<S> {
                 reason: "the tableau is implicit; use ImplicitRk".into(),
             });
         }
-        let s = tableau.stages();
         let diff = |w: &[f64]| sparse(tableau.b().iter().zip(w).map(|(b, w)| b - w));
-        Ok(RuntimeRk {
-            info: tableau.info(),
-            error_order: match (tableau.embedded_order(), tableau.b_hat3()) {
-                (Some(_), Some(_)) => Some(tableau.order() - 1),
-                (q, _) => q,
-            },
-            fsal: tableau.flags().fsal,
-            a: tableau.a().chunks(s).map(|row| sparse(row.iter().copied())).collect(),
+        let stages = RuntimeStages {
+            a: tableau
+                .a()
+                .chunks(tableau.stages())
+                .map(|row| sparse(row.iter().copied()))
+                .collect(),
             c: tableau.c().iter().map(|&c| lit(c)).collect(),
             b: sparse(tableau.b().iter().copied()),
             d: tableau.b_hat().map(diff),
             d3: tableau.b_hat3().map(diff),
-            k: vec![y0.zeros_like(); s],
-            err: y0.zeros_like(),
-            err3: y0.zeros_like(),
-            k0_valid: false,
-            b_declared: tableau.b().to_vec(),
-            compensated: None,
-            counters: Counters::default(),
-        })
+            tableau: tableau.clone(),
+        };
+        Ok(Self::with_stages(stages, y0))
     }
 }
 
@@ -98,85 +83,44 @@ fn combine<S: State>(out: &mut S, base: Option<&S>, h: S::Scalar, w: &Sparse<S::
     }
 }
 
-impl<P: Problem> Stepper<P> for RuntimeRk<P::State> {
+impl<S: State> ExplicitStages<S> for RuntimeStages<S> {
     fn info(&self) -> MethodInfo {
-        self.info.clone()
+        self.tableau.info()
     }
 
-    fn error_order(&self) -> Option<usize> {
-        self.error_order
+    fn weights(&self) -> &[f64] {
+        self.tableau.b()
     }
 
-    fn step(
-        &mut self,
-        p: &P,
-        t: P::Scalar,
-        h: P::Scalar,
-        y: &P::State,
-        y_new: &mut P::State,
-        tol: Option<&Tolerances<P::Scalar>>,
-    ) -> Result<Option<P::Scalar>, Error> {
-        if !self.k0_valid {
-            p.rhs(t, y, &mut self.k[0]);
-            self.counters.evaluations += 1;
-        }
-        for i in 1..self.k.len() {
-            combine(y_new, Some(y), h, &self.a[i], &self.k);
-            let ti = if self.c[i] == P::Scalar::zero() {
+    fn estimates(&self) -> (bool, bool) {
+        (self.d.is_some(), self.d3.is_some())
+    }
+
+    fn stages<P>(&self, p: &P, t: S::Scalar, h: S::Scalar, y: &S, k: &mut [S], y_new: &mut S)
+    where
+        P: Problem<Scalar = S::Scalar, State = S>,
+    {
+        for i in 1..k.len() {
+            combine(y_new, Some(y), h, &self.a[i], k);
+            let ti = if self.c[i] == S::Scalar::zero() {
                 t
             } else {
                 t + self.c[i] * h
             };
-            p.rhs(ti, y_new, &mut self.k[i]);
-            self.counters.evaluations += 1;
+            p.rhs(ti, y_new, &mut k[i]);
         }
-        match self.compensated.as_mut() {
-            Some(sum) => sum.combine(h, y, &self.k, y_new),
-            None => combine(y_new, Some(y), h, &self.b, &self.k),
-        }
-        self.k0_valid = true;
-        let (Some(tol), Some(d)) = (tol, self.d.as_ref()) else {
-            return Ok(None);
-        };
-        combine(&mut self.err, None, h, d, &self.k);
-        let norm = match self.d3.as_ref() {
-            Some(d3) => {
-                combine(&mut self.err3, None, h, d3, &self.k);
-                tol.dop853(y, y_new, &self.err, &self.err3)
-            }
-            None => tol.rms(y, y_new, &self.err),
-        };
-        Ok(Some(norm))
+        combine(y_new, Some(y), h, &self.b, k);
     }
 
-    fn accept(&mut self) {
-        if let Some(sum) = self.compensated.as_mut() {
-            // the last stage was evaluated at the uncompensated y_new: no FSAL reuse
-            sum.accept();
-            self.k0_valid = false;
-        } else if self.fsal {
-            let s = self.k.len();
-            self.k.swap(0, s - 1);
-        } else {
-            self.k0_valid = false;
+    fn error(&self, h: S::Scalar, k: &[S], err: &mut S) {
+        if let Some(d) = &self.d {
+            combine(err, None, h, d, k);
         }
     }
 
-    fn reset(&mut self) {
-        self.k0_valid = false;
-        if let Some(sum) = self.compensated.as_mut() {
-            sum.reset();
+    fn error3(&self, h: S::Scalar, k: &[S], err: &mut S) {
+        if let Some(d3) = &self.d3 {
+            combine(err, None, h, d3, k);
         }
-    }
-
-    fn set_compensated(&mut self, on: bool) -> Result<(), Error> {
-        super::compensated::switch(&mut self.compensated, on, || {
-            CompensatedCombination::new(&self.b_declared, &self.k[0])
-        });
-        Ok(())
-    }
-
-    fn counters(&self) -> Counters {
-        self.counters
     }
 }

@@ -1,12 +1,162 @@
-//! The stepper of a compiled splitting or composition: the macro's unrolled word of
-//! sub-flows, plus the reuse of the last force of a step by the next (FSAL).
+//! The splitting stepper, one for compiled and run-time splittings and compositions: the
+//! reuse of the last force of a step by the next (FSAL) and compensated summation, over
+//! the word of sub-flows of a [`SplittingWord`] (the macro's unrolled word, or a loop over
+//! a run-time one).
 
 use super::compensated::CompensatedWord;
 use super::{Counters, Stepper, Tolerances};
-use crate::flows::Admits;
+use crate::flows::{Admits, General, ProblemClass, Splittable};
 use crate::hamiltonian::halves_mut;
 use crate::method::SplittingMethod;
-use crate::{Error, MethodInfo, State};
+use crate::{lit, Error, MethodInfo, State};
+use stormer_order::splitting::Flow;
+
+/// A word of sub-flows `(flow, fraction, node)`, one per op.
+type Ops<T> = Vec<(Flow, T, T)>;
+
+/// The word of a splitting or composition, as [`WordStepper`] runs it: compiled
+/// ([`UnrolledWord`], the code `splitting!` / `composition!` generate) or read at run time
+/// ([`RuntimeWord`]). Both perform the same floating-point operations in the same order,
+/// so their trajectories are bitwise equal (`tests/compiled_vs_runtime.rs`).
+pub trait SplittingWord<S: State>: Clone + core::fmt::Debug {
+    /// The problems the word runs on: [`General`] or [`crate::flows::QuadraticOnly`].
+    type Class: ProblemClass;
+    /// Name, order, stages and flags.
+    fn info(&self) -> MethodInfo;
+    /// The step starts and ends with a kick: the last force of a step is the next's first.
+    fn fsal(&self) -> bool;
+    /// The word as `(flow, fraction, node)` per op (for the compensated form).
+    fn ops(&self) -> Ops<S::Scalar>;
+    /// One step of the word in place ([`SplittingMethod::flows`]); returns the number of
+    /// force evaluations.
+    fn flows<P>(&self, problem: &P, step: WordStep<'_, P>) -> u64
+    where
+        P: Splittable<Scalar = S::Scalar, State = S>;
+}
+
+/// One step of a word: from `t`, of size `h`, on the halves `q` and `p` of the state in
+/// place, with the drift's scratch `v`, the force `f` (on return, the last one evaluated)
+/// and the flows' cache; `cached`: `f` already holds the force at `(t, q)`.
+#[derive(Debug)]
+pub struct WordStep<'a, P: Splittable> {
+    /// Start of the step.
+    pub t: P::Scalar,
+    /// Step size.
+    pub h: P::Scalar,
+    /// Positions.
+    pub q: &'a mut [P::Scalar],
+    /// Momenta.
+    pub p: &'a mut [P::Scalar],
+    /// Drift scratch.
+    pub v: &'a mut [P::Scalar],
+    /// Force.
+    pub f: &'a mut [P::Scalar],
+    /// The problem's cache of its flows.
+    pub cache: &'a mut P::FlowCache,
+    /// `f` holds the force at `(t, q)` (reused by a first kick).
+    pub cached: bool,
+}
+
+/// The word `splitting!` or `composition!` generated for `M`, with its coefficients
+/// converted to the state's scalar.
+#[derive(Debug, Clone, Copy)]
+pub struct UnrolledWord<M: SplittingMethod, S: State> {
+    co: M::Coeffs<S::Scalar>,
+}
+
+impl<M: SplittingMethod, S: State> SplittingWord<S> for UnrolledWord<M, S> {
+    type Class = M::Class;
+
+    fn info(&self) -> MethodInfo {
+        M::DATA.info()
+    }
+
+    #[inline(always)]
+    fn fsal(&self) -> bool {
+        M::DATA.flags.fsal
+    }
+
+    fn ops(&self) -> Ops<S::Scalar> {
+        let word = M::DATA.word();
+        word.iter().map(|op| (op.flow, lit(op.coef), lit(op.node))).collect()
+    }
+
+    #[inline(always)]
+    fn flows<P>(&self, problem: &P, step: WordStep<'_, P>) -> u64
+    where
+        P: Splittable<Scalar = S::Scalar, State = S>,
+    {
+        let (t, h, cached) = (step.t, step.h, step.cached);
+        M::flows(
+            &self.co, problem, t, h, step.q, step.p, step.v, step.f, step.cache, cached,
+        )
+    }
+}
+
+/// The word of a run-time [`crate::Splitting`], read op by op.
+#[derive(Debug, Clone)]
+pub struct RuntimeWord<S: State> {
+    info: MethodInfo,
+    ops: Ops<S::Scalar>,
+}
+
+impl<S: State> SplittingWord<S> for RuntimeWord<S> {
+    /// A run-time method runs on every splittable problem; one that needs a quadratic
+    /// kinetic energy is refused when it is built ([`RuntimeSplitting::new`]).
+    type Class = General;
+
+    fn info(&self) -> MethodInfo {
+        self.info.clone()
+    }
+
+    fn fsal(&self) -> bool {
+        self.info.flags.fsal
+    }
+
+    fn ops(&self) -> Ops<S::Scalar> {
+        self.ops.clone()
+    }
+
+    fn flows<P>(&self, problem: &P, step: WordStep<'_, P>) -> u64
+    where
+        P: Splittable<Scalar = S::Scalar, State = S>,
+    {
+        let (t, h, q, p, v, f) = (step.t, step.h, step.q, step.p, step.v, step.f);
+        let mut evaluations = 0;
+        for (i, &(flow, coef, node)) in self.ops.iter().enumerate() {
+            match flow {
+                Flow::Drift => problem.drift(t + node * h, coef * h, q, p, v, step.cache),
+                Flow::Kick => {
+                    if !(i == 0 && step.cached) {
+                        problem.force(t + node * h, q, f);
+                        evaluations += 1;
+                    }
+                    problem.kick(coef * h, f, p);
+                }
+            }
+        }
+        evaluations
+    }
+}
+
+/// Stepper for the word `W` of a splitting or composition on phase-space states
+/// `S = (q, p)`; `C` is the problem's [`crate::Splittable::FlowCache`] (`()` for every
+/// [`crate::Hamiltonian`]). Compiled methods run as [`SplittingStepper`], run-time ones as
+/// [`RuntimeSplitting`].
+#[derive(Debug, Clone)]
+pub struct WordStepper<W, S: State, C = ()> {
+    word: W,
+    cache: C,
+    /// `(v, f)`: drift scratch and the force of the last kick.
+    work: S,
+    /// `f` holds the force at the current `(t, y)`.
+    cached: bool,
+    /// The last step left the force at its `y_new` in `f`.
+    fresh: bool,
+    /// The word in increment form with Kahan's carry, when compensated summation is on.
+    compensated: Option<CompensatedWord<S>>,
+    counters: Counters,
+}
 
 /// Stepper for a splitting or composition `M` (declared with `splitting!` or
 /// `composition!`) on phase-space states `S = (q, p)`; `C` is the problem's
@@ -29,43 +179,37 @@ use crate::{Error, MethodInfo, State};
 /// verlet.step(&Oscillator, 0.0, 0.1, &[1.0, 0.0], &mut y, None).unwrap();
 /// assert_eq!(y, [1.0 - 0.1 * 0.1 / 2.0, -0.1 * (1.0 + (1.0 - 0.005)) / 2.0]);
 /// ```
-#[derive(Debug, Clone)]
-pub struct SplittingStepper<M: SplittingMethod, S: State, C = ()> {
-    co: M::Coeffs<S::Scalar>,
-    cache: C,
-    /// `(v, f)`: drift scratch and the force of the last kick.
-    work: S,
-    /// `f` holds the force at the current `(t, y)`.
-    cached: bool,
-    /// The last step left the force at its `y_new` in `f`.
-    fresh: bool,
-    /// The word in increment form with Kahan's carry, when compensated summation is on.
-    compensated: Option<CompensatedWord<S>>,
-    counters: Counters,
-}
+pub type SplittingStepper<M, S, C = ()> = WordStepper<UnrolledWord<M, S>, S, C>;
 
-impl<M: SplittingMethod, S: State, C: Default> SplittingStepper<M, S, C> {
+/// Stepper for a [`crate::Splitting`] held in memory, on phase-space states `S = (q, p)`.
+///
+/// ```
+/// use stormer::{RuntimeSplitting, SecondOrder, Splitting, Stepper};
+/// struct Oscillator;
+/// impl SecondOrder for Oscillator {
+///     type Scalar = f64;
+///     type State = [f64; 2];
+///     fn acceleration(&self, _t: f64, q: &[f64], a: &mut [f64]) { a[0] = -q[0]; }
+/// }
+/// let kdk = Splitting::splitting("my_verlet", &[0.0, 1.0], &[0.5, 0.5], 2, false).unwrap();
+/// let mut s = RuntimeSplitting::new(&kdk, &[1.0, 0.0]).unwrap();
+/// let mut y = [0.0; 2];
+/// s.step(&Oscillator, 0.0, 0.1, &[1.0, 0.0], &mut y, None).unwrap();
+/// assert!((y[0] - 0.995).abs() < 1e-15);
+/// ```
+pub type RuntimeSplitting<S, C = ()> = WordStepper<RuntimeWord<S>, S, C>;
+
+impl<M: SplittingMethod, S: State, C: Default> WordStepper<UnrolledWord<M, S>, S, C> {
     /// A stepper with buffers shaped like `y0`, which must have even length `(q, p)`.
     pub fn new(y0: &S) -> Result<Self, Error> {
         check_phase_space(M::DATA.name, y0)?;
-        Ok(SplittingStepper {
-            co: M::coeffs(),
-            cache: C::default(),
-            work: y0.zeros_like(),
-            cached: false,
-            fresh: false,
-            compensated: None,
-            counters: Counters::default(),
-        })
+        Ok(Self::with_word(UnrolledWord { co: M::coeffs() }, y0))
     }
 
     /// Boxed for run-time method choice.
     pub fn boxed<P>(y0: &S) -> Result<Box<dyn Stepper<P>>, Error>
     where
-        P: Admits<M::Class>
-            + crate::Problem<Scalar = S::Scalar, State = S>
-            + crate::Splittable<FlowCache = C>
-            + 'static,
+        P: Admits<M::Class> + crate::Problem<Scalar = S::Scalar, State = S> + Splittable<FlowCache = C> + 'static,
         S: 'static,
         C: 'static,
     {
@@ -73,8 +217,36 @@ impl<M: SplittingMethod, S: State, C: Default> SplittingStepper<M, S, C> {
     }
 }
 
+impl<S: State, C: Default> WordStepper<RuntimeWord<S>, S, C> {
+    /// A stepper for a general method (valid for every splittable problem). A method that
+    /// needs a quadratic kinetic energy is refused: use [`RuntimeSplitting::new_quadratic`]
+    /// for a [`crate::QuadraticKinetic`] problem.
+    pub fn new(method: &crate::Splitting, y0: &S) -> Result<Self, Error> {
+        if method.requires_quadratic_kinetic() {
+            return Err(Error::Unsupported {
+                name: method.name().to_string(),
+                reason: "it reaches its order only when the kinetic energy is quadratic in p \
+                         (a Runge-Kutta-Nystrom method); use a general splitting or composition instead"
+                    .into(),
+            });
+        }
+        Self::new_quadratic(method, y0)
+    }
+
+    /// A stepper for any method, for a problem whose kinetic energy is quadratic.
+    pub fn new_quadratic(method: &crate::Splitting, y0: &S) -> Result<Self, Error> {
+        check_phase_space(method.name(), y0)?;
+        let ops = method.word().iter();
+        let word = RuntimeWord {
+            info: method.info(),
+            ops: ops.map(|op| (op.flow, lit(op.coef), lit(op.node))).collect(),
+        };
+        Ok(Self::with_word(word, y0))
+    }
+}
+
 /// The error for a state that is not a phase-space `(q, p)` of even length.
-pub(crate) fn check_phase_space<S: State>(method: &str, y0: &S) -> Result<(), Error> {
+fn check_phase_space<S: State>(method: &str, y0: &S) -> Result<(), Error> {
     if y0.dim() % 2 == 0 && y0.dim() > 0 {
         Ok(())
     } else {
@@ -88,26 +260,53 @@ pub(crate) fn check_phase_space<S: State>(method: &str, y0: &S) -> Result<(), Er
     }
 }
 
-impl<M: SplittingMethod, S: State, C> SplittingStepper<M, S, C> {
+impl<W: SplittingWord<S>, S: State, C: Default> WordStepper<W, S, C> {
+    /// A stepper over `word`, with buffers shaped like `y0`.
+    fn with_word(word: W, y0: &S) -> Self {
+        WordStepper {
+            word,
+            cache: C::default(),
+            work: y0.zeros_like(),
+            cached: false,
+            fresh: false,
+            compensated: None,
+            counters: Counters::default(),
+        }
+    }
+}
+
+impl<W: SplittingWord<S>, S: State, C> WordStepper<W, S, C> {
     /// The method's word applied to `y` in place.
     #[inline(always)]
     fn flows<P>(&mut self, p: &P, t: S::Scalar, h: S::Scalar, y: &mut S, cached: bool)
     where
-        P: crate::Splittable<Scalar = S::Scalar, State = S, FlowCache = C>,
+        P: Splittable<Scalar = S::Scalar, State = S, FlowCache = C>,
     {
         let (q, mom) = halves_mut(y.as_mut_slice());
         let (v, f) = halves_mut(self.work.as_mut_slice());
-        self.counters.evaluations += M::flows(&self.co, p, t, h, q, mom, v, f, &mut self.cache, cached);
+        let cache = &mut self.cache;
+        let step = WordStep {
+            t,
+            h,
+            q,
+            p: mom,
+            v,
+            f,
+            cache,
+            cached,
+        };
+        self.counters.evaluations += self.word.flows(p, step);
     }
 }
 
-impl<M, P> Stepper<P> for SplittingStepper<M, P::State, P::FlowCache>
+impl<W, S, C, P> Stepper<P> for WordStepper<W, S, C>
 where
-    M: SplittingMethod,
-    P: Admits<M::Class>,
+    S: State,
+    W: SplittingWord<S>,
+    P: Admits<W::Class> + Splittable<Scalar = S::Scalar, State = S, FlowCache = C>,
 {
     fn info(&self) -> MethodInfo {
-        M::DATA.info()
+        self.word.info()
     }
 
     fn error_order(&self) -> Option<usize> {
@@ -129,11 +328,11 @@ where
             return Ok(None);
         }
         // the cached force is valid for this step only if nothing ran since `accept`
-        let cached = self.cached && M::DATA.flags.fsal;
+        let cached = self.cached && self.word.fsal();
         self.cached = false;
         y_new.copy_from(y);
         self.flows(p, t, h, y_new, cached);
-        self.fresh = M::DATA.flags.fsal;
+        self.fresh = self.word.fsal();
         Ok(None)
     }
 
@@ -151,9 +350,9 @@ where
                 "step_in_place on a compensated splitting stepper (steps_in_place() is false: call step)",
             ));
         }
-        let cached = self.cached && M::DATA.flags.fsal;
+        let cached = self.cached && self.word.fsal();
         self.flows(p, t, h, y, cached);
-        self.cached = M::DATA.flags.fsal;
+        self.cached = self.word.fsal();
         self.fresh = false;
         Ok(())
     }
@@ -178,7 +377,7 @@ where
         self.cached = false;
         self.fresh = false;
         super::compensated::switch(&mut self.compensated, on, || {
-            CompensatedWord::from_word(&M::DATA.word(), &self.work)
+            CompensatedWord::new(self.word.ops(), &self.work)
         });
         Ok(())
     }
