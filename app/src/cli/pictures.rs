@@ -58,7 +58,7 @@ pub fn draw_run(sample: &Sample, stem: &Path, scene: &str, method: &str) -> Pict
     let title = |what: &str| format!("{scene}, {method}: {what}");
     let column = |j: usize| sample.column(j);
     let mut pictures = Pictures::default();
-    let planes = planes(&header);
+    let planes = planes(header);
     for axis in ["y", "z"] {
         let series: Vec<Series> = planes
             .iter()

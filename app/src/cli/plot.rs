@@ -138,7 +138,7 @@ fn range(values: impl Iterator<Item = f64>, scale: Scale) -> (f64, f64) {
             let pad = if hi - lo > 1e-6 * magnitude && hi - lo > 1e-300 {
                 0.05 * (hi - lo)
             } else {
-                0.5 * magnitude.max(1.0).min(LINEAR_LIMIT)
+                0.5 * magnitude.clamp(1.0, LINEAR_LIMIT)
             };
             ((lo - pad).max(-2.0 * LINEAR_LIMIT), (hi + pad).min(2.0 * LINEAR_LIMIT))
         }

@@ -91,6 +91,7 @@ impl Sample {
 }
 
 #[cfg(test)]
+#[allow(clippy::float_cmp)] // the sampled values are small integers, kept exactly
 mod tests {
     use super::*;
 
