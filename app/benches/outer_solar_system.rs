@@ -436,82 +436,60 @@ fn bits(y: &[f64]) -> Vec<u64> {
     y.iter().map(|x| x.to_bits()).collect()
 }
 
+/// A variant of the stepping loop: `steps` steps of size `h` from `y0`.
+type Variant = fn(&Setup, usize, f64, &[f64; 24]) -> [f64; 24];
+
+/// The library's variants of the stepping loop for the method `M`, by name.
+fn variants<M: SplittingMethod>() -> [(&'static str, Variant); 7]
+where
+    SplittingStepper<M, [f64; 24]>: Stepper<Problem> + Stepper<AnyShapeProblem>,
+{
+    [
+        ("generated", generated::<M>),
+        ("driver", driver::<M>),
+        ("generated_any_shape", generated_any_shape::<M>),
+        ("generated_flows_copy", generated_flows_copy::<M>),
+        ("generated_flows_local", generated_flows_local::<M>),
+        ("generated_in_place", generated_in_place::<M>),
+        ("generated_flows", generated_flows::<M>),
+    ]
+}
+
+/// Every variant of `M` (the library's loops, the hand loop on `NBody`'s force, the file
+/// scene) gives the hand-written loop's trajectory to the bit.
+fn assert_method_bitwise_equal<M: SplittingMethod>(s: &Setup, n: usize, hand: &[f64; 24], hand_nbody: &[f64; 24])
+where
+    SplittingStepper<M, [f64; 24]>: Stepper<Problem> + Stepper<AnyShapeProblem>,
+    SplittingStepper<M, DVector<f64>>: Stepper<FileProblem>,
+{
+    let method = M::DATA.name;
+    let want = bits(hand);
+    let check = |name: &str, got: Vec<u64>| {
+        assert_eq!(got, want, "{method}, {name} differs from the hand-written loop");
+    };
+    for (name, variant) in variants::<M>() {
+        check(name, bits(&variant(s, n, H, &s.y0)));
+    }
+    check("NBody force", bits(hand_nbody));
+    check("file scene", bits(file_scene::<M>(s, n, H).as_slice()));
+}
+
 fn assert_bitwise_equal(s: &Setup) {
     let n = STEPS * 10;
     let c = jump_word();
-    let verlet = bits(&hand_verlet(s, n, H, &s.y0));
-    let jump = bits(&hand_jump(s, &c, n, H, &s.y0));
-    let check = |name: &str, got: Vec<u64>, want: &Vec<u64>| {
-        assert_eq!(&got, want, "{name} differs from the hand-written loop");
-    };
-    check(
-        "generated verlet",
-        bits(&generated::<VelocityVerletKdk>(s, n, H, &s.y0)),
-        &verlet,
-    );
-    check(
-        "generated verlet, any shape",
-        bits(&generated_any_shape::<VelocityVerletKdk>(s, n, H, &s.y0)),
-        &verlet,
-    );
-    check(
-        "verlet flows",
-        bits(&generated_flows::<VelocityVerletKdk>(s, n, H, &s.y0)),
-        &verlet,
-    );
-    check(
-        "verlet flows, copy",
-        bits(&generated_flows_copy::<VelocityVerletKdk>(s, n, H, &s.y0)),
-        &verlet,
-    );
-    check(
-        "verlet flows, local",
-        bits(&generated_flows_local::<VelocityVerletKdk>(s, n, H, &s.y0)),
-        &verlet,
-    );
-    check(
-        "verlet, driver",
-        bits(&driver::<VelocityVerletKdk>(s, n, H, &s.y0)),
-        &verlet,
-    );
-    check("verlet, NBody force", bits(&hand_verlet_nbody(s, n, H, &s.y0)), &verlet);
-    check(
-        "verlet, file scene",
-        bits(file_scene::<VelocityVerletKdk>(s, n, H).as_slice()),
-        &verlet,
-    );
-    check("generated jump", bits(&generated::<TripleJump4>(s, n, H, &s.y0)), &jump);
-    check(
-        "generated jump, any shape",
-        bits(&generated_any_shape::<TripleJump4>(s, n, H, &s.y0)),
-        &jump,
-    );
-    check(
-        "jump flows",
-        bits(&generated_flows::<TripleJump4>(s, n, H, &s.y0)),
-        &jump,
-    );
-    check(
-        "jump flows, copy",
-        bits(&generated_flows_copy::<TripleJump4>(s, n, H, &s.y0)),
-        &jump,
-    );
-    check(
-        "jump flows, local",
-        bits(&generated_flows_local::<TripleJump4>(s, n, H, &s.y0)),
-        &jump,
-    );
-    check("jump, driver", bits(&driver::<TripleJump4>(s, n, H, &s.y0)), &jump);
-    check("jump, NBody force", bits(&hand_jump_nbody(s, &c, n, H, &s.y0)), &jump);
-    check(
-        "jump, file scene",
-        bits(file_scene::<TripleJump4>(s, n, H).as_slice()),
-        &jump,
-    );
+    let verlet = hand_verlet(s, n, H, &s.y0);
+    let jump = hand_jump(s, &c, n, H, &s.y0);
+    assert_method_bitwise_equal::<VelocityVerletKdk>(s, n, &verlet, &hand_verlet_nbody(s, n, H, &s.y0));
+    assert_method_bitwise_equal::<TripleJump4>(s, n, &jump, &hand_jump_nbody(s, &c, n, H, &s.y0));
     // the boxed steppers of the registry (the CLI's path) are the same code too
     for (name, want) in [("velocity_verlet_kdk", &verlet), ("triple_jump4", &jump)] {
         let mut boxed = registry::splitting_stepper_quadratic::<Problem>(name, &s.y0).expect("catalog method");
-        check(name, bits(&with_stepper(&s.nbody, &mut boxed, n, H, &s.y0)), want);
+        let got = with_stepper(&s.nbody, &mut boxed, n, H, &s.y0);
+        assert_eq!(
+            bits(&got),
+            bits(want),
+            "{name}, boxed stepper differs from the hand-written loop"
+        );
     }
     assert_eq!(bits(&forces_nbody(s, 100, &s.y0)), bits(&forces_hand(s, 100, &s.y0)));
 }
@@ -575,47 +553,39 @@ fn interleaved(title: &str, kernels: &[Kernel<'_>]) {
     }
 }
 
+/// The kernels of one method: the hand-written loop, the library's variants between it and
+/// the hand loop on `NBody`'s force, then the file scene.
+fn kernels<'a, M: SplittingMethod>(
+    s: &'a Setup,
+    evaluations: f64,
+    hand: Box<dyn Fn() -> f64 + 'a>,
+    hand_nbody: Box<dyn Fn() -> f64 + 'a>,
+) -> Vec<Kernel<'a>>
+where
+    SplittingStepper<M, [f64; 24]>: Stepper<Problem> + Stepper<AnyShapeProblem>,
+    SplittingStepper<M, DVector<f64>>: Stepper<FileProblem>,
+{
+    let mut v: Vec<Kernel> = vec![("hand_written", evaluations, hand)];
+    for (name, variant) in variants::<M>() {
+        let run = move || variant(s, STEPS, black_box(H), &s.y0)[0];
+        v.push((name, evaluations, Box::new(run)));
+    }
+    v.push(("hand_loop_nbody_force", evaluations, hand_nbody));
+    let file = move || file_scene::<M>(s, STEPS, black_box(H))[0];
+    v.push(("file_scene", evaluations, Box::new(file)));
+    v
+}
+
 fn interleaved_ratios() {
     let s = setup();
     let w = jump_word();
     let first = |y: [f64; 24]| y[0];
-    // the library's variants of the stepping loop, between the hand-written loops
-    type Variant = fn(&Setup, usize, f64, &[f64; 24]) -> [f64; 24];
-    macro_rules! kernels {
-        ($m:ty, $evaluations:expr, $hand:expr, $hand_nbody:expr) => {{
-            let variants: [(&'static str, Variant); 7] = [
-                ("generated", generated::<$m>),
-                ("driver", driver::<$m>),
-                ("generated_any_shape", generated_any_shape::<$m>),
-                ("generated_flows_copy", generated_flows_copy::<$m>),
-                ("generated_flows_local", generated_flows_local::<$m>),
-                ("generated_in_place", generated_in_place::<$m>),
-                ("generated_flows", generated_flows::<$m>),
-            ];
-            let s = &s;
-            let mut v: Vec<Kernel> = vec![("hand_written", $evaluations, Box::new($hand))];
-            for (name, variant) in variants {
-                let run = move || first(variant(s, STEPS, black_box(H), &s.y0));
-                v.push((name, $evaluations, Box::new(run)));
-            }
-            v.push(("hand_loop_nbody_force", $evaluations, Box::new($hand_nbody)));
-            let file = || file_scene::<$m>(s, STEPS, black_box(H))[0];
-            v.push(("file_scene", $evaluations, Box::new(file)));
-            v
-        }};
-    }
-    let verlet = kernels!(
-        VelocityVerletKdk,
-        1.0,
-        || first(hand_verlet(&s, STEPS, black_box(H), &s.y0)),
-        || first(hand_verlet_nbody(&s, STEPS, black_box(H), &s.y0))
-    );
     interleaved("velocity_verlet_kdk (1 force evaluation per step)", &verlet);
-    let jump = kernels!(
-        TripleJump4,
+    let jump = kernels::<TripleJump4>(
+        &s,
         3.0,
-        || first(hand_jump(&s, &w, STEPS, black_box(H), &s.y0)),
-        || first(hand_jump_nbody(&s, &w, STEPS, black_box(H), &s.y0))
+        Box::new(|| first(hand_jump(&s, &w, STEPS, black_box(H), &s.y0))),
+        Box::new(|| first(hand_jump_nbody(&s, &w, STEPS, black_box(H), &s.y0))),
     );
     interleaved("triple_jump4 (3 force evaluations per step)", &jump);
     let forces: Vec<Kernel> = vec![
