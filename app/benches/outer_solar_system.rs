@@ -39,10 +39,13 @@
 
 #![allow(missing_docs)] // criterion_group! generates an undocumented function
 
+#[path = "../../benches/support/interleaved.rs"]
+mod interleaved;
+
 use std::hint::black_box;
-use std::time::Instant;
 
 use criterion::{criterion_group, Criterion};
+use interleaved::Kernel;
 use nalgebra::DVector;
 use stormer::catalog::{TripleJump4, VelocityVerletKdk};
 use stormer::driver::Recorder;
@@ -514,36 +517,15 @@ fn bench(c: &mut Criterion) {
     group.finish();
 }
 
-type Kernel<'a> = (&'static str, f64, Box<dyn Fn() -> f64 + 'a>);
-
-/// Interleaved timing: each round times every kernel once; min and median over rounds,
-/// in ns per step, with the ratio to the first kernel of the group and ns per evaluation.
-fn interleaved(title: &str, kernels: &[Kernel<'_>]) {
+/// Interleaved timing (31 rounds of 50 runs): min and median ns per step of each kernel,
+/// with the ratio to the first kernel of the group and ns per force evaluation.
+fn print_interleaved(title: &str, evaluations: f64, kernels: &[Kernel<'_, f64>]) {
     const ROUNDS: usize = 31;
     const REPEAT: usize = 50;
-    let time = |run: &dyn Fn() -> f64| {
-        let start = Instant::now();
-        for _ in 0..REPEAT {
-            black_box(run());
-        }
-        start.elapsed().as_secs_f64() * 1e9 / (REPEAT * STEPS) as f64
-    };
-    let mut samples = vec![Vec::new(); kernels.len()];
-    for _ in 0..ROUNDS {
-        for (i, (_, _, run)) in kernels.iter().enumerate() {
-            samples[i].push(time(run.as_ref()));
-        }
-    }
-    let stats: Vec<(f64, f64)> = samples
-        .iter_mut()
-        .map(|v| {
-            v.sort_by(f64::total_cmp);
-            (v[0], v[v.len() / 2])
-        })
-        .collect();
+    let stats = interleaved::time(kernels, ROUNDS, REPEAT, STEPS);
     println!("\n{title}: interleaved, {ROUNDS} rounds x {REPEAT} runs x {STEPS} steps");
     println!("  kernel                    ns/step min  median   ratio min  median   ns/evaluation (min)");
-    for ((name, evaluations, _), (min, median)) in kernels.iter().zip(&stats) {
+    for ((name, _), (min, median)) in kernels.iter().zip(&stats) {
         println!(
             "  {name:<24} {min:11.2} {median:7.2}   {:9.3} {:7.3}   {:8.2}",
             min / stats[0].0,
@@ -557,22 +539,21 @@ fn interleaved(title: &str, kernels: &[Kernel<'_>]) {
 /// the hand loop on `NBody`'s force, then the file scene.
 fn kernels<'a, M: SplittingMethod>(
     s: &'a Setup,
-    evaluations: f64,
     hand: Box<dyn Fn() -> f64 + 'a>,
     hand_nbody: Box<dyn Fn() -> f64 + 'a>,
-) -> Vec<Kernel<'a>>
+) -> Vec<Kernel<'a, f64>>
 where
     SplittingStepper<M, [f64; 24]>: Stepper<Problem> + Stepper<AnyShapeProblem>,
     SplittingStepper<M, DVector<f64>>: Stepper<FileProblem>,
 {
-    let mut v: Vec<Kernel> = vec![("hand_written", evaluations, hand)];
+    let mut v: Vec<Kernel<f64>> = vec![("hand_written", hand)];
     for (name, variant) in variants::<M>() {
         let run = move || variant(s, STEPS, black_box(H), &s.y0)[0];
-        v.push((name, evaluations, Box::new(run)));
+        v.push((name, Box::new(run)));
     }
-    v.push(("hand_loop_nbody_force", evaluations, hand_nbody));
+    v.push(("hand_loop_nbody_force", hand_nbody));
     let file = move || file_scene::<M>(s, STEPS, black_box(H))[0];
-    v.push(("file_scene", evaluations, Box::new(file)));
+    v.push(("file_scene", Box::new(file)));
     v
 }
 
@@ -580,19 +561,18 @@ fn interleaved_ratios() {
     let s = setup();
     let w = jump_word();
     let first = |y: [f64; 24]| y[0];
-    interleaved("velocity_verlet_kdk (1 force evaluation per step)", &verlet);
+    print_interleaved("velocity_verlet_kdk (1 force evaluation per step)", 1.0, &verlet);
     let jump = kernels::<TripleJump4>(
         &s,
-        3.0,
         Box::new(|| first(hand_jump(&s, &w, STEPS, black_box(H), &s.y0))),
         Box::new(|| first(hand_jump_nbody(&s, &w, STEPS, black_box(H), &s.y0))),
     );
-    interleaved("triple_jump4 (3 force evaluations per step)", &jump);
-    let forces: Vec<Kernel> = vec![
-        ("hand_force", 1.0, Box::new(|| forces_hand(&s, STEPS, &s.y0)[0])),
-        ("nbody_force", 1.0, Box::new(|| forces_nbody(&s, STEPS, &s.y0)[0])),
+    print_interleaved("triple_jump4 (3 force evaluations per step)", 3.0, &jump);
+    let forces: Vec<Kernel<f64>> = vec![
+        ("hand_force", Box::new(|| forces_hand(&s, STEPS, &s.y0)[0])),
+        ("nbody_force", Box::new(|| forces_nbody(&s, STEPS, &s.y0)[0])),
     ];
-    interleaved("force evaluations alone (per 'step' = one evaluation)", &forces);
+    print_interleaved("force evaluations alone (per 'step' = one evaluation)", 1.0, &forces);
 }
 
 criterion_group!(benches, bench);
