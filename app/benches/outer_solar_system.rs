@@ -561,6 +561,11 @@ fn interleaved_ratios() {
     let s = setup();
     let w = jump_word();
     let first = |y: [f64; 24]| y[0];
+    let verlet = kernels::<VelocityVerletKdk>(
+        &s,
+        Box::new(|| first(hand_verlet(&s, STEPS, black_box(H), &s.y0))),
+        Box::new(|| first(hand_verlet_nbody(&s, STEPS, black_box(H), &s.y0))),
+    );
     print_interleaved("velocity_verlet_kdk (1 force evaluation per step)", 1.0, &verlet);
     let jump = kernels::<TripleJump4>(
         &s,
