@@ -13,8 +13,12 @@
 
 #![allow(missing_docs)] // criterion_group! generates an undocumented function
 
+#[path = "support/interleaved.rs"]
+mod interleaved;
+
 use std::hint::black_box;
-use std::time::Instant;
+
+use interleaved::Kernel;
 
 use criterion::{criterion_group, Criterion};
 use stormer::catalog::VelocityVerletKdk;
@@ -151,44 +155,17 @@ fn bench(c: &mut Criterion) {
     group.finish();
 }
 
-/// Interleaved timing: each round times every kernel once; min and median over rounds.
+/// Interleaved timing of the three kernels: ns per step and the ratio to hand-written.
 fn interleaved_ratios() {
-    const ROUNDS: usize = 31;
-    const REPEAT: usize = 200;
-    let time = |run: &dyn Fn() -> [f64; 6]| {
-        let start = Instant::now();
-        for _ in 0..REPEAT {
-            black_box(run());
-        }
-        start.elapsed().as_secs_f64() * 1e9 / (REPEAT * STEPS) as f64
-    };
-    type Kernel = (&'static str, fn(usize, f64, [f64; 6]) -> [f64; 6]);
-    let kernels: [Kernel; 3] = [
-        ("hand_written", hand_written),
-        ("generated", generated),
-        ("boris", boris),
+    let kernels: [Kernel<[f64; 6]>; 3] = [
+        (
+            "hand_written",
+            Box::new(|| hand_written(STEPS, black_box(H), black_box(Y0))),
+        ),
+        ("generated", Box::new(|| generated(STEPS, black_box(H), black_box(Y0)))),
+        ("boris", Box::new(|| boris(STEPS, black_box(H), black_box(Y0)))),
     ];
-    let mut samples = vec![Vec::new(); kernels.len()];
-    for _ in 0..ROUNDS {
-        for (i, (_, kernel)) in kernels.iter().enumerate() {
-            samples[i].push(time(&|| kernel(STEPS, black_box(H), black_box(Y0))));
-        }
-    }
-    let summary: Vec<(f64, f64)> = samples
-        .iter_mut()
-        .map(|v| {
-            v.sort_by(f64::total_cmp);
-            (v[0], v[v.len() / 2])
-        })
-        .collect();
-    println!("\ninterleaved, {ROUNDS} rounds x {REPEAT} runs x {STEPS} steps (ns/step: min, median; ratio to hand-written by min and median):");
-    for ((name, _), (min, median)) in kernels.iter().zip(&summary) {
-        println!(
-            "  {name:<16} {min:7.2} {median:7.2}   ratio {:.3} {:.3}",
-            min / summary[0].0,
-            median / summary[0].1
-        );
-    }
+    interleaved::print_ratios(&kernels, STEPS);
 }
 
 criterion_group!(benches, bench);

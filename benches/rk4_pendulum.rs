@@ -11,8 +11,12 @@
 
 #![allow(missing_docs)] // criterion_group! generates an undocumented function
 
+#[path = "support/interleaved.rs"]
+mod interleaved;
+
 use std::hint::black_box;
-use std::time::Instant;
+
+use interleaved::Kernel;
 
 use criterion::{criterion_group, Criterion};
 use stormer::{catalog::Rk4, registry, ExplicitRk, ImplicitOptions, Problem, RuntimeRk, Stepper, Tableau};
@@ -122,18 +126,8 @@ fn bench(c: &mut Criterion) {
 /// Interleaved timing: each round times the three kernels once; min and median over
 /// rounds, in ns per step.
 fn interleaved_ratios() {
-    const ROUNDS: usize = 31;
-    const REPEAT: usize = 200;
     let tableau = rk4_tableau();
-    let time = |run: &dyn Fn() -> [f64; 2]| {
-        let start = Instant::now();
-        for _ in 0..REPEAT {
-            black_box(run());
-        }
-        start.elapsed().as_secs_f64() * 1e9 / (REPEAT * STEPS) as f64
-    };
-    type Kernel<'a> = (&'static str, Box<dyn Fn() -> [f64; 2] + 'a>);
-    let kernels: [Kernel; 3] = [
+    let kernels: [Kernel<[f64; 2]>; 3] = [
         (
             "hand_written",
             Box::new(|| hand_written(STEPS, black_box(H), black_box(Y0))),
@@ -144,25 +138,7 @@ fn interleaved_ratios() {
             Box::new(|| runtime_tableau(&tableau, STEPS, black_box(H), black_box(Y0))),
         ),
     ];
-    let mut samples = vec![Vec::new(); kernels.len()];
-    for _ in 0..ROUNDS {
-        for (i, (_, run)) in kernels.iter().enumerate() {
-            samples[i].push(time(run.as_ref()));
-        }
-    }
-    let stats = |v: &mut Vec<f64>| {
-        v.sort_by(f64::total_cmp);
-        (v[0], v[v.len() / 2])
-    };
-    let summary: Vec<(f64, f64)> = samples.iter_mut().map(stats).collect();
-    println!("\ninterleaved, {ROUNDS} rounds x {REPEAT} runs x {STEPS} steps (ns/step: min, median; ratio to hand-written by min and median):");
-    for ((name, _), (min, median)) in kernels.iter().zip(&summary) {
-        println!(
-            "  {name:<16} {min:7.2} {median:7.2}   ratio {:.3} {:.3}",
-            min / summary[0].0,
-            median / summary[0].1
-        );
-    }
+    interleaved::print_ratios(&kernels, STEPS);
 }
 
 criterion_group!(benches, bench);

@@ -180,6 +180,31 @@ fn oscillator_drift<T: Real>(tableau: &Tableau, solver: ImplicitSolver, h: f64) 
     invariant_drift(&states)
 }
 
+/// Every method with every solver keeps the invariant of `problem` within `bound`:
+/// `drift(tableau, solver)` is the largest relative change of the invariant along a run.
+fn assert_invariant_kept<T: Real>(
+    problem: &str,
+    methods: &[Tableau],
+    bound: f64,
+    drift: impl Fn(&Tableau, ImplicitSolver) -> f64,
+) {
+    for tableau in methods {
+        for solver in SOLVERS {
+            let drift = drift(tableau, solver);
+            eprintln!(
+                "{:>17} {solver:?} {} {problem}: max |Q - Q0|/Q0 = {drift:.2e} (bound {bound:.2e})",
+                tableau.name(),
+                core::any::type_name::<T>()
+            );
+            assert!(
+                drift <= bound,
+                "{} {solver:?} {problem}: drift {drift:e} > {bound:e}",
+                tableau.name()
+            );
+        }
+    }
+}
+
 fn gauss_methods() -> Vec<Tableau> {
     vec![
         tableau::<ImplicitMidpoint>(),
@@ -198,21 +223,9 @@ fn quadratic_invariant_of_oscillator<T: Real>() {
     // are the Cayley transform of h J), so it keeps the invariant too.
     let mut methods = gauss_methods();
     methods.push(tableau::<Trapezoidal>());
-    for tableau in &methods {
-        for solver in SOLVERS {
-            let drift = oscillator_drift::<T>(tableau, solver, h);
-            eprintln!(
-                "{:>17} {solver:?} {}: max |Q - Q0|/Q0 = {drift:.2e} (bound {bound:.2e})",
-                tableau.name(),
-                core::any::type_name::<T>()
-            );
-            assert!(
-                drift <= bound,
-                "{} {solver:?}: drift {drift:e} > {bound:e}",
-                tableau.name()
-            );
-        }
-    }
+    assert_invariant_kept::<T>("oscillator", &methods, bound, |tableau, solver| {
+        oscillator_drift::<T>(tableau, solver, h)
+    });
     // Negative control: RK4 is not symplectic and loses the invariant steadily.
     let y0 = [T::one(), T::zero()];
     let mut rk4 = ExplicitRk::<Rk4, [T; 2]>::new(&y0);
@@ -268,21 +281,7 @@ fn quadratic_invariant_of_rigid_body<T: Real>() {
             INVARIANT_STEPS,
         ))
     };
-    for tableau in &gauss_methods() {
-        for solver in SOLVERS {
-            let drift = run(tableau, solver);
-            eprintln!(
-                "{:>17} {solver:?} {} rigid body: max |Q - Q0|/Q0 = {drift:.2e} (bound {bound:.2e})",
-                tableau.name(),
-                core::any::type_name::<T>()
-            );
-            assert!(
-                drift <= bound,
-                "{} {solver:?}: drift {drift:e} > {bound:e}",
-                tableau.name()
-            );
-        }
-    }
+    assert_invariant_kept::<T>("rigid body", &gauss_methods(), bound, run);
     // Negative control: on a nonlinear problem the trapezoid is no longer the midpoint
     // map and does not keep quadratic invariants. Its error is O(h^2) and bounded (8e-4
     // here), which only the f64 bound resolves.

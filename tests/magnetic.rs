@@ -2,10 +2,14 @@
 //! Boris's invariants, the E x B drift, and the splittings of the catalog on a charged
 //! particle (SCENES.md 5-6, PERFORMANCE.md's anchors).
 
+#[path = "support/users_magnetic_verlet.rs"]
+mod users_magnetic_verlet;
+
 use std::marker::PhantomData;
 use stormer::magnetic::{Charged, Gyration, Lorentz};
 use stormer::stepper::{Boris, BorisRotation, EulerCromer};
 use stormer::{lit, registry, to_f64, Driver, Real, Stepper};
+use users_magnetic_verlet::users_magnetic_verlet;
 
 /// A uniform field along axis 3 (`omega = (0, 0, w)`), a uniform acceleration `e`, and
 /// optionally the attracting Coulomb centre `V = -1/|q|` of SCENES.md 5.
@@ -228,8 +232,8 @@ fn boris_gets_the_e_cross_b_drift_and_exact_phase_does_not_at_large_steps() {
 }
 
 /// The magnetic Verlet of the catalog (velocity Verlet with the exact gyration as drift)
-/// is the users' scheme of SCENES.md 5, written here with its matrices exp(Omega h) and
-/// F(h) from the closed forms: same positions and velocities to round-off.
+/// is the users' scheme of SCENES.md 5, written out with its matrices exp(Omega h) and
+/// F(h) from the closed forms (tests/support): same positions and velocities to round-off.
 #[test]
 fn velocity_verlet_with_the_gyration_drift_is_the_users_magnetic_verlet() {
     let (w, h) = (1.0f64, 0.01);
@@ -237,37 +241,11 @@ fn velocity_verlet_with_the_gyration_drift_is_the_users_magnetic_verlet() {
     let y0 = [1.0, 1.0, 1.0, 0.0, 0.0, 0.0];
     let mut verlet = registry::splitting_stepper::<Charged<Particle<f64>>>("velocity_verlet_kdk", &y0).unwrap();
     let sol = Driver::fixed(h).run(&p, &mut verlet, 0.0, &y0, 10.0).unwrap();
-    // Omega = [[0, -w, 0], [w, 0, 0], [0, 0, 0]]
-    let om = [[0.0, -w, 0.0], [w, 0.0, 0.0], [0.0, 0.0, 0.0]];
-    let mut om2 = [[0.0; 3]; 3];
-    for i in 0..3 {
-        for j in 0..3 {
-            om2[i][j] = (0..3).map(|k| om[i][k] * om[k][j]).sum();
-        }
-    }
-    let (s, c) = ((w * h).sin(), (w * h).cos());
-    let id = |i: usize, j: usize| if i == j { 1.0 } else { 0.0 };
-    let e: [[f64; 3]; 3] = std::array::from_fn(|i| {
-        std::array::from_fn(|j| id(i, j) + s / w * om[i][j] + 2.0 * ((w * h / 2.0).sin() / w).powi(2) * om2[i][j])
-    });
-    let f: [[f64; 3]; 3] = std::array::from_fn(|i| {
-        std::array::from_fn(|j| id(i, j) * h + (1.0 - c) / (w * w) * om[i][j] - (s - w * h) / (w * w * w) * om2[i][j])
-    });
-    let grad = |q: [f64; 3]| {
-        let r3 = (q[0] * q[0] + q[1] * q[1] + q[2] * q[2]).powf(1.5);
-        q.map(|x| x / r3)
-    };
-    let (mut q, mut v) = ([1.0, 1.0, 1.0], [0.0; 3]);
-    for _ in 0..1000 {
-        let g = grad(q);
-        let half: [f64; 3] = std::array::from_fn(|i| v[i] - h / 2.0 * g[i]);
-        q = std::array::from_fn(|i| q[i] + (0..3).map(|j| f[i][j] * half[j]).sum::<f64>());
-        let g = grad(q);
-        v = std::array::from_fn(|i| (0..3).map(|j| e[i][j] * half[j]).sum::<f64>() - h / 2.0 * g[i]);
-    }
+    let users = users_magnetic_verlet(w, h, [1.0, 1.0, 1.0], 1000);
+    let (q, v) = users[1000].split_at(3);
     let y = sol.y.last().unwrap();
     assert!(
-        distance(&y[..3], &q) < 1e-11 && distance(&y[3..], &v) < 1e-11,
+        distance(&y[..3], q) < 1e-11 && distance(&y[3..], v) < 1e-11,
         "{y:?} vs {q:?} {v:?}"
     );
 }

@@ -383,18 +383,25 @@ def drop_pairs(text):
     return "".join(out)
 
 
-def data_toml(text, catalog, methods):
-    """Header, conventions, sources and the verbatim text of each Butcher `[[method]]` block."""
+def data_copy(header, text, catalog, methods, conventions, families):
+    """`header` filled in (schema version, `conventions`, the sources of `methods`), then the
+    verbatim text of each `[[method]]` block whose family matches the regex `families`."""
     repos = {m["source_repo"] for m in methods}
     blocks = re.split(r"^(?=\[\[method\]\]$)", text, flags=re.M)[1:]
-    out = DATA_HEADER.format(
+    out = header.format(
         schema_version=catalog["schema_version"],
-        conventions=re.search(r'^butcher = """.*?"""\n', text, re.S | re.M)[0],
+        conventions=conventions,
         sources="\n".join(f'"{r}" = "{c}"' for r, c in catalog["sources"].items() if r in repos),
     ) + "\n".join(b.rstrip() + "\n" for b in blocks
-                  if re.search(r'^family = "butcher"$', b, re.M))
+                  if re.search(rf'^family = "{families}"$', b, re.M))
     assert tomllib.loads(out)["method"] == methods, "data copy differs from the catalog"
     return out
+
+
+def data_toml(text, catalog, methods):
+    """Header, conventions, sources and the verbatim text of each Butcher `[[method]]` block."""
+    conventions = re.search(r'^butcher = """.*?"""\n', text, re.S | re.M)[0]
+    return data_copy(DATA_HEADER, text, catalog, methods, conventions, "butcher")
 
 
 def methods_md(methods):
@@ -441,13 +448,23 @@ def main(path):
     files["src/catalog/mod.rs"] = mod_rs(methods)
     files["data/butcher.toml"] = data_toml(text, catalog, methods)
     files["docs/methods.md"] = methods_md(methods)
+    write(files)
+
+
+def write(files):
+    """Writes each generated file (path relative to the repository -> content)."""
     for rel, content in files.items():
         (ROOT / rel).parent.mkdir(parents=True, exist_ok=True)
         (ROOT / rel).write_text(content, encoding="utf-8")
         print(f"wrote {rel}")
 
 
-if __name__ == "__main__":
+def run(main):
+    """`main(path)` with the catalog path given on the command line."""
     if len(sys.argv) != 2:
         sys.exit(f"usage: {sys.argv[0]} path/to/catalog.toml")
     main(sys.argv[1])
+
+
+if __name__ == "__main__":
+    run(main)

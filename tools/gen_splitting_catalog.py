@@ -30,7 +30,6 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import gen_butcher_catalog as g  # noqa: E402
 
-ROOT = g.ROOT
 WIDTH = g.WIDTH
 
 CLASS_TEXT = {
@@ -180,18 +179,9 @@ schema_version = {schema_version}
 
 
 def data_toml(text, catalog, methods):
-    repos = {m["source_repo"] for m in methods}
-    blocks = re.split(r"^(?=\[\[method\]\]$)", text, flags=re.M)[1:]
     conventions = "".join(re.search(rf'^{key} = """.*?"""\n', text, re.S | re.M)[0]
                           for key in ("splitting", "composition", "near_integrable"))
-    out = DATA_HEADER.format(
-        schema_version=catalog["schema_version"],
-        conventions=conventions,
-        sources="\n".join(f'"{r}" = "{c}"' for r, c in catalog["sources"].items() if r in repos),
-    ) + "\n".join(b.rstrip() + "\n" for b in blocks
-                  if re.search(r'^family = "(splitting|composition)"$', b, re.M))
-    assert tomllib.loads(out)["method"] == methods, "data copy differs from the catalog"
-    return out
+    return g.data_copy(DATA_HEADER, text, catalog, methods, conventions, "(splitting|composition)")
 
 
 METHODS_MD = """\
@@ -239,13 +229,8 @@ def main(path):
         "data/splitting.toml": data_toml(text, catalog, methods),
         "docs/splitting-methods.md": methods_md(methods),
     }
-    for rel, content in files.items():
-        (ROOT / rel).parent.mkdir(parents=True, exist_ok=True)
-        (ROOT / rel).write_text(content, encoding="utf-8")
-        print(f"wrote {rel}")
+    g.write(files)
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 2:
-        sys.exit(f"usage: {sys.argv[0]} path/to/catalog.toml")
-    main(sys.argv[1])
+    g.run(main)

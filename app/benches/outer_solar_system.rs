@@ -39,10 +39,13 @@
 
 #![allow(missing_docs)] // criterion_group! generates an undocumented function
 
+#[path = "../../benches/support/interleaved.rs"]
+mod interleaved;
+
 use std::hint::black_box;
-use std::time::Instant;
 
 use criterion::{criterion_group, Criterion};
+use interleaved::Kernel;
 use nalgebra::DVector;
 use stormer::catalog::{TripleJump4, VelocityVerletKdk};
 use stormer::driver::Recorder;
@@ -436,82 +439,60 @@ fn bits(y: &[f64]) -> Vec<u64> {
     y.iter().map(|x| x.to_bits()).collect()
 }
 
+/// A variant of the stepping loop: `steps` steps of size `h` from `y0`.
+type Variant = fn(&Setup, usize, f64, &[f64; 24]) -> [f64; 24];
+
+/// The library's variants of the stepping loop for the method `M`, by name.
+fn variants<M: SplittingMethod>() -> [(&'static str, Variant); 7]
+where
+    SplittingStepper<M, [f64; 24]>: Stepper<Problem> + Stepper<AnyShapeProblem>,
+{
+    [
+        ("generated", generated::<M>),
+        ("driver", driver::<M>),
+        ("generated_any_shape", generated_any_shape::<M>),
+        ("generated_flows_copy", generated_flows_copy::<M>),
+        ("generated_flows_local", generated_flows_local::<M>),
+        ("generated_in_place", generated_in_place::<M>),
+        ("generated_flows", generated_flows::<M>),
+    ]
+}
+
+/// Every variant of `M` (the library's loops, the hand loop on `NBody`'s force, the file
+/// scene) gives the hand-written loop's trajectory to the bit.
+fn assert_method_bitwise_equal<M: SplittingMethod>(s: &Setup, n: usize, hand: &[f64; 24], hand_nbody: &[f64; 24])
+where
+    SplittingStepper<M, [f64; 24]>: Stepper<Problem> + Stepper<AnyShapeProblem>,
+    SplittingStepper<M, DVector<f64>>: Stepper<FileProblem>,
+{
+    let method = M::DATA.name;
+    let want = bits(hand);
+    let check = |name: &str, got: Vec<u64>| {
+        assert_eq!(got, want, "{method}, {name} differs from the hand-written loop");
+    };
+    for (name, variant) in variants::<M>() {
+        check(name, bits(&variant(s, n, H, &s.y0)));
+    }
+    check("NBody force", bits(hand_nbody));
+    check("file scene", bits(file_scene::<M>(s, n, H).as_slice()));
+}
+
 fn assert_bitwise_equal(s: &Setup) {
     let n = STEPS * 10;
     let c = jump_word();
-    let verlet = bits(&hand_verlet(s, n, H, &s.y0));
-    let jump = bits(&hand_jump(s, &c, n, H, &s.y0));
-    let check = |name: &str, got: Vec<u64>, want: &Vec<u64>| {
-        assert_eq!(&got, want, "{name} differs from the hand-written loop");
-    };
-    check(
-        "generated verlet",
-        bits(&generated::<VelocityVerletKdk>(s, n, H, &s.y0)),
-        &verlet,
-    );
-    check(
-        "generated verlet, any shape",
-        bits(&generated_any_shape::<VelocityVerletKdk>(s, n, H, &s.y0)),
-        &verlet,
-    );
-    check(
-        "verlet flows",
-        bits(&generated_flows::<VelocityVerletKdk>(s, n, H, &s.y0)),
-        &verlet,
-    );
-    check(
-        "verlet flows, copy",
-        bits(&generated_flows_copy::<VelocityVerletKdk>(s, n, H, &s.y0)),
-        &verlet,
-    );
-    check(
-        "verlet flows, local",
-        bits(&generated_flows_local::<VelocityVerletKdk>(s, n, H, &s.y0)),
-        &verlet,
-    );
-    check(
-        "verlet, driver",
-        bits(&driver::<VelocityVerletKdk>(s, n, H, &s.y0)),
-        &verlet,
-    );
-    check("verlet, NBody force", bits(&hand_verlet_nbody(s, n, H, &s.y0)), &verlet);
-    check(
-        "verlet, file scene",
-        bits(file_scene::<VelocityVerletKdk>(s, n, H).as_slice()),
-        &verlet,
-    );
-    check("generated jump", bits(&generated::<TripleJump4>(s, n, H, &s.y0)), &jump);
-    check(
-        "generated jump, any shape",
-        bits(&generated_any_shape::<TripleJump4>(s, n, H, &s.y0)),
-        &jump,
-    );
-    check(
-        "jump flows",
-        bits(&generated_flows::<TripleJump4>(s, n, H, &s.y0)),
-        &jump,
-    );
-    check(
-        "jump flows, copy",
-        bits(&generated_flows_copy::<TripleJump4>(s, n, H, &s.y0)),
-        &jump,
-    );
-    check(
-        "jump flows, local",
-        bits(&generated_flows_local::<TripleJump4>(s, n, H, &s.y0)),
-        &jump,
-    );
-    check("jump, driver", bits(&driver::<TripleJump4>(s, n, H, &s.y0)), &jump);
-    check("jump, NBody force", bits(&hand_jump_nbody(s, &c, n, H, &s.y0)), &jump);
-    check(
-        "jump, file scene",
-        bits(file_scene::<TripleJump4>(s, n, H).as_slice()),
-        &jump,
-    );
+    let verlet = hand_verlet(s, n, H, &s.y0);
+    let jump = hand_jump(s, &c, n, H, &s.y0);
+    assert_method_bitwise_equal::<VelocityVerletKdk>(s, n, &verlet, &hand_verlet_nbody(s, n, H, &s.y0));
+    assert_method_bitwise_equal::<TripleJump4>(s, n, &jump, &hand_jump_nbody(s, &c, n, H, &s.y0));
     // the boxed steppers of the registry (the CLI's path) are the same code too
     for (name, want) in [("velocity_verlet_kdk", &verlet), ("triple_jump4", &jump)] {
         let mut boxed = registry::splitting_stepper_quadratic::<Problem>(name, &s.y0).expect("catalog method");
-        check(name, bits(&with_stepper(&s.nbody, &mut boxed, n, H, &s.y0)), want);
+        let got = with_stepper(&s.nbody, &mut boxed, n, H, &s.y0);
+        assert_eq!(
+            bits(&got),
+            bits(want),
+            "{name}, boxed stepper differs from the hand-written loop"
+        );
     }
     assert_eq!(bits(&forces_nbody(s, 100, &s.y0)), bits(&forces_hand(s, 100, &s.y0)));
 }
@@ -536,36 +517,15 @@ fn bench(c: &mut Criterion) {
     group.finish();
 }
 
-type Kernel<'a> = (&'static str, f64, Box<dyn Fn() -> f64 + 'a>);
-
-/// Interleaved timing: each round times every kernel once; min and median over rounds,
-/// in ns per step, with the ratio to the first kernel of the group and ns per evaluation.
-fn interleaved(title: &str, kernels: &[Kernel<'_>]) {
+/// Interleaved timing (31 rounds of 50 runs): min and median ns per step of each kernel,
+/// with the ratio to the first kernel of the group and ns per force evaluation.
+fn print_interleaved(title: &str, evaluations: f64, kernels: &[Kernel<'_, f64>]) {
     const ROUNDS: usize = 31;
     const REPEAT: usize = 50;
-    let time = |run: &dyn Fn() -> f64| {
-        let start = Instant::now();
-        for _ in 0..REPEAT {
-            black_box(run());
-        }
-        start.elapsed().as_secs_f64() * 1e9 / (REPEAT * STEPS) as f64
-    };
-    let mut samples = vec![Vec::new(); kernels.len()];
-    for _ in 0..ROUNDS {
-        for (i, (_, _, run)) in kernels.iter().enumerate() {
-            samples[i].push(time(run.as_ref()));
-        }
-    }
-    let stats: Vec<(f64, f64)> = samples
-        .iter_mut()
-        .map(|v| {
-            v.sort_by(f64::total_cmp);
-            (v[0], v[v.len() / 2])
-        })
-        .collect();
+    let stats = interleaved::time(kernels, ROUNDS, REPEAT, STEPS);
     println!("\n{title}: interleaved, {ROUNDS} rounds x {REPEAT} runs x {STEPS} steps");
     println!("  kernel                    ns/step min  median   ratio min  median   ns/evaluation (min)");
-    for ((name, evaluations, _), (min, median)) in kernels.iter().zip(&stats) {
+    for ((name, _), (min, median)) in kernels.iter().zip(&stats) {
         println!(
             "  {name:<24} {min:11.2} {median:7.2}   {:9.3} {:7.3}   {:8.2}",
             min / stats[0].0,
@@ -575,54 +535,49 @@ fn interleaved(title: &str, kernels: &[Kernel<'_>]) {
     }
 }
 
+/// The kernels of one method: the hand-written loop, the library's variants between it and
+/// the hand loop on `NBody`'s force, then the file scene.
+fn kernels<'a, M: SplittingMethod>(
+    s: &'a Setup,
+    hand: Box<dyn Fn() -> f64 + 'a>,
+    hand_nbody: Box<dyn Fn() -> f64 + 'a>,
+) -> Vec<Kernel<'a, f64>>
+where
+    SplittingStepper<M, [f64; 24]>: Stepper<Problem> + Stepper<AnyShapeProblem>,
+    SplittingStepper<M, DVector<f64>>: Stepper<FileProblem>,
+{
+    let mut v: Vec<Kernel<f64>> = vec![("hand_written", hand)];
+    for (name, variant) in variants::<M>() {
+        let run = move || variant(s, STEPS, black_box(H), &s.y0)[0];
+        v.push((name, Box::new(run)));
+    }
+    v.push(("hand_loop_nbody_force", hand_nbody));
+    let file = move || file_scene::<M>(s, STEPS, black_box(H))[0];
+    v.push(("file_scene", Box::new(file)));
+    v
+}
+
 fn interleaved_ratios() {
     let s = setup();
     let w = jump_word();
     let first = |y: [f64; 24]| y[0];
-    // the library's variants of the stepping loop, between the hand-written loops
-    type Variant = fn(&Setup, usize, f64, &[f64; 24]) -> [f64; 24];
-    macro_rules! kernels {
-        ($m:ty, $evaluations:expr, $hand:expr, $hand_nbody:expr) => {{
-            let variants: [(&'static str, Variant); 7] = [
-                ("generated", generated::<$m>),
-                ("driver", driver::<$m>),
-                ("generated_any_shape", generated_any_shape::<$m>),
-                ("generated_flows_copy", generated_flows_copy::<$m>),
-                ("generated_flows_local", generated_flows_local::<$m>),
-                ("generated_in_place", generated_in_place::<$m>),
-                ("generated_flows", generated_flows::<$m>),
-            ];
-            let s = &s;
-            let mut v: Vec<Kernel> = vec![("hand_written", $evaluations, Box::new($hand))];
-            for (name, variant) in variants {
-                let run = move || first(variant(s, STEPS, black_box(H), &s.y0));
-                v.push((name, $evaluations, Box::new(run)));
-            }
-            v.push(("hand_loop_nbody_force", $evaluations, Box::new($hand_nbody)));
-            let file = || file_scene::<$m>(s, STEPS, black_box(H))[0];
-            v.push(("file_scene", $evaluations, Box::new(file)));
-            v
-        }};
-    }
-    let verlet = kernels!(
-        VelocityVerletKdk,
-        1.0,
-        || first(hand_verlet(&s, STEPS, black_box(H), &s.y0)),
-        || first(hand_verlet_nbody(&s, STEPS, black_box(H), &s.y0))
+    let verlet = kernels::<VelocityVerletKdk>(
+        &s,
+        Box::new(|| first(hand_verlet(&s, STEPS, black_box(H), &s.y0))),
+        Box::new(|| first(hand_verlet_nbody(&s, STEPS, black_box(H), &s.y0))),
     );
-    interleaved("velocity_verlet_kdk (1 force evaluation per step)", &verlet);
-    let jump = kernels!(
-        TripleJump4,
-        3.0,
-        || first(hand_jump(&s, &w, STEPS, black_box(H), &s.y0)),
-        || first(hand_jump_nbody(&s, &w, STEPS, black_box(H), &s.y0))
+    print_interleaved("velocity_verlet_kdk (1 force evaluation per step)", 1.0, &verlet);
+    let jump = kernels::<TripleJump4>(
+        &s,
+        Box::new(|| first(hand_jump(&s, &w, STEPS, black_box(H), &s.y0))),
+        Box::new(|| first(hand_jump_nbody(&s, &w, STEPS, black_box(H), &s.y0))),
     );
-    interleaved("triple_jump4 (3 force evaluations per step)", &jump);
-    let forces: Vec<Kernel> = vec![
-        ("hand_force", 1.0, Box::new(|| forces_hand(&s, STEPS, &s.y0)[0])),
-        ("nbody_force", 1.0, Box::new(|| forces_nbody(&s, STEPS, &s.y0)[0])),
+    print_interleaved("triple_jump4 (3 force evaluations per step)", 3.0, &jump);
+    let forces: Vec<Kernel<f64>> = vec![
+        ("hand_force", Box::new(|| forces_hand(&s, STEPS, &s.y0)[0])),
+        ("nbody_force", Box::new(|| forces_nbody(&s, STEPS, &s.y0)[0])),
     ];
-    interleaved("force evaluations alone (per 'step' = one evaluation)", &forces);
+    print_interleaved("force evaluations alone (per 'step' = one evaluation)", 1.0, &forces);
 }
 
 criterion_group!(benches, bench);

@@ -4,46 +4,15 @@
 #![allow(clippy::float_cmp)]
 
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output, Stdio};
+use std::process::{Command, Stdio};
 
-/// A fresh directory for one test (the binary writes `out/` into its working directory).
+#[path = "support/binary.rs"]
+mod binary;
+use binary::{assert_error, assert_ok, stderr, stdout, stormer};
+
+/// A fresh directory for one test.
 fn workdir(name: &str) -> PathBuf {
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("cli").join(name);
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
-
-fn stormer(dir: &Path, args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_stormer"))
-        .args(args)
-        .current_dir(dir)
-        .output()
-        .expect("the binary runs")
-}
-
-fn stderr(out: &Output) -> String {
-    String::from_utf8_lossy(&out.stderr).into_owned()
-}
-
-fn stdout(out: &Output) -> String {
-    String::from_utf8_lossy(&out.stdout).into_owned()
-}
-
-/// Succeeds, with a one-line summary on stderr.
-fn assert_ok(out: &Output) {
-    assert!(out.status.success(), "failed: {}", stderr(out));
-    assert!(!stderr(out).contains("panicked"));
-}
-
-/// Exit code 1, exactly one line on stderr, `error: ` and `needle` in it, no panic.
-fn assert_error(out: &Output, needle: &str) {
-    let err = stderr(out);
-    assert_eq!(out.status.code(), Some(1), "exit code; stderr: {err}");
-    assert!(!err.contains("panicked"), "{err}");
-    assert_eq!(err.lines().count(), 1, "one line: {err}");
-    assert!(err.starts_with("error: "), "{err}");
-    assert!(err.contains(needle), "expected {needle:?} in: {err}");
+    binary::workdir("cli", name)
 }
 
 /// The CSV as (header, rows of numbers).
@@ -890,41 +859,9 @@ fn neptune_and_pluto_are_added_by_editing_the_scene_file() {
     );
 }
 
-/// The users' magnetic Verlet of SCENES.md 5 written out with its matrices exp(Omega h)
-/// and F(h) (closed forms, field along axis 3 of strength `w`, `grad V = q/|q|^3`): the
-/// positions and velocities after each of `steps` steps of `h` from `q0`, `v0 = 0`.
-fn users_magnetic_verlet(w: f64, h: f64, q0: [f64; 3], steps: usize) -> Vec<[f64; 6]> {
-    let om = [[0.0, -w, 0.0], [w, 0.0, 0.0], [0.0, 0.0, 0.0]];
-    let mut om2 = [[0.0; 3]; 3];
-    for i in 0..3 {
-        for j in 0..3 {
-            om2[i][j] = (0..3).map(|k| om[i][k] * om[k][j]).sum();
-        }
-    }
-    let (s, c) = ((w * h).sin(), (w * h).cos());
-    let id = |i: usize, j: usize| if i == j { 1.0 } else { 0.0 };
-    let e: [[f64; 3]; 3] = std::array::from_fn(|i| {
-        std::array::from_fn(|j| id(i, j) + s / w * om[i][j] + 2.0 * ((w * h / 2.0).sin() / w).powi(2) * om2[i][j])
-    });
-    let f: [[f64; 3]; 3] = std::array::from_fn(|i| {
-        std::array::from_fn(|j| id(i, j) * h + (1.0 - c) / (w * w) * om[i][j] - (s - w * h) / (w * w * w) * om2[i][j])
-    });
-    let grad = |q: [f64; 3]| {
-        let r3 = (q[0] * q[0] + q[1] * q[1] + q[2] * q[2]).powf(1.5);
-        q.map(|x| x / r3)
-    };
-    let (mut q, mut v) = (q0, [0.0; 3]);
-    let mut states = vec![[q[0], q[1], q[2], 0.0, 0.0, 0.0]];
-    for _ in 0..steps {
-        let g = grad(q);
-        let half: [f64; 3] = std::array::from_fn(|i| v[i] - h / 2.0 * g[i]);
-        q = std::array::from_fn(|i| q[i] + (0..3).map(|j| f[i][j] * half[j]).sum::<f64>());
-        let g = grad(q);
-        v = std::array::from_fn(|i| (0..3).map(|j| e[i][j] * half[j]).sum::<f64>() - h / 2.0 * g[i]);
-        states.push([q[0], q[1], q[2], v[0], v[1], v[2]]);
-    }
-    states
-}
+#[path = "../../tests/support/users_magnetic_verlet.rs"]
+mod users_magnetic_verlet;
+use users_magnetic_verlet::users_magnetic_verlet;
 
 #[test]
 fn coulomb_magnetic_with_velocity_verlet_is_the_users_magnetic_verlet() {
@@ -1818,23 +1755,7 @@ fn ctrl_c_stops_a_run_and_keeps_its_records() {
         }
         std::thread::sleep(Duration::from_millis(50));
     }
-    let sent = Command::new("kill")
-        .args(["-INT", &child.id().to_string()])
-        .status()
-        .unwrap();
-    assert!(sent.success());
-    let status = loop {
-        if let Some(status) = child.try_wait().unwrap() {
-            break status;
-        }
-        if start.elapsed() > Duration::from_secs(120) {
-            let _ = child.kill();
-            panic!("the run did not stop on SIGINT");
-        }
-        std::thread::sleep(Duration::from_millis(20));
-    };
-    let mut err = String::new();
-    std::io::Read::read_to_string(&mut child.stderr.take().unwrap(), &mut err).unwrap();
+    let (status, err) = binary::signal(child, "-INT", start, Duration::from_secs(120));
     assert_eq!(status.code(), Some(130), "{err}");
     assert!(!err.contains("panicked"), "{err}");
     assert_eq!(err.lines().count(), 1, "{err}");

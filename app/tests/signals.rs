@@ -8,6 +8,9 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
+#[path = "support/binary.rs"]
+mod binary;
+
 const COLUMNS: usize = 1 + 24 + 1; // t, 4 bodies x (3 positions + 3 momenta), energy
 
 /// Reads a CSV strictly: the header intact, the file ends with a newline, every row has
@@ -56,7 +59,7 @@ impl Moments {
 fn kill_a_run(dir: &Path, signal: &str, after_ms: u64) -> (std::process::ExitStatus, String, PathBuf) {
     let csv = dir.join("run.csv");
     let _ = std::fs::remove_file(&csv);
-    let mut child = Command::new(env!("CARGO_BIN_EXE_stormer"))
+    let child = Command::new(env!("CARGO_BIN_EXE_stormer"))
         .args([
             "run",
             "outer-solar-system",
@@ -82,23 +85,7 @@ fn kill_a_run(dir: &Path, signal: &str, after_ms: u64) -> (std::process::ExitSta
         std::thread::sleep(Duration::from_millis(5));
     }
     std::thread::sleep(Duration::from_millis(after_ms));
-    let sent = Command::new("kill")
-        .args([signal, &child.id().to_string()])
-        .status()
-        .unwrap();
-    assert!(sent.success());
-    let status = loop {
-        if let Some(status) = child.try_wait().unwrap() {
-            break status;
-        }
-        if start.elapsed() > Duration::from_secs(60) {
-            let _ = child.kill();
-            panic!("the run did not stop on {signal}");
-        }
-        std::thread::sleep(Duration::from_millis(10));
-    };
-    let mut err = String::new();
-    std::io::Read::read_to_string(&mut child.stderr.take().unwrap(), &mut err).unwrap();
+    let (status, err) = binary::signal(child, signal, start, Duration::from_secs(60));
     (status, err, csv)
 }
 

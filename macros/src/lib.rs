@@ -7,10 +7,24 @@
 //! `stormer_order`, the code the library also uses at run time) and `expand` (the
 //! generated types and their unrolled steps), in one folder per macro family.
 
+mod declaration;
 mod splitting;
 mod tableau;
 
 use proc_macro::TokenStream;
+
+/// The three steps of every macro: parse, validate, expand; any error becomes a compile
+/// error on the tokens it is about.
+fn declare<I: syn::parse::Parse, M>(
+    input: TokenStream,
+    validate: impl FnOnce(I) -> syn::Result<M>,
+    expand: fn(&M) -> proc_macro2::TokenStream,
+) -> TokenStream {
+    match syn::parse::<I>(input).and_then(validate) {
+        Ok(method) => expand(&method).into(),
+        Err(e) => e.into_compile_error().into(),
+    }
+}
 
 /// Declares a Butcher tableau, checks it at compile time and generates its stepper.
 ///
@@ -48,11 +62,7 @@ use proc_macro::TokenStream;
 /// step unrolled over the nonzero coefficients only.
 #[proc_macro]
 pub fn tableau(input: TokenStream) -> TokenStream {
-    let input = syn::parse_macro_input!(input as tableau::parse::Input);
-    match tableau::valid::validate(input) {
-        Ok(method) => tableau::expand::expand(&method).into(),
-        Err(e) => e.into_compile_error().into(),
-    }
+    declare(input, tableau::valid::validate, tableau::expand::expand)
 }
 
 /// Declares a splitting method (a sequence of drift and kick sub-flows), checks it at
@@ -80,11 +90,8 @@ pub fn tableau(input: TokenStream) -> TokenStream {
 /// implementing `stormer::SplittingMethod` whose step is the merged word, unrolled.
 #[proc_macro]
 pub fn splitting(input: TokenStream) -> TokenStream {
-    let input = syn::parse_macro_input!(input as splitting::parse::Input);
-    match splitting::valid::validate(input, splitting::Family::Splitting) {
-        Ok(method) => splitting::expand::expand(&method).into(),
-        Err(e) => e.into_compile_error().into(),
-    }
+    let validate = |input| splitting::valid::validate(input, splitting::Family::Splitting);
+    declare(input, validate, splitting::expand::expand)
 }
 
 /// Declares a composition `S(gamma_s h) o ... o S(gamma_1 h)` of a symmetric second-order
@@ -107,9 +114,6 @@ pub fn splitting(input: TokenStream) -> TokenStream {
 /// `sum gamma^k = 0` for odd `k` from 3 to `order - 1`.
 #[proc_macro]
 pub fn composition(input: TokenStream) -> TokenStream {
-    let input = syn::parse_macro_input!(input as splitting::parse::Input);
-    match splitting::valid::validate(input, splitting::Family::Composition) {
-        Ok(method) => splitting::expand::expand(&method).into(),
-        Err(e) => e.into_compile_error().into(),
-    }
+    let validate = |input| splitting::valid::validate(input, splitting::Family::Composition);
+    declare(input, validate, splitting::expand::expand)
 }

@@ -166,6 +166,16 @@ fn norm2<T: Real>(x: &[T]) -> T {
     x[0] * x[0] + x[1] * x[1] + x[2] * x[2]
 }
 
+/// `q_k - q_l`, the separation of particles `k` and `l` in 3-D.
+#[inline(always)]
+fn separation<T: Real>(q: &[T], k: usize, l: usize) -> [T; 3] {
+    [
+        q[3 * k] - q[3 * l],
+        q[3 * k + 1] - q[3 * l + 1],
+        q[3 * k + 2] - q[3 * l + 2],
+    ]
+}
+
 #[inline(always)]
 fn dot<T: Real>(x: &[T], y: &[T]) -> T {
     x[0] * y[0] + x[1] * y[1] + x[2] * y[2]
@@ -441,11 +451,7 @@ impl<T: Real, S: State<Scalar = T>> Lorentz for ChargedParticles<T, S> {
             let n = self.masses.len();
             for k in 0..n {
                 for l in k + 1..n {
-                    let d = [
-                        q[3 * k] - q[3 * l],
-                        q[3 * k + 1] - q[3 * l + 1],
-                        q[3 * k + 2] - q[3 * l + 2],
-                    ];
+                    let d = separation(q, k, l);
                     let r2 = norm2(&d);
                     let s = kappa * self.charges[k] * self.charges[l] / (r2 * r2.sqrt());
                     let (sk, sl) = (s / self.masses[k], s / self.masses[l]);
@@ -476,11 +482,7 @@ impl<T: Real, S: State<Scalar = T>> Lorentz for ChargedParticles<T, S> {
             let n = self.masses.len();
             for k in 0..n {
                 for l in k + 1..n {
-                    let d = [
-                        q[3 * k] - q[3 * l],
-                        q[3 * k + 1] - q[3 * l + 1],
-                        q[3 * k + 2] - q[3 * l + 2],
-                    ];
+                    let d = separation(q, k, l);
                     e += kappa * self.charges[k] * self.charges[l] / norm2(&d).sqrt();
                 }
             }

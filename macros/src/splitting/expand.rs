@@ -69,9 +69,7 @@ fn step_body(method: &Method) -> (TokenStream, Vec<f64>) {
 /// The generated items.
 pub fn expand(method: &Method) -> TokenStream {
     let Method {
-        attrs,
-        vis,
-        ident,
+        header,
         name,
         family,
         valid,
@@ -104,10 +102,10 @@ pub fn expand(method: &Method) -> TokenStream {
         quote!(::stormer::__private::General)
     };
     let cached_unused = if fsal { quote!() } else { quote!(let _ = __cached;) };
+    let declaration = header.declare();
+    let ident = &header.ident;
     quote! {
-        #(#attrs)*
-        #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
-        #vis struct #ident;
+        #declaration
 
         #[allow(unused_variables, clippy::all, clippy::pedantic, clippy::nursery)]
         impl ::stormer::__private::SplittingMethod for #ident {

@@ -1,17 +1,13 @@
-//! Step 1: the syntax of a `splitting!` or `composition!` invocation.
-//!
-//! ```text
-//! #[attrs] VIS struct NAME {
-//!     KEY: VALUE,   // any order; each key at most once
-//! }
-//! ```
+//! Step 1: the syntax of a `splitting!` or `composition!` invocation (a struct declaration
+//! with keys, see `declaration.rs`).
 //!
 //! Which keys a family requires is checked in `valid.rs`; here every known key parses.
 
 use syn::parse::{Parse, ParseStream};
-use syn::{braced, Attribute, Expr, Ident, LitBool, LitStr, Token, Visibility};
+use syn::{Expr, Ident, LitBool, LitStr};
 
-use crate::tableau::parse::{distance, parse_order, push, skip_value, Array, Keyed, Spanned};
+use crate::declaration::{self, parse_order, push, Header, Keyed, Spanned};
+use crate::tableau::parse::Array;
 
 /// The keys of both families.
 pub const KEYS: [&str; 8] = [
@@ -27,12 +23,15 @@ pub const KEYS: [&str; 8] = [
 
 /// One invocation.
 pub struct Input {
-    /// Outer attributes (doc comments included), passed through to the struct.
-    pub attrs: Vec<Attribute>,
-    /// The struct's visibility.
-    pub vis: Visibility,
-    /// The struct's name.
-    pub ident: Ident,
+    /// `#[attrs] VIS struct NAME`.
+    pub header: Header,
+    /// The keys given (which ones a family requires is `valid.rs`'s to check).
+    pub fields: Fields,
+}
+
+/// The values of the keys, each optional.
+#[derive(Default)]
+pub struct Fields {
     /// `name: "..."`.
     pub name: Option<LitStr>,
     /// `order: N`.
@@ -51,34 +50,10 @@ pub struct Input {
     pub tolerance: Option<Expr>,
 }
 
-impl Input {
-    fn parse_one(&mut self, input: ParseStream, errors: &mut Option<syn::Error>) -> syn::Result<()> {
-        let key: Ident = input.call(syn::ext::IdentExt::parse_any)?;
-        input.parse::<Token![:]>()?;
+impl Fields {
+    /// Parses the value of `key`, a key of [`KEYS`] met for the first time.
+    fn parse_value(&mut self, key: Ident, input: ParseStream) -> syn::Result<()> {
         let name = key.to_string();
-        let duplicate = match name.as_str() {
-            "name" => self.name.is_some(),
-            "order" => self.order.is_some(),
-            "drift" => self.drift.is_some(),
-            "kick" => self.kick.is_some(),
-            "word" => self.word.is_some(),
-            "gamma" => self.gamma.is_some(),
-            "quadratic_kinetic" => self.quadratic_kinetic.is_some(),
-            "tolerance" => self.tolerance.is_some(),
-            _ => {
-                let hint = match KEYS.iter().min_by_key(|k| distance(k, &name)) {
-                    Some(k) if distance(k, &name) <= 2 => format!(" (did you mean `{k}`?)"),
-                    _ => String::new(),
-                };
-                let message = format!("unknown key `{name}`{hint}; expected one of {}", KEYS.join(", "));
-                push(errors, syn::Error::new(key.span(), message));
-                return skip_value(input);
-            }
-        };
-        if duplicate {
-            push(errors, syn::Error::new(key.span(), format!("duplicate key `{name}`")));
-            return skip_value(input);
-        }
         match name.as_str() {
             "name" => self.name = Some(input.parse()?),
             "order" => self.order = Some(parse_order(input, &key)?),
@@ -104,44 +79,16 @@ impl Input {
 
 impl Parse for Input {
     fn parse(input: ParseStream) -> syn::Result<Self> {
-        let attrs = input.call(Attribute::parse_outer)?;
-        let vis: Visibility = input.parse()?;
-        input.parse::<Token![struct]>()?;
-        let ident: Ident = input.parse()?;
-        let content;
-        braced!(content in input);
-        let mut parsed = Input {
-            attrs,
-            vis,
-            ident,
-            name: None,
-            order: None,
-            drift: None,
-            kick: None,
-            word: None,
-            gamma: None,
-            quadratic_kinetic: None,
-            tolerance: None,
-        };
-        let mut errors = None;
-        while !content.is_empty() {
-            parsed.parse_one(&content, &mut errors)?;
-            if content.is_empty() {
-                break;
-            }
-            content.parse::<Token![,]>()?;
-        }
-        for (key, present) in [("name", parsed.name.is_some()), ("order", parsed.order.is_some())] {
+        let mut fields = Fields::default();
+        let (header, mut errors) = declaration::parse(input, &KEYS, |key, value| fields.parse_value(key, value))?;
+        for (key, present) in [("name", fields.name.is_some()), ("order", fields.order.is_some())] {
             if !present {
-                push(
-                    &mut errors,
-                    syn::Error::new(parsed.ident.span(), format!("missing key `{key}`")),
-                );
+                push(&mut errors, header.missing(key));
             }
         }
         match errors {
             Some(e) => Err(e),
-            None => Ok(parsed),
+            None => Ok(Input { header, fields }),
         }
     }
 }

@@ -6,21 +6,18 @@ use proc_macro2::Span;
 use stormer_order::splitting::{
     validate_composition, validate_splitting, CompositionSpec, Flow, SplittingError, SplittingSpec, ValidSplitting,
 };
-use syn::{Attribute, Expr, Ident, LitStr, Visibility};
+use syn::{Expr, Ident, LitStr};
 
 use super::parse::Input;
 use super::Family;
-use crate::tableau::parse::{push, Array, Keyed};
+use crate::declaration::{push, Header, Keyed};
+use crate::tableau::parse::Array;
 use crate::tableau::valid::{display, Evaluator};
 
 /// A method that passed every check, ready to expand.
 pub struct Method {
-    /// Outer attributes of the struct.
-    pub attrs: Vec<Attribute>,
-    /// Visibility of the struct.
-    pub vis: Visibility,
-    /// Name of the struct.
-    pub ident: Ident,
+    /// `#[attrs] VIS struct NAME`.
+    pub header: Header,
     /// The catalog name.
     pub name: LitStr,
     /// Which macro declared it.
@@ -38,7 +35,7 @@ fn foreign_keys(input: &Input, family: Family) -> Vec<(&Ident, &'static str)> {
     let mut found = Vec::new();
     match family {
         Family::Splitting => {
-            if let Some(k) = &input.gamma {
+            if let Some(k) = &input.fields.gamma {
                 found.push((
                     &k.key,
                     "`gamma` belongs to `composition!`; a splitting gives `drift` and `kick`, or a `word`",
@@ -47,10 +44,13 @@ fn foreign_keys(input: &Input, family: Family) -> Vec<(&Ident, &'static str)> {
         }
         Family::Composition => {
             let hint = "a composition gives only `gamma` (its weights over a symmetric second-order base)";
-            for k in [&input.drift, &input.kick, &input.word].into_iter().flatten() {
+            for k in [&input.fields.drift, &input.fields.kick, &input.fields.word]
+                .into_iter()
+                .flatten()
+            {
                 found.push((&k.key, hint));
             }
-            if let Some(k) = &input.quadratic_kinetic {
+            if let Some(k) = &input.fields.quadratic_kinetic {
                 found.push((
                     &k.key,
                     "a composition of a general base is valid for every splittable problem",
@@ -98,24 +98,24 @@ fn span_of(input: &Input, err: &SplittingError) -> Span {
         k.as_ref()
             .map(|k| k.value.items.get(i).map_or(k.value.span, syn::spanned::Spanned::span))
     };
-    let order = input.order.as_ref().map(|o| o.span);
-    let word = array(&input.word);
+    let order = input.fields.order.as_ref().map(|o| o.span);
+    let word = array(&input.fields.word);
     let found = match err {
-        SplittingError::Empty => array(&input.gamma).or(word).or(array(&input.drift)),
-        SplittingError::LengthMismatch { .. } => array(&input.kick),
+        SplittingError::Empty => array(&input.fields.gamma).or(word).or(array(&input.fields.drift)),
+        SplittingError::LengthMismatch { .. } => array(&input.fields.kick),
         SplittingError::NonFinite { what, index } => match *what {
-            "drift" => entry(&input.drift, *index),
-            "kick" => entry(&input.kick, *index),
-            _ => entry(&input.gamma, *index),
+            "drift" => entry(&input.fields.drift, *index),
+            "kick" => entry(&input.fields.kick, *index),
+            _ => entry(&input.fields.gamma, *index),
         },
-        SplittingError::Condition(c) if c.text.contains("gamma") => array(&input.gamma),
-        SplittingError::Condition(c) if c.text.starts_with("sum drift") => array(&input.drift).or(word),
-        SplittingError::Condition(_) => array(&input.kick).or(word).or(array(&input.gamma)),
+        SplittingError::Condition(c) if c.text.contains("gamma") => array(&input.fields.gamma),
+        SplittingError::Condition(c) if c.text.starts_with("sum drift") => array(&input.fields.drift).or(word),
+        SplittingError::Condition(_) => array(&input.fields.kick).or(word).or(array(&input.fields.gamma)),
         SplittingError::ZeroOrder | SplittingError::OrderTooHigh { .. } => order,
-        SplittingError::InvalidTolerance { .. } => input.tolerance.as_ref().map(syn::spanned::Spanned::span),
+        SplittingError::InvalidTolerance { .. } => input.fields.tolerance.as_ref().map(syn::spanned::Spanned::span),
         _ => None,
     };
-    found.unwrap_or_else(|| input.ident.span())
+    found.unwrap_or_else(|| input.header.ident.span())
 }
 
 /// Evaluates and validates a parsed invocation of `family`.
@@ -128,7 +128,7 @@ pub fn validate(input: Input, family: Family) -> syn::Result<Method> {
         );
     }
     if family == Family::Splitting {
-        match (&input.drift, &input.kick, &input.word) {
+        match (&input.fields.drift, &input.fields.kick, &input.fields.word) {
             (Some(_), Some(_), None) | (None, None, Some(_)) => {}
             (_, _, Some(w)) => push(
                 &mut errors,
@@ -144,11 +144,14 @@ pub fn validate(input: Input, family: Family) -> syn::Result<Method> {
             ),
             (None, None, None) => push(
                 &mut errors,
-                syn::Error::new(input.ident.span(), "missing key `drift` and `kick` (or `word`)"),
+                syn::Error::new(input.header.ident.span(), "missing key `drift` and `kick` (or `word`)"),
             ),
         }
-    } else if input.gamma.is_none() {
-        push(&mut errors, syn::Error::new(input.ident.span(), "missing key `gamma`"));
+    } else if input.fields.gamma.is_none() {
+        push(
+            &mut errors,
+            syn::Error::new(input.header.ident.span(), "missing key `gamma`"),
+        );
     }
     if let Some(e) = errors {
         return Err(e);
@@ -156,9 +159,9 @@ pub fn validate(input: Input, family: Family) -> syn::Result<Method> {
 
     let mut ev = Evaluator::default();
     let mut errors = None;
-    let tolerance = input.tolerance.as_ref().and_then(|e| ev.one(e));
-    let order = input.order.as_ref().map_or(0, |o| o.value);
-    let spec_splitting = match (&input.drift, &input.kick, &input.word) {
+    let tolerance = input.fields.tolerance.as_ref().and_then(|e| ev.one(e));
+    let order = input.fields.order.as_ref().map_or(0, |o| o.value);
+    let spec_splitting = match (&input.fields.drift, &input.fields.kick, &input.fields.word) {
         (Some(d), Some(k), _) => Some((ev.array(&d.value), ev.array(&k.value))),
         (_, _, Some(w)) => Some(SplittingSpec::arrays_of_word(&word_entries(
             &w.value,
@@ -167,7 +170,7 @@ pub fn validate(input: Input, family: Family) -> syn::Result<Method> {
         ))),
         _ => None,
     };
-    let gamma = input.gamma.as_ref().map(|g| ev.array(&g.value));
+    let gamma = input.fields.gamma.as_ref().map(|g| ev.array(&g.value));
     if let Some(e) = ev.errors {
         push(&mut errors, e);
     }
@@ -186,17 +189,15 @@ pub fn validate(input: Input, family: Family) -> syn::Result<Method> {
             order,
             tolerance,
         }),
-        _ => return Err(syn::Error::new(input.ident.span(), "incomplete method")),
+        _ => return Err(syn::Error::new(input.header.ident.span(), "incomplete method")),
     };
     match validated {
         Ok(valid) => Ok(Method {
-            attrs: input.attrs,
-            vis: input.vis,
-            ident: input.ident,
-            name: input.name.expect("checked by the parser"),
+            header: input.header,
+            name: input.fields.name.expect("checked by the parser"),
             family,
             valid,
-            quadratic_kinetic: input.quadratic_kinetic.is_some_and(|k| k.value.value),
+            quadratic_kinetic: input.fields.quadratic_kinetic.is_some_and(|k| k.value.value),
             tolerance,
         }),
         Err(err) => Err(syn::Error::new(span_of(&input, &err), err)),

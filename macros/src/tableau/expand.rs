@@ -197,6 +197,22 @@ fn explicit_impl(ident: &syn::Ident, t: &ValidTableau) -> TokenStream {
     let error3 = estimate(t.b_hat3.as_ref());
 
     let k_len = Literal::usize_unsuffixed(slots.values.len());
+    // `error` and `error3` share a signature: `err = h sum_i d_i k_i`
+    let error_fn = |name: &str, body: TokenStream| {
+        let name = format_ident!("{name}");
+        quote! {
+            #[inline]
+            fn #name<S: ::stormer::__private::State>(
+                __co: &[S::Scalar; #k_len],
+                __h: S::Scalar,
+                __k: &[S],
+                __err: &mut S,
+            ) {
+                #body
+            }
+        }
+    };
+    let (error, error3) = (error_fn("error", error), error_fn("error3", error3));
     let coeffs = slots.values.iter().map(|&x| {
         let x = float(x);
         quote!(::stormer::__private::lit::<T>(#x))
@@ -227,25 +243,9 @@ fn explicit_impl(ident: &syn::Ident, t: &ValidTableau) -> TokenStream {
                 #solution
             }
 
-            #[inline]
-            fn error<S: ::stormer::__private::State>(
-                __co: &[S::Scalar; #k_len],
-                __h: S::Scalar,
-                __k: &[S],
-                __err: &mut S,
-            ) {
-                #error
-            }
+            #error
 
-            #[inline]
-            fn error3<S: ::stormer::__private::State>(
-                __co: &[S::Scalar; #k_len],
-                __h: S::Scalar,
-                __k: &[S],
-                __err: &mut S,
-            ) {
-                #error3
-            }
+            #error3
         }
     }
 }
@@ -253,9 +253,7 @@ fn explicit_impl(ident: &syn::Ident, t: &ValidTableau) -> TokenStream {
 /// The whole expansion of a validated tableau.
 pub fn expand(method: &Method) -> TokenStream {
     let Method {
-        attrs,
-        vis,
-        ident,
+        header,
         name,
         tableau: t,
         tolerance,
@@ -297,12 +295,12 @@ pub fn expand(method: &Method) -> TokenStream {
             )
         }
     };
+    let ident = &header.ident;
     let explicit_impl = if explicit { explicit_impl(ident, t) } else { quote!() };
 
+    let declaration = header.declare();
     quote! {
-        #(#attrs)*
-        #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
-        #vis struct #ident;
+        #declaration
 
         #[automatically_derived]
         impl ::stormer::__private::ButcherMethod for #ident {

@@ -1,18 +1,14 @@
-//! Step 1: the syntax of a `tableau!` invocation, as tokens with their spans.
-//!
-//! ```text
-//! #[attrs] VIS struct NAME {
-//!     KEY: VALUE,   // any order; each key at most once
-//!     ...
-//! }
-//! ```
+//! Step 1: the syntax of a `tableau!` invocation (a struct declaration with keys, see
+//! `declaration.rs`), as tokens with their spans.
 //!
 //! Coefficients stay unevaluated `syn::Expr`s here; `valid.rs` evaluates and checks them.
 
 use proc_macro2::Span;
 use syn::parse::{Parse, ParseStream};
 use syn::punctuated::Punctuated;
-use syn::{braced, bracketed, Attribute, Expr, Ident, Lit, LitStr, Token, Visibility};
+use syn::{bracketed, Expr, Ident, LitStr, Token};
+
+use crate::declaration::{self, parse_order, push, Header, Keyed, Spanned};
 
 /// The keys a tableau accepts, in the order the documentation lists them.
 pub const KEYS: [&str; 9] = [
@@ -29,12 +25,8 @@ pub const KEYS: [&str; 9] = [
 
 /// One `tableau!` invocation.
 pub struct Input {
-    /// Outer attributes (doc comments included), passed through to the struct.
-    pub attrs: Vec<Attribute>,
-    /// The struct's visibility.
-    pub vis: Visibility,
-    /// The struct's name.
-    pub ident: Ident,
+    /// `#[attrs] VIS struct NAME`.
+    pub header: Header,
     /// `name: "rk4"`.
     pub name: LitStr,
     /// `order: 4`.
@@ -53,24 +45,6 @@ pub struct Input {
     pub b_hat3: Option<Array>,
     /// `tolerance: 1e-10`, optional.
     pub tolerance: Option<Expr>,
-}
-
-/// A value with the span of the tokens it was read from.
-#[derive(Clone, Copy, Debug)]
-pub struct Spanned<T> {
-    /// The value.
-    pub value: T,
-    /// Where it was written.
-    pub span: Span,
-}
-
-/// A value together with the key that introduced it (errors about the key's presence
-/// point at the key).
-pub struct Keyed<T> {
-    /// The key.
-    pub key: Ident,
-    /// The value.
-    pub value: T,
 }
 
 /// `[e1, e2, ...]`: coefficient expressions.
@@ -113,27 +87,6 @@ impl Parse for Matrix {
     }
 }
 
-/// An order: a non-negative integer literal (range checks are `valid.rs`'s).
-pub(crate) fn parse_order(input: ParseStream, key: &Ident) -> syn::Result<Spanned<usize>> {
-    let expr: Expr = input.parse()?;
-    let err = || {
-        syn::Error::new_spanned(
-            &expr,
-            format!("`{key}` must be a non-negative integer literal, e.g. `{key}: 4`"),
-        )
-    };
-    match &expr {
-        Expr::Lit(syn::ExprLit { lit: Lit::Int(int), .. }) => match int.base10_parse::<usize>() {
-            Ok(value) => Ok(Spanned {
-                value,
-                span: int.span(),
-            }),
-            Err(_) => Err(err()),
-        },
-        _ => Err(err()),
-    }
-}
-
 /// Everything after `struct NAME`, before the required keys are checked.
 #[derive(Default)]
 struct Fields {
@@ -148,70 +101,10 @@ struct Fields {
     tolerance: Option<Expr>,
 }
 
-/// Adds `e` to the accumulated errors.
-pub(crate) fn push(errors: &mut Option<syn::Error>, e: syn::Error) {
-    match errors {
-        Some(all) => all.combine(e),
-        None => *errors = Some(e),
-    }
-}
-
-/// Levenshtein distance, for suggesting a key.
-pub(crate) fn distance(a: &str, b: &str) -> usize {
-    let b: Vec<char> = b.chars().collect();
-    let mut row: Vec<usize> = (0..=b.len()).collect();
-    for (i, ca) in a.chars().enumerate() {
-        let mut diagonal = row[0];
-        row[0] = i + 1;
-        for (j, &cb) in b.iter().enumerate() {
-            let substitution = diagonal + usize::from(ca != cb);
-            diagonal = row[j + 1];
-            row[j + 1] = substitution.min(row[j] + 1).min(diagonal + 1);
-        }
-    }
-    row[b.len()]
-}
-
-/// Skips the tokens of one value (up to the next top-level comma).
-pub(crate) fn skip_value(input: ParseStream) -> syn::Result<()> {
-    while !input.is_empty() && !input.peek(Token![,]) {
-        input.parse::<proc_macro2::TokenTree>()?;
-    }
-    Ok(())
-}
-
 impl Fields {
-    /// Parses one `key: value`; semantic problems (unknown or repeated key) go to `errors`
-    /// so that later keys are still checked, syntax errors are returned.
-    fn parse_one(&mut self, input: ParseStream, errors: &mut Option<syn::Error>) -> syn::Result<()> {
-        let key: Ident = input.call(syn::ext::IdentExt::parse_any)?;
-        input.parse::<Token![:]>()?;
-        let name = key.to_string();
-        let duplicate = match name.as_str() {
-            "name" => self.name.is_some(),
-            "order" => self.order.is_some(),
-            "c" => self.c.is_some(),
-            "a" => self.a.is_some(),
-            "b" => self.b.is_some(),
-            "b_hat" => self.b_hat.is_some(),
-            "embedded_order" => self.embedded_order.is_some(),
-            "b_hat3" => self.b_hat3.is_some(),
-            "tolerance" => self.tolerance.is_some(),
-            _ => {
-                let hint = match KEYS.iter().min_by_key(|k| distance(k, &name)) {
-                    Some(k) if distance(k, &name) <= 2 => format!(" (did you mean `{k}`?)"),
-                    _ => String::new(),
-                };
-                let message = format!("unknown key `{name}`{hint}; expected one of {}", KEYS.join(", "));
-                push(errors, syn::Error::new(key.span(), message));
-                return skip_value(input);
-            }
-        };
-        if duplicate {
-            push(errors, syn::Error::new(key.span(), format!("duplicate key `{name}`")));
-            return skip_value(input);
-        }
-        match name.as_str() {
+    /// Parses the value of `key`, a key of [`KEYS`] met for the first time.
+    fn parse_value(&mut self, key: Ident, input: ParseStream) -> syn::Result<()> {
+        match key.to_string().as_str() {
             "name" => self.name = Some(input.parse()?),
             "order" => self.order = Some(parse_order(input, &key)?),
             "c" => self.c = Some(input.parse()?),
@@ -234,26 +127,8 @@ impl Fields {
 
 impl Parse for Input {
     fn parse(input: ParseStream) -> syn::Result<Self> {
-        let attrs = input.call(Attribute::parse_outer)?;
-        let vis: Visibility = input.parse()?;
-        input.parse::<Token![struct]>()?;
-        let ident: Ident = input.parse()?;
-        let content;
-        braced!(content in input);
-
         let mut fields = Fields::default();
-        let mut errors = None;
-        while !content.is_empty() {
-            fields.parse_one(&content, &mut errors)?;
-            if content.is_empty() {
-                break;
-            }
-            content.parse::<Token![,]>()?;
-        }
-
-        let missing = |key: &str, errors: &mut Option<syn::Error>| {
-            push(errors, syn::Error::new(ident.span(), format!("missing key `{key}`")));
-        };
+        let (header, mut errors) = declaration::parse(input, &KEYS, |key, value| fields.parse_value(key, value))?;
         let Fields {
             name,
             order,
@@ -265,23 +140,19 @@ impl Parse for Input {
             b_hat3,
             tolerance,
         } = fields;
-        if name.is_none() {
-            missing("name", &mut errors);
-        }
-        if order.is_none() {
-            missing("order", &mut errors);
-        }
-        if a.is_none() {
-            missing("a", &mut errors);
-        }
-        if b.is_none() {
-            missing("b", &mut errors);
+        for (key, present) in [
+            ("name", name.is_some()),
+            ("order", order.is_some()),
+            ("a", a.is_some()),
+            ("b", b.is_some()),
+        ] {
+            if !present {
+                push(&mut errors, header.missing(key));
+            }
         }
         match (errors, name, order, a, b) {
             (None, Some(name), Some(order), Some(a), Some(b)) => Ok(Input {
-                attrs,
-                vis,
-                ident,
+                header,
                 name,
                 order,
                 c,
@@ -294,7 +165,7 @@ impl Parse for Input {
             }),
             (Some(e), ..) => Err(e),
             // Unreachable: a missing key always records an error.
-            _ => Err(syn::Error::new(ident.span(), "incomplete tableau")),
+            _ => Err(syn::Error::new(header.ident.span(), "incomplete tableau")),
         }
     }
 }
@@ -321,15 +192,15 @@ mod tests {
             }
         })
         .unwrap();
-        assert_eq!(input.ident, "Heun");
+        assert_eq!(input.header.ident, "Heun");
         assert_eq!(input.name.value(), "heun");
         assert_eq!(input.order.value, 2);
         assert_eq!(input.a.rows.len(), 2);
         assert_eq!(input.a.rows[0].items.len(), 1);
         assert_eq!(input.b.items.len(), 2);
         assert!(input.c.is_none() && input.b_hat.is_none() && input.tolerance.is_some());
-        assert_eq!(input.attrs.len(), 1);
-        assert!(matches!(input.vis, Visibility::Restricted(_)));
+        assert_eq!(input.header.attrs.len(), 1);
+        assert!(matches!(input.header.vis, syn::Visibility::Restricted(_)));
     }
 
     #[test]
@@ -351,14 +222,6 @@ mod tests {
         let err = parse(quote! { struct X { name: "x", a: [[0]] } }).err().unwrap();
         let messages: Vec<String> = err.into_iter().map(|e| e.to_string()).collect();
         assert_eq!(messages, ["missing key `order`", "missing key `b`"]);
-    }
-
-    #[test]
-    fn distance_counts_edits() {
-        assert_eq!(distance("bhat", "b_hat"), 1);
-        assert_eq!(distance("order", "order"), 0);
-        assert_eq!(distance("", "abc"), 3);
-        assert_eq!(distance("kitten", "sitting"), 3);
     }
 
     #[test]

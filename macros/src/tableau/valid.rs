@@ -5,18 +5,15 @@
 use proc_macro2::Span;
 use quote::ToTokens;
 use stormer_order::{eval_coefficient, TableauError, TableauSpec, ValidTableau};
-use syn::{Attribute, Expr, Ident, LitStr, Visibility};
+use syn::{Expr, LitStr};
 
+use crate::declaration::Header;
 use crate::tableau::parse::{Array, Input};
 
 /// A tableau that passed every check, ready to expand.
 pub struct Method {
-    /// Outer attributes of the struct.
-    pub attrs: Vec<Attribute>,
-    /// Visibility of the struct.
-    pub vis: Visibility,
-    /// Name of the struct.
-    pub ident: Ident,
+    /// `#[attrs] VIS struct NAME`.
+    pub header: Header,
     /// The catalog name.
     pub name: LitStr,
     /// The validated coefficients and flags.
@@ -110,7 +107,7 @@ fn target<'a>(input: &'a Input, err: &TableauError, s: usize) -> Target<'a> {
         Some(e) if input.order.value != value && e.value.value == value => Tokens(e.value.span),
         _ => Tokens(input.order.span),
     };
-    let fallback = Tokens(input.ident.span());
+    let fallback = Tokens(input.header.ident.span());
     match err {
         TableauError::Empty => Tokens(input.b.span),
         TableauError::Shape {
@@ -167,9 +164,7 @@ pub fn validate(input: Input) -> syn::Result<Method> {
     };
     match stormer_order::validate(&spec) {
         Ok(tableau) => Ok(Method {
-            attrs: input.attrs,
-            vis: input.vis,
-            ident: input.ident,
+            header: input.header,
             name: input.name,
             tableau,
             tolerance,

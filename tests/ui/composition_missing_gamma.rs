@@ -1,8 +1,0 @@
-stormer::composition! {
-    pub struct Empty {
-        name: "empty",
-        order: 2,
-    }
-}
-
-fn main() {}
