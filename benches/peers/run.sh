@@ -3,7 +3,7 @@
 #   bash benches/peers/run.sh            # REBOUND vs stormer on the outer solar system
 #   bash benches/peers/run.sh --rounds 3 # any option of rebound.py
 # Installs what it needs: a virtual environment under target/peers/venv with REBOUND
-# (PyPI package `rebound`); our side is `examples/outer_solar_front.rs` (release build).
+# (PyPI package `rebound`); our side is `app/examples/outer_solar_front.rs` (release build).
 # Results: out/peers/rebound.md, rebound_front.json, rebound_front.svg.
 # The ode_solvers comparison (free kick) is a criterion bench: cargo bench --bench free_kick_peers
 set -euo pipefail
