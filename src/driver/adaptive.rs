@@ -36,7 +36,7 @@ impl<T: Real, S: State<Scalar = T>> Driver<'_, T, S> {
         let Some(q) = stepper.error_order() else {
             return Err(Error::Unsupported {
                 name: stepper.info().name,
-                reason: "it has no embedded error estimate; use fixed steps (--dt)".into(),
+                reason: "it has no embedded error estimate, which adaptive steps need; use fixed steps".into(),
             });
         };
         let finite = tol.rtol.is_finite() && tol.atol.is_finite();

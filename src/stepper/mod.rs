@@ -118,7 +118,7 @@ pub trait Stepper<P: Problem> {
         if on {
             Err(Error::Unsupported {
                 name: self.info().name,
-                reason: "it has no compensated form (set_compensated, --compensated)".into(),
+                reason: "it has no compensated form (compensated summation, `set_compensated`)".into(),
             })
         } else {
             Ok(())
