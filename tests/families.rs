@@ -1,29 +1,13 @@
 //! What each problem class admits, decided once per class by `Problem::families`, and the
 //! sentence a refused method gets: the same in the library as on the command line.
 
+#[path = "support/problems.rs"]
+mod problems;
+
+use problems::{Decay, Oscillator};
 use stormer::magnetic::Charged;
 use stormer::models::{ChargedParticles, MagneticField};
-use stormer::{Hamiltonian, ImplicitOptions, Method, Problem, SecondOrder};
-
-/// `y' = -y`: declares no structure.
-struct Decay;
-impl Problem for Decay {
-    type Scalar = f64;
-    type State = [f64; 1];
-    fn rhs(&self, _t: f64, y: &[f64; 1], dy: &mut [f64; 1]) {
-        dy[0] = -y[0];
-    }
-}
-
-/// `q'' = -q`: a second-order problem, quadratic kinetic energy.
-struct Oscillator;
-impl SecondOrder for Oscillator {
-    type Scalar = f64;
-    type State = [f64; 2];
-    fn acceleration(&self, _t: f64, q: &[f64], a: &mut [f64]) {
-        a[0] = -q[0];
-    }
-}
+use stormer::{Hamiltonian, ImplicitOptions, Method, Problem};
 
 /// `H = p^4/4 + q^2/2`: separable, but the kinetic energy is not quadratic.
 struct QuarticKinetic;

@@ -4,17 +4,11 @@
 //! Known values: Stormer-Verlet 2, RK4 2 sqrt(2).
 
 use stormer::order::stability::{butcher_interval, splitting_interval, Interval};
-use stormer::{registry, Driver, ImplicitOptions, SecondOrder, Stepper};
+use stormer::{registry, Driver, ImplicitOptions, Stepper};
 
-/// x'' = -x.
-struct Oscillator;
-impl SecondOrder for Oscillator {
-    type Scalar = f64;
-    type State = [f64; 2];
-    fn acceleration(&self, _t: f64, q: &[f64], a: &mut [f64]) {
-        a[0] = -q[0];
-    }
-}
+#[path = "support/problems.rs"]
+mod problems;
+use problems::Oscillator;
 
 const Y0: [f64; 2] = [1.0, 0.0];
 

@@ -7,8 +7,6 @@
 mod adaptive;
 mod event;
 mod record;
-#[cfg(test)]
-mod tests;
 
 pub use record::{Interrupted, Recorder, Solution, Stats, StopEvent};
 
