@@ -83,8 +83,11 @@ pub struct ExplicitStepper<C, S: State> {
     err: Option<S>,
     err3: Option<S>,
     k0_valid: bool,
-    /// The final combination summed with a carry, when turned on.
-    compensated: Option<CompensatedCombination<S>>,
+    /// The final combination summed with a carry, when turned on. Boxed: held inline, its
+    /// buffers changed the plain stepper's layout enough that the generated RK4 step lost
+    /// its register allocation (1.21x the hand-written loop instead of 0.98x, bisected to
+    /// the commit that added it; docs/benchmarks.md).
+    compensated: Option<Box<CompensatedCombination<S>>>,
     counters: Counters,
 }
 
@@ -222,7 +225,7 @@ where
 
     fn set_compensated(&mut self, on: bool) -> Result<(), Error> {
         super::compensated::switch(&mut self.compensated, on, || {
-            CompensatedCombination::new(self.stages.weights(), &self.k[0])
+            Box::new(CompensatedCombination::new(self.stages.weights(), &self.k[0]))
         });
         Ok(())
     }
