@@ -279,6 +279,83 @@ fn a_run_never_overwrites_its_inputs() {
     assert_eq!(std::fs::read_to_string(dir.join("mine.toml")).unwrap(), method);
 }
 
+/// `compare`, `scan` and `merge` wrote their tables over any file of the same name, inputs
+/// included; now every file a study would write is checked against its scene, method files
+/// and shards before a job runs, and the input is left as it was.
+#[test]
+fn a_study_never_overwrites_its_inputs() {
+    let dir = workdir("clobber-study");
+    let method = "name = \"mine\"\norder = 2\nc = [0, 1]\na = [[0, 0], [1, 0]]\nb = [0.5, 0.5]\n";
+    let span = ["--dt", "0.01", "--t-end", "1", "--out", "."];
+    for (file, command) in [
+        (
+            "compare-kepler.md",
+            vec!["compare", "kepler", "--methods", "rk4,compare-kepler.md"],
+        ),
+        (
+            "scan-kepler-mine.svg",
+            vec!["scan", "kepler", "--method", "scan-kepler-mine.svg"],
+        ),
+        (
+            "compare-kepler.shard-1-of-2.json",
+            vec![
+                "compare",
+                "kepler",
+                "--methods",
+                "compare-kepler.shard-1-of-2.json",
+                "--shard",
+                "1/2",
+            ],
+        ),
+    ] {
+        std::fs::write(dir.join(file), method).unwrap();
+        let span = if command[0] == "scan" {
+            &["--steps", "10", "--t-end", "1", "--out", "."][..]
+        } else {
+            &span[..]
+        };
+        let args: Vec<&str> = command.iter().chain(span).copied().collect();
+        assert_error(&stormer(&dir, &args), &format!("is the input file {file}"));
+        assert_eq!(std::fs::read_to_string(dir.join(file)).unwrap(), method, "{file}");
+    }
+    for i in ["1/2", "2/2"] {
+        let out = stormer(
+            &dir,
+            &[
+                "compare",
+                "kepler",
+                "--methods",
+                "rk4,leapfrog",
+                "--shard",
+                i,
+                "--dt",
+                "0.01",
+                "--t-end",
+                "1",
+                "--out",
+                "parts",
+            ],
+        );
+        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    }
+    let shard = std::fs::read(dir.join("parts/compare-kepler.shard-1-of-2.json")).unwrap();
+    std::fs::write(dir.join("compare-kepler.csv"), &shard).unwrap();
+    assert_error(
+        &stormer(
+            &dir,
+            &[
+                "merge",
+                "compare-kepler.csv",
+                "parts/compare-kepler.shard-2-of-2.json",
+                "--out",
+                ".",
+            ],
+        ),
+        "is the input file compare-kepler.csv",
+    );
+    assert_eq!(std::fs::read(dir.join("compare-kepler.csv")).unwrap(), shard);
+}
+
 /// A step longer than the span or an empty span ran 0 steps and exited 0; now an error
 /// that says what to change, before any output file is made.
 #[test]

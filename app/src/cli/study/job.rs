@@ -6,7 +6,7 @@ use crate::cli::output::{file_safe, one_line};
 use crate::cli::pipeline::{max_difference, Options, SceneRun, Steps};
 use anyhow::Context;
 use serde::{Deserialize, Serialize};
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::time::Instant;
 use stormer::{Error, Method, Tolerances};
 use stormer_app::scenes::{self, AnyScene, Scene, SceneVisitor, Setup};
@@ -171,15 +171,20 @@ struct CachedReference {
     state: Vec<f64>,
 }
 
-/// The reference of the study's scene and span: read from the cache, or computed and
-/// stored there.
-pub fn reference(scene: &SceneText, study: &StudyId, cache: &Path) -> anyhow::Result<Reference> {
-    let path = cache.join(format!(
+/// The file in the directory `cache` that holds the reference of the study's scene and span.
+pub fn cache_path(study: &StudyId, cache: &Path) -> PathBuf {
+    cache.join(format!(
         "{}-t{}-{}.json",
         file_safe(&study.scene),
         file_safe(&format!("{:?}", study.t_end)),
         study.scene_hash
-    ));
+    ))
+}
+
+/// The reference of the study's scene and span: read from the cache, or computed and
+/// stored there.
+pub fn reference(scene: &SceneText, study: &StudyId, cache: &Path) -> anyhow::Result<Reference> {
+    let path = cache_path(study, cache);
     let file = path.display().to_string();
     let fits = |c: &CachedReference| {
         c.format == REFERENCE_FORMAT

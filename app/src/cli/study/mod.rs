@@ -320,7 +320,10 @@ pub fn compare(args: &CompareArgs) -> anyhow::Result<()> {
         }
     }
     let (study, methods) = plan.into_study(Kind::Compare, jobs);
-    execute(&scene, study, &methods, &args.common)
+    let inputs = [args.scene.as_str()]
+        .into_iter()
+        .chain(args.methods.iter().map(String::as_str));
+    execute(&scene, study, &methods, &args.common, inputs)
 }
 
 /// `stormer scan`.
@@ -340,7 +343,10 @@ pub fn scan(args: &ScanArgs) -> anyhow::Result<()> {
         })
         .collect();
     let (study, methods) = plan.into_study(Kind::Scan, jobs);
-    execute(&scene, study, &methods, &args.common)
+    let inputs = [args.scene.as_str()]
+        .into_iter()
+        .chain(args.method.iter().map(String::as_str));
+    execute(&scene, study, &methods, &args.common, inputs)
 }
 
 /// At most this many worker threads per core: more only adds switching (and a
@@ -362,9 +368,31 @@ fn worker_threads(asked: usize, jobs: usize) -> usize {
     asked.min(cap)
 }
 
-/// Runs the study's jobs (the shard's, with `--shard`) and writes the outputs.
-fn execute(scene: &SceneText, study: StudyId, methods: &[Method], common: &CommonArgs) -> anyhow::Result<()> {
+/// Runs the study's jobs (the shard's, with `--shard`) and writes the outputs, after
+/// checking that none of them would overwrite one of the `inputs` (scene and method files)
+/// or the reference cache.
+fn execute<'a>(
+    scene: &SceneText,
+    study: StudyId,
+    methods: &[Method],
+    common: &CommonArgs,
+    inputs: impl Iterator<Item = &'a str>,
+) -> anyhow::Result<()> {
     let shard = common.shard.unwrap_or((1, 1));
+    let cache = (study.truth == "reference").then(|| job::cache_path(&study, &common.cache));
+    let inputs: Vec<&Path> = inputs.map(Path::new).collect();
+    let outputs = match shard {
+        (1, 1) => report::outputs(&study, &common.out),
+        _ => vec![part_path(&study, &common.out, shard)],
+    };
+    for output in outputs.iter().chain(&cache) {
+        super::output::refuse_overwriting(output, &inputs)?;
+    }
+    if let Some(cache) = &cache {
+        for output in &outputs {
+            super::output::refuse_overwriting(output, &[cache])?;
+        }
+    }
     let reference = if study.truth == "reference" {
         Some(job::reference(scene, &study, &common.cache)?)
     } else {
@@ -398,11 +426,14 @@ fn execute(scene: &SceneText, study: StudyId, methods: &[Method], common: &Commo
     if shard.1 == 1 {
         return report::write(&part, &common.out);
     }
-    let path = common
-        .out
-        .join(format!("{}.shard-{}-of-{}.json", part.study.prefix(), shard.0, shard.1));
+    let path = part_path(&part.study, &common.out, shard);
     write_json(&path, &part)?;
     report::print_partial(&part, &path)
+}
+
+/// The partial table of shard `(i, n)` of `study`.
+fn part_path(study: &StudyId, out: &Path, (i, n): (usize, usize)) -> PathBuf {
+    out.join(format!("{}.shard-{i}-of-{n}.json", study.prefix()))
 }
 
 fn write_json<T: Serialize>(path: &Path, value: &T) -> anyhow::Result<()> {
@@ -420,6 +451,10 @@ pub fn merge(args: &MergeArgs) -> anyhow::Result<()> {
         parts.push((path, read_part(path)?));
     }
     let merged = join(parts)?;
+    let inputs: Vec<&Path> = args.parts.iter().map(PathBuf::as_path).collect();
+    for output in report::outputs(&merged.study, &args.out) {
+        super::output::refuse_overwriting(&output, &inputs)?;
+    }
     report::write(&merged, &args.out)
 }
 

@@ -386,6 +386,25 @@ fn compare_series(
     series
 }
 
+/// The diagrams of a comparison, by the name in their file name.
+const COMPARE_CHARTS: [&str; 3] = ["evaluations", "seconds", "energy"];
+
+/// Every file [`write`] may write for `study` into `out`: checked against the inputs
+/// before any job runs.
+pub fn outputs(study: &StudyId, out: &Path) -> Vec<PathBuf> {
+    let prefix = study.prefix();
+    let mut files = vec![out.join(format!("{prefix}.csv")), out.join(format!("{prefix}.md"))];
+    match study.kind {
+        Kind::Compare => files.extend(COMPARE_CHARTS.iter().map(|name| chart_path(out, &prefix, name))),
+        Kind::Scan => files.push(out.join(format!("{prefix}.svg"))),
+    }
+    files
+}
+
+fn chart_path(out: &Path, prefix: &str, name: &str) -> PathBuf {
+    out.join(format!("{prefix}-{name}.svg"))
+}
+
 /// Draws the diagrams; returns the files written.
 fn draw(part: &Part, out: &Path, fits: Option<&[Fit]>) -> anyhow::Result<Vec<PathBuf>> {
     let s = &part.study;
@@ -405,21 +424,22 @@ fn draw(part: &Part, out: &Path, fits: Option<&[Fit]>) -> anyhow::Result<Vec<Pat
             let title = format!("work-precision: {}", s.scene);
             let evals = |r: &Row| Some(r.evaluations as f64);
             let error = |r: &Row| r.error;
+            let [evaluations, seconds, energy] = COMPARE_CHARTS;
             let mut charts = vec![
                 (
-                    "evaluations",
+                    evaluations,
                     Chart::new(&title, "evaluations (force / right-hand side)", &error_label),
                     compare_series(s, &part.rows, evals, error),
                 ),
                 (
-                    "seconds",
+                    seconds,
                     Chart::new(&title, "wall time, s (best of runs)", &error_label),
                     compare_series(s, &part.rows, |r| r.seconds, error),
                 ),
             ];
             if s.energy {
                 charts.push((
-                    "energy",
+                    energy,
                     Chart::new(
                         format!("energy error: {}", s.scene),
                         "evaluations (force / right-hand side)",
@@ -429,7 +449,7 @@ fn draw(part: &Part, out: &Path, fits: Option<&[Fit]>) -> anyhow::Result<Vec<Pat
                 ));
             }
             for (name, chart, series) in charts {
-                let path = out.join(format!("{prefix}-{name}.svg"));
+                let path = chart_path(out, &prefix, name);
                 plot::draw(&path, &chart.scales(Scale::Log, Scale::Log), &series)?;
                 files.push(path);
             }
