@@ -110,7 +110,7 @@ fn with_stepper<St: Stepper<Charged<CoulombField>>>(stepper: &mut St, steps: usi
     }
     let (mut y, mut y_new) = (y0, y0);
     for i in 0..steps {
-        let _ = stepper.step(&p, i as f64 * h, h, &y, &mut y_new, None);
+        let _ = stepper.step(&p, i as f64 * h, h, &y, &mut y_new);
         stepper.accept();
         core::mem::swap(&mut y, &mut y_new);
     }

@@ -63,7 +63,7 @@ fn hand_written(steps: usize, h: f64, y0: [f64; 2]) -> [f64; 2] {
 fn with_stepper<St: Stepper<Pendulum>>(stepper: &mut St, steps: usize, h: f64, y0: [f64; 2]) -> [f64; 2] {
     let (mut y, mut y_new) = (y0, y0);
     for i in 0..steps {
-        let _ = stepper.step(&Pendulum, i as f64 * h, h, &y, &mut y_new, None);
+        let _ = stepper.step(&Pendulum, i as f64 * h, h, &y, &mut y_new);
         stepper.accept();
         core::mem::swap(&mut y, &mut y_new);
     }

@@ -27,9 +27,7 @@ fn allocations_for(steps: usize) -> usize {
     let (mut y, mut y_new) = (y0, y0);
     let before = allocations();
     for i in 0..steps {
-        stepper
-            .step(&Pendulum, i as f64 * 0.01, 0.01, &y, &mut y_new, None)
-            .unwrap();
+        stepper.step(&Pendulum, i as f64 * 0.01, 0.01, &y, &mut y_new).unwrap();
         Stepper::<Pendulum>::accept(&mut stepper);
         core::mem::swap(&mut y, &mut y_new);
     }
@@ -85,10 +83,10 @@ fn compensated_allocations_for(steps: usize) -> usize {
     let before = allocations();
     for i in 0..steps {
         let t = i as f64 * 0.01;
-        rk4.step(&Pendulum, t, 0.01, &y, &mut y_new, None).unwrap();
+        rk4.step(&Pendulum, t, 0.01, &y, &mut y_new).unwrap();
         Stepper::<Pendulum>::accept(&mut rk4);
         core::mem::swap(&mut y, &mut y_new);
-        jump.step(&Swing, t, 0.01, &z, &mut y_new, None).unwrap();
+        jump.step(&Swing, t, 0.01, &z, &mut y_new).unwrap();
         Stepper::<Swing>::accept(&mut jump);
         z = y_new;
     }

@@ -123,7 +123,7 @@ fn trajectory<P: Problem, St: Stepper<P>>(
     let (mut y, mut y_new) = (y0.clone(), y0.clone());
     for i in 0..steps {
         let t = h * lit::<P::Scalar>(i as f64);
-        if let Err(e) = stepper.step(p, t, h, &y, &mut y_new, None) {
+        if let Err(e) = stepper.step(p, t, h, &y, &mut y_new) {
             panic!("{} failed at step {i}: {e}", stepper.info().name);
         }
         stepper.accept();
@@ -356,7 +356,7 @@ fn backward_euler_fixed_point_diverges_with_an_error() {
     let mut stepper = ImplicitRk::new(&tableau, &y0, ImplicitOptions::default());
     let mut y_new = [f64::NAN];
     // h L = 100 > 1: Z <- h f(y + Z) multiplies the update by -100 at every sweep.
-    let err = stepper.step(&StiffDecay, 0.0, 0.1, &y0, &mut y_new, None).unwrap_err();
+    let err = stepper.step(&StiffDecay, 0.0, 0.1, &y0, &mut y_new).unwrap_err();
     eprintln!("backward Euler + fixed point: {err}");
     match err {
         Error::SolverDiverged {
@@ -412,7 +412,7 @@ fn a_step_without_a_nearby_solution_is_an_error() {
     for solver in SOLVERS {
         let mut stepper = ImplicitRk::new(&tableau::<ImplicitMidpoint>(), &[1.0], options(solver));
         let mut y_new = [0.0];
-        let err = stepper.step(&Blowup, 0.0, 10.0, &[1.0], &mut y_new, None).unwrap_err();
+        let err = stepper.step(&Blowup, 0.0, 10.0, &[1.0], &mut y_new).unwrap_err();
         eprintln!("y' = y^2, h = 10, {solver:?}: {err}");
         let Error::SolverDiverged {
             iterations, residual, ..
@@ -424,10 +424,10 @@ fn a_step_without_a_nearby_solution_is_an_error() {
         assert!(residual.is_nan() || residual > 1e-10, "residual {residual:e}");
         // The failure leaves nothing behind: a shorter step from the same state (what
         // event location or a caller retrying does) gives what a fresh stepper gives.
-        stepper.step(&Blowup, 0.0, 0.1, &[1.0], &mut y_new, None).unwrap();
+        stepper.step(&Blowup, 0.0, 0.1, &[1.0], &mut y_new).unwrap();
         let mut fresh = [0.0];
         ImplicitRk::new(&tableau::<ImplicitMidpoint>(), &[1.0], options(solver))
-            .step(&Blowup, 0.0, 0.1, &[1.0], &mut fresh, None)
+            .step(&Blowup, 0.0, 0.1, &[1.0], &mut fresh)
             .unwrap();
         assert_eq!(y_new.map(f64::to_bits), fresh.map(f64::to_bits));
     }
@@ -714,14 +714,12 @@ fn allocations_per_run(solver: ImplicitSolver, steps: usize) -> usize {
     let mut stepper = ImplicitRk::new(&tableau::<GaussLegendre4>(), &y0, options(solver));
     let (mut y, mut y_new) = (y0, y0);
     // One step first: the Newton workspace is allocated on the first Newton step.
-    stepper.step(&Hairer, 0.0, 0.01, &y, &mut y_new, None).unwrap();
+    stepper.step(&Hairer, 0.0, 0.01, &y, &mut y_new).unwrap();
     Stepper::<Hairer>::accept(&mut stepper);
     std::mem::swap(&mut y, &mut y_new);
     let before = allocations();
     for i in 1..=steps {
-        stepper
-            .step(&Hairer, i as f64 * 0.01, 0.01, &y, &mut y_new, None)
-            .unwrap();
+        stepper.step(&Hairer, i as f64 * 0.01, 0.01, &y, &mut y_new).unwrap();
         Stepper::<Hairer>::accept(&mut stepper);
         std::mem::swap(&mut y, &mut y_new);
     }

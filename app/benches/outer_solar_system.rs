@@ -261,7 +261,7 @@ where
     for i in 0..steps {
         let t = i as f64 * h;
         let (from, to) = if i % 2 == 0 { (&a, &mut b) } else { (&b, &mut a) };
-        let _ = stepper.step(problem, t, h, from, to, None);
+        let _ = stepper.step(problem, t, h, from, to);
         stepper.accept();
     }
     if steps % 2 == 0 {

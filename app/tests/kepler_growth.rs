@@ -50,7 +50,7 @@ fn measure<St: Stepper<Kepler>>(stepper: &mut St, orbits: &[u64]) -> Measured {
     let mut n = 0u64;
     for &k in orbits {
         while n < k * steps_per_orbit {
-            stepper.step(&problem, n as f64 * h, h, &y, &mut y_new, None).unwrap();
+            stepper.step(&problem, n as f64 * h, h, &y, &mut y_new).unwrap();
             stepper.accept();
             y = y_new;
             n += 1;

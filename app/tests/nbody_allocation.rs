@@ -24,7 +24,7 @@ where
     let (mut y, mut y_new) = (*y0, *y0);
     let before = allocations();
     for i in 0..steps {
-        stepper.step(nb, i as f64 * 10.0, 10.0, &y, &mut y_new, None).unwrap();
+        stepper.step(nb, i as f64 * 10.0, 10.0, &y, &mut y_new).unwrap();
         stepper.accept();
         core::mem::swap(&mut y, &mut y_new);
     }

@@ -40,7 +40,7 @@ mod scene_structure {
         let j = jacobian_dual(&mut stepper, &p, 0.0, h, &y).unwrap();
         let mut y1 = y.clone();
         stepper.reset();
-        stepper.step(&p, lit(0.0), lit(h), &y, &mut y1, None).unwrap();
+        stepper.step(&p, lit(0.0), lit(h), &y, &mut y1).unwrap();
         let y1: Vec<f64> = y1.iter().map(|x| x.re).collect();
         // the structure matrix the scene's model supplies
         let defect = symplectic_defect(&j, &s.model.0, s.y0.as_slice(), &y1) / defect_bound(&j, 1.0);

@@ -49,9 +49,7 @@ where
     let (mut v_two, mut v_verlet) = (vec![0.0; n], vec![0.0; n]);
     for i in 0..=steps {
         if i > 0 {
-            verlet
-                .step(problem, (i - 1) as f64 * h, h, &y, &mut y_new, None)
-                .unwrap();
+            verlet.step(problem, (i - 1) as f64 * h, h, &y, &mut y_new).unwrap();
             verlet.accept();
             core::mem::swap(&mut y, &mut y_new);
             two.step(problem);

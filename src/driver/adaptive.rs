@@ -92,8 +92,8 @@ impl<T: Real, S: State<Scalar = T>> Driver<'_, T, S> {
             // A step too large for the implicit solver is rejected like a step too large for
             // the tolerance, and retried smaller; the solver's error is reported only if
             // the step then underflows.
-            let (err, solver_failure) = match stepper.step(p, t, h, &y, &mut y_new, Some(tol)) {
-                Ok(err) => (err.unwrap_or(T::zero()), None),
+            let (err, solver_failure) = match stepper.step(p, t, h, &y, &mut y_new) {
+                Ok(()) => (stepper.error_norm(&y, &y_new, tol).unwrap_or(T::zero()), None),
                 Err(e @ Error::SolverDiverged { .. }) => (T::zero(), Some(e)),
                 Err(e) => return Err(e),
             };

@@ -52,7 +52,7 @@ impl<T: Real, S: State<Scalar = T>> Driver<'_, T, S> {
             if !(theta > lo && theta < hi) {
                 theta = (lo + hi) * lit(0.5);
             }
-            stepper.step(p, t, theta * h, y, y_new, None)?;
+            stepper.step(p, t, theta * h, y, y_new)?;
             let gm = g(t + theta * h, y_new);
             if gm == T::zero() || (hi - lo) <= eps || (theta - previous).abs() <= eps {
                 break;

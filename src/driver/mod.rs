@@ -336,7 +336,7 @@ impl<'a, T: Real, S: State<Scalar = T>> Driver<'a, T, S> {
                 return Err(Error::Cancelled { t: to_f64(t), step: i });
             }
             let hi = if i + 1 == n && !exact { t_end - t } else { h };
-            stepper.step(p, t, hi, &y, &mut y_new, None)?;
+            stepper.step(p, t, hi, &y, &mut y_new)?;
             if !y_new.is_finite() {
                 return Err(Error::NonFinite { t: to_f64(t), step: i });
             }

@@ -1,7 +1,7 @@
 //! The Boris-Buneman method for charged particles, with the classic Cayley rotation or
 //! with the exact rotation angle.
 
-use super::{Counters, ParticleMethod, Stepper, Tolerances};
+use super::{Counters, ParticleMethod, Stepper};
 use crate::hamiltonian::halves_mut;
 use crate::magnetic::{cross, Charged, Lorentz};
 #[allow(unused_imports)]
@@ -53,7 +53,7 @@ pub enum BorisRotation {
 /// let y0 = [0.0, 0.0, 0.0, 1.0, 2.0, 3.0];
 /// let mut boris = Boris::new(BorisRotation::Cayley, &y0).unwrap();
 /// let mut y = [0.0; 6];
-/// boris.step(&Charged(Field), 0.0, 10.0, &y0, &mut y, None).unwrap(); // a huge step
+/// boris.step(&Charged(Field), 0.0, 10.0, &y0, &mut y).unwrap(); // a huge step
 /// let speed2 = |y: &[f64; 6]| y[3] * y[3] + y[4] * y[4] + y[5] * y[5];
 /// assert!((speed2(&y) - 14.0).abs() < 1e-13);
 /// ```
@@ -198,14 +198,13 @@ impl<L: Lorentz> Stepper<Charged<L>> for Boris<L::State> {
         h: L::Scalar,
         y: &L::State,
         y_new: &mut L::State,
-        _tol: Option<&Tolerances<L::Scalar>>,
-    ) -> Result<Option<L::Scalar>, Error> {
+    ) -> Result<(), Error> {
         let cached = self.cached;
         self.cached = false;
         y_new.copy_from(y);
         self.advance(p, t, h, y_new, cached)?;
         self.fresh = true;
-        Ok(None)
+        Ok(())
     }
 
     fn steps_in_place(&self) -> bool {

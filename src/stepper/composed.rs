@@ -1,7 +1,7 @@
 //! A composition over any symmetric second-order stepper (implicit midpoint, a
 //! Gauss-Legendre-like base, any user stepper): `S(gamma_s h) o ... o S(gamma_1 h)`.
 
-use super::{Counters, Stepper, Tolerances};
+use super::{Counters, Stepper};
 use crate::{lit, Error, MethodInfo, Problem, Splitting, State};
 
 /// The composition `S(gamma_s h) o ... o S(gamma_1 h)` of a base stepper `S`.
@@ -25,7 +25,7 @@ use crate::{lit, Error, MethodInfo, Problem, Splitting, State};
 /// let jump = Splitting::composition("triple_jump4", &[w, 1.0 - 2.0 * w, w], 4).unwrap();
 /// let mut s = Composed::new(&jump, base, &y0).unwrap();
 /// let mut y = [0.0; 2];
-/// s.step(&Oscillator, 0.0, 0.1, &y0, &mut y, None).unwrap();
+/// s.step(&Oscillator, 0.0, 0.1, &y0, &mut y).unwrap();
 /// assert!((y[0] - 0.1f64.cos()).abs() < 1e-7);
 /// ```
 pub struct Composed<P: Problem> {
@@ -80,26 +80,18 @@ impl<P: Problem> Stepper<P> for Composed<P> {
         None
     }
 
-    fn step(
-        &mut self,
-        p: &P,
-        t: P::Scalar,
-        h: P::Scalar,
-        y: &P::State,
-        y_new: &mut P::State,
-        _tol: Option<&Tolerances<P::Scalar>>,
-    ) -> Result<Option<P::Scalar>, Error> {
+    fn step(&mut self, p: &P, t: P::Scalar, h: P::Scalar, y: &P::State, y_new: &mut P::State) -> Result<(), Error> {
         // each substep reads the state from `scratch` and writes `y_new`
         let mut time = t;
         self.scratch.copy_from(y);
         for &g in &self.gamma {
             let tau = g * h;
-            self.base.step(p, time, tau, &self.scratch, y_new, None)?;
+            self.base.step(p, time, tau, &self.scratch, y_new)?;
             self.base.accept();
             self.scratch.copy_from(y_new);
             time += tau;
         }
-        Ok(None)
+        Ok(())
     }
 
     fn accept(&mut self) {}

@@ -1,7 +1,7 @@
 //! Euler-Cromer for charged particles: each velocity component is updated with the
 //! components already updated, then the positions with the new velocities.
 
-use super::{Counters, ParticleMethod, Stepper, Tolerances};
+use super::{Counters, ParticleMethod, Stepper};
 use crate::hamiltonian::halves_mut;
 use crate::magnetic::{Charged, Lorentz};
 use crate::{Error, MethodInfo, State};
@@ -31,7 +31,7 @@ use crate::{Error, MethodInfo, State};
 /// let y0 = [0.0, 0.0, 0.0, 1.0, 0.0, 0.0];
 /// let mut s = EulerCromer::new(&y0).unwrap();
 /// let mut y = [0.0; 6];
-/// s.step(&Charged(Field), 0.0, 0.1, &y0, &mut y, None).unwrap();
+/// s.step(&Charged(Field), 0.0, 0.1, &y0, &mut y).unwrap();
 /// // v_x is unchanged (omega x v has no x part while v_y = 0), then v_y uses the new v_x
 /// assert_eq!(&y[3..5], &[1.0, 0.1]);
 /// ```
@@ -76,8 +76,7 @@ impl<L: Lorentz> Stepper<Charged<L>> for EulerCromer<L::State> {
         h: L::Scalar,
         y: &L::State,
         y_new: &mut L::State,
-        _tol: Option<&Tolerances<L::Scalar>>,
-    ) -> Result<Option<L::Scalar>, Error> {
+    ) -> Result<(), Error> {
         y_new.copy_from(y);
         let (q, v) = halves_mut(y_new.as_mut_slice());
         let (_, a) = halves_mut(self.work.as_mut_slice());
@@ -94,7 +93,7 @@ impl<L: Lorentz> Stepper<Charged<L>> for EulerCromer<L::State> {
         for (q, &v) in q.iter_mut().zip(v.iter()) {
             *q += h * v;
         }
-        Ok(None)
+        Ok(())
     }
 
     fn accept(&mut self) {}

@@ -278,7 +278,7 @@ struct Extrapolation<S: State> {
 /// let mut gl4 = ImplicitRk::new(&tableau, &y0, ImplicitOptions::default());
 /// let (mut y, mut y_new) = (y0, y0);
 /// for i in 0..1000 {
-///     gl4.step(&Oscillator, i as f64 * 0.1, 0.1, &y, &mut y_new, None).unwrap();
+///     gl4.step(&Oscillator, i as f64 * 0.1, 0.1, &y, &mut y_new).unwrap();
 ///     Stepper::<Oscillator>::accept(&mut gl4);
 ///     std::mem::swap(&mut y, &mut y_new);
 /// }
@@ -669,15 +669,7 @@ impl<P: Problem> Stepper<P> for ImplicitRk<P::State> {
         self.error_order
     }
 
-    fn step(
-        &mut self,
-        p: &P,
-        t: P::Scalar,
-        h: P::Scalar,
-        y: &P::State,
-        y_new: &mut P::State,
-        tol: Option<&Tolerances<P::Scalar>>,
-    ) -> Result<Option<P::Scalar>, Error> {
+    fn step(&mut self, p: &P, t: P::Scalar, h: P::Scalar, y: &P::State, y_new: &mut P::State) -> Result<(), Error> {
         self.last_h = None;
         self.start(h);
         let stop = self.stop.for_step(y.as_slice());
@@ -692,9 +684,11 @@ impl<P: Problem> Stepper<P> for ImplicitRk<P::State> {
         }
         self.finish(h, y, y_new);
         self.last_h = Some(h);
-        let (Some(tol), Some(e)) = (tol, self.e.as_ref()) else {
-            return Ok(None);
-        };
+        Ok(())
+    }
+
+    fn error_norm(&mut self, y: &P::State, y_new: &P::State, tol: &Tolerances<P::Scalar>) -> Option<P::Scalar> {
+        let (h, e) = (self.last_h?, self.e.as_ref()?);
         let err = self.err.as_mut_slice();
         for m in 0..err.len() {
             let mut sum = P::Scalar::zero();
@@ -703,7 +697,7 @@ impl<P: Problem> Stepper<P> for ImplicitRk<P::State> {
             }
             err[m] = h * sum;
         }
-        Ok(Some(tol.rms(y, y_new, &self.err)))
+        Some(tol.rms(y, y_new, &self.err))
     }
 
     fn accept(&mut self) {

@@ -54,17 +54,15 @@ pub trait Stepper<P: Problem> {
     /// has no estimate (fixed steps only).
     fn error_order(&self) -> Option<usize>;
 
-    /// One step of size `h` from `(t, y)` into `y_new`. With `tol`, a method with an
-    /// error estimate returns its scaled norm (a step is acceptable when it is <= 1).
-    fn step(
-        &mut self,
-        p: &P,
-        t: P::Scalar,
-        h: P::Scalar,
-        y: &P::State,
-        y_new: &mut P::State,
-        tol: Option<&Tolerances<P::Scalar>>,
-    ) -> Result<Option<P::Scalar>, Error>;
+    /// One step of size `h` from `(t, y)` into `y_new`.
+    fn step(&mut self, p: &P, t: P::Scalar, h: P::Scalar, y: &P::State, y_new: &mut P::State) -> Result<(), Error>;
+
+    /// The last step's error estimate as a norm scaled by `tol` (the step is acceptable
+    /// when it is <= 1), given that step's `y` and `y_new`; `None` for a method without an
+    /// estimate. Asked by the adaptive driver only, so a fixed-step run never pays for it.
+    fn error_norm(&mut self, _y: &P::State, _y_new: &P::State, _tol: &Tolerances<P::Scalar>) -> Option<P::Scalar> {
+        None
+    }
 
     /// The last step's `y_new` becomes the current state.
     fn accept(&mut self);
@@ -111,7 +109,7 @@ pub trait Stepper<P: Problem> {
     /// let mut rk4 = ExplicitRk::<Rk4, [f64; 1]>::new(&[1.0]);
     /// Stepper::<Decay>::set_compensated(&mut rk4, true).unwrap();
     /// let mut y = [0.0];
-    /// rk4.step(&Decay, 0.0, 0.1, &[1.0], &mut y, None).unwrap();
+    /// rk4.step(&Decay, 0.0, 0.1, &[1.0], &mut y).unwrap();
     /// assert!((y[0] - (-0.1f64).exp()).abs() < 1e-7);
     /// ```
     fn set_compensated(&mut self, on: bool) -> Result<(), Error> {
@@ -137,16 +135,11 @@ impl<P: Problem, St: Stepper<P> + ?Sized> Stepper<P> for Box<St> {
         (**self).error_order()
     }
     #[inline]
-    fn step(
-        &mut self,
-        p: &P,
-        t: P::Scalar,
-        h: P::Scalar,
-        y: &P::State,
-        y_new: &mut P::State,
-        tol: Option<&Tolerances<P::Scalar>>,
-    ) -> Result<Option<P::Scalar>, Error> {
-        (**self).step(p, t, h, y, y_new, tol)
+    fn step(&mut self, p: &P, t: P::Scalar, h: P::Scalar, y: &P::State, y_new: &mut P::State) -> Result<(), Error> {
+        (**self).step(p, t, h, y, y_new)
+    }
+    fn error_norm(&mut self, y: &P::State, y_new: &P::State, tol: &Tolerances<P::Scalar>) -> Option<P::Scalar> {
+        (**self).error_norm(y, y_new, tol)
     }
     fn accept(&mut self) {
         (**self).accept()

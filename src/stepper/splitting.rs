@@ -4,7 +4,7 @@
 //! a run-time one).
 
 use super::compensated::CompensatedWord;
-use super::{Counters, Stepper, Tolerances};
+use super::{Counters, Stepper};
 use crate::flows::{Admits, General, ProblemClass, Splittable};
 use crate::hamiltonian::halves_mut;
 use crate::method::SplittingMethod;
@@ -176,7 +176,7 @@ pub struct WordStepper<W, S: State, C = ()> {
 /// }
 /// let mut verlet = SplittingStepper::<VelocityVerletKdk, [f64; 2]>::new(&[1.0, 0.0]).unwrap();
 /// let mut y = [0.0; 2];
-/// verlet.step(&Oscillator, 0.0, 0.1, &[1.0, 0.0], &mut y, None).unwrap();
+/// verlet.step(&Oscillator, 0.0, 0.1, &[1.0, 0.0], &mut y).unwrap();
 /// assert_eq!(y, [1.0 - 0.1 * 0.1 / 2.0, -0.1 * (1.0 + (1.0 - 0.005)) / 2.0]);
 /// ```
 pub type SplittingStepper<M, S, C = ()> = WordStepper<UnrolledWord<M, S>, S, C>;
@@ -194,7 +194,7 @@ pub type SplittingStepper<M, S, C = ()> = WordStepper<UnrolledWord<M, S>, S, C>;
 /// let kdk = Splitting::splitting("my_verlet", &[0.0, 1.0], &[0.5, 0.5], 2, false).unwrap();
 /// let mut s = RuntimeSplitting::new(&kdk, &[1.0, 0.0]).unwrap();
 /// let mut y = [0.0; 2];
-/// s.step(&Oscillator, 0.0, 0.1, &[1.0, 0.0], &mut y, None).unwrap();
+/// s.step(&Oscillator, 0.0, 0.1, &[1.0, 0.0], &mut y).unwrap();
 /// assert!((y[0] - 0.995).abs() < 1e-15);
 /// ```
 pub type RuntimeSplitting<S, C = ()> = WordStepper<RuntimeWord<S>, S, C>;
@@ -314,18 +314,10 @@ where
     }
 
     #[inline]
-    fn step(
-        &mut self,
-        p: &P,
-        t: P::Scalar,
-        h: P::Scalar,
-        y: &P::State,
-        y_new: &mut P::State,
-        _tol: Option<&Tolerances<P::Scalar>>,
-    ) -> Result<Option<P::Scalar>, Error> {
+    fn step(&mut self, p: &P, t: P::Scalar, h: P::Scalar, y: &P::State, y_new: &mut P::State) -> Result<(), Error> {
         if let Some(word) = self.compensated.as_mut() {
             self.counters.evaluations += word.step(p, t, h, y, y_new, &mut self.cache);
-            return Ok(None);
+            return Ok(());
         }
         // the cached force is valid for this step only if nothing ran since `accept`
         let cached = self.cached && self.word.fsal();
@@ -333,7 +325,7 @@ where
         y_new.copy_from(y);
         self.flows(p, t, h, y_new, cached);
         self.fresh = self.word.fsal();
-        Ok(None)
+        Ok(())
     }
 
     fn steps_in_place(&self) -> bool {

@@ -191,7 +191,7 @@ fn run<T: Real>(method: &Method, system: &TreeSystem<f64>, n: usize, h: f64) -> 
     let step: T = lit(h);
     for i in 0..n {
         let t = lit::<T>(T0) + lit::<T>(i as f64) * step;
-        stepper.step(&problem, t, step, &y, &mut next, None)?;
+        stepper.step(&problem, t, step, &y, &mut next)?;
         stepper.accept();
         core::mem::swap(&mut y, &mut next);
     }

@@ -56,7 +56,7 @@ where
     St: Stepper<P> + ?Sized,
 {
     stepper.reset();
-    stepper.step(problem, t, h, y, out, None)?;
+    stepper.step(problem, t, h, y, out)?;
     if out.is_finite() {
         Ok(())
     } else {

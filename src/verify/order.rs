@@ -246,7 +246,7 @@ where
     let h = lit::<P::Scalar>(span) / lit::<P::Scalar>(n);
     let (mut y, mut next) = (y0.clone(), y0.clone());
     for i in 0..n as usize {
-        stepper.step(problem, t0 + lit::<P::Scalar>(i as f64) * h, h, &y, &mut next, None)?;
+        stepper.step(problem, t0 + lit::<P::Scalar>(i as f64) * h, h, &y, &mut next)?;
         stepper.accept();
         core::mem::swap(&mut y, &mut next);
     }

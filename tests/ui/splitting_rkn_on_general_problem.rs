@@ -27,5 +27,5 @@ impl Hamiltonian for Relativistic {
 fn main() {
     let mut s = SplittingStepper::<RknOnly, [f64; 2]>::new(&[1.0, 0.0]).unwrap();
     let mut y = [0.0; 2];
-    s.step(&Relativistic, 0.0, 0.1, &[1.0, 0.0], &mut y, None).unwrap();
+    s.step(&Relativistic, 0.0, 0.1, &[1.0, 0.0], &mut y).unwrap();
 }

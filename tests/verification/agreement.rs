@@ -124,7 +124,7 @@ fn defects_scale_with_the_scalars_epsilon() {
         let j = jacobian_dual(&mut stepper, &p, 0.0f32, 1.0, &y).unwrap();
         let mut y1 = y;
         stepper.reset();
-        stepper.step(&p, lit(0.0), lit(1.0), &y, &mut y1, None).unwrap();
+        stepper.step(&p, lit(0.0), lit(1.0), &y, &mut y1).unwrap();
         let defect = symplectic_defect(&j, &Canonical, &y.map(|x| x.re), &y1.map(|x| x.re));
         let bound = defect_bound(&j, SYMPLECTIC_FACTOR);
         assert_eq!(

@@ -25,7 +25,7 @@ fn implicit_solvers_converge_the_derivative_at_and_near_equilibria() {
                     let j = jacobian_dual(&mut stepper, &p, 0.0, h, &yd).unwrap();
                     let mut y1 = yd;
                     stepper.reset();
-                    stepper.step(&p, lit(0.0), lit(h), &yd, &mut y1, None).unwrap();
+                    stepper.step(&p, lit(0.0), lit(h), &yd, &mut y1).unwrap();
                     let defect = symplectic_defect(&j, &Canonical, &y, &y1.map(|x| x.re));
                     assert!(
                         defect <= defect_bound(&j, SYMPLECTIC_FACTOR),

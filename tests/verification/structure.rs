@@ -75,7 +75,7 @@ fn defects(name: &str, y: [f64; 6], h: f64) -> (f64, f64) {
     let j = jacobian_dual(&mut stepper, &p, 0.0, h, &yd).unwrap();
     let mut y1 = yd;
     stepper.reset();
-    stepper.step(&p, lit(0.0), lit(h), &yd, &mut y1, None).unwrap();
+    stepper.step(&p, lit(0.0), lit(h), &yd, &mut y1).unwrap();
     let y1 = y1.map(|x| x.re);
     let unit = defect_bound(&j, 1.0);
     (

@@ -59,7 +59,7 @@ where
     let j = jacobian_dual(&mut stepper, &P::default(), 0.0, h, &yd)?;
     let mut y1 = yd;
     stepper.reset();
-    stepper.step(&P::default(), lit(0.0), lit(h), &yd, &mut y1, None)?;
+    stepper.step(&P::default(), lit(0.0), lit(h), &yd, &mut y1)?;
     let y1 = y1.map(|x| x.re);
     Ok(symplectic_defect(&j, &Canonical, &y, &y1) / defect_bound(&j, 1.0))
 }
