@@ -21,7 +21,7 @@ mod state;
 pub mod stepper;
 pub mod verify;
 
-pub use driver::{Driver, Interrupted, Solution, Stats, StepControl, StopEvent};
+pub use driver::{hermite, Driver, Interrupted, Solution, Stats, StepControl, StopEvent, DENSE_ORDER};
 pub use error::Error;
 pub use families::{Families, SplittingSource};
 
@@ -82,6 +82,8 @@ pub mod guide {
     pub mod hamiltonian {}
     #[doc = include_str!("../docs/verification.md")]
     pub mod verification {}
+    #[doc = include_str!("../docs/output-and-events.md")]
+    pub mod output_and_events {}
 }
 
 /// The everyday items in one import.

@@ -157,12 +157,14 @@ fn methods_json_lists_the_catalog() {
             "fsal",
             "symplectic",
             "symmetric",
+            "dense_order",
         ] {
             assert!(m.get(key).is_some(), "{key} missing in {m}");
         }
     }
     let rk4 = list.iter().find(|m| m["name"] == "rk4").unwrap();
     assert_eq!(rk4["order"], 4);
+    assert_eq!(rk4["dense_order"], 3);
     assert!(rk4["embedded_order"].is_null());
     let dop853 = list.iter().find(|m| m["name"] == "dop853").unwrap();
     assert_eq!(

@@ -1,6 +1,6 @@
 //! The adaptive loop: embedded error estimate, PI step-size controller, initial step.
 
-use super::{Driver, Recorder, Stats, StopEvent};
+use super::{Driver, Recorder, SaveAt, Stats, StopEvent};
 #[allow(unused_imports)]
 use crate::real::ops::*;
 use crate::{lit, to_f64, Error, Problem, Real, State, Stepper, Tolerances};
@@ -69,6 +69,7 @@ impl<T: Real, S: State<Scalar = T>> Driver<'_, T, S> {
         let mut last_rejected = false;
         let mut g_old = self.stop.as_ref().map(|g| g(t0, y0));
         let mut since_record = 0;
+        let mut save = self.save_at.as_deref().map(|times| SaveAt::new(times, t0, y0));
         loop {
             if (t - t_end) * dir >= T::zero() {
                 return Ok(None);
@@ -99,17 +100,18 @@ impl<T: Real, S: State<Scalar = T>> Driver<'_, T, S> {
             };
             if solver_failure.is_none() && err <= T::one() && y_new.is_finite() {
                 if let Some(event) = self.locate(p, stepper, t, h, &y, &mut y_new, &mut g_old)? {
-                    stats.steps += 1;
-                    stepper.accept();
-                    out.record(event.t, &event.y, p.energy(event.t, &event.y))?;
-                    return Ok(Some(event));
+                    return self.end_at(p, stepper, t, &y, event, save.as_mut(), out, stats);
+                }
+                let t_next = if last { t_end } else { t + h };
+                if let Some(save) = save.as_mut() {
+                    save.record_step(p, stepper, t, t_next, &y, &y_new, out, stats)?;
                 }
                 stepper.accept();
                 core::mem::swap(&mut y, &mut y_new);
-                t = if last { t_end } else { t + h };
+                t = t_next;
                 stats.steps += 1;
                 since_record += 1;
-                if since_record == self.every || last {
+                if save.is_none() && (since_record == self.every || last) {
                     out.record(t, &y, p.energy(t, &y))?;
                     since_record = 0;
                 }

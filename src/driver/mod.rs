@@ -5,9 +5,12 @@
 //! recorded so far together with the error.
 
 mod adaptive;
+mod dense;
 mod event;
 mod record;
 
+use dense::SaveAt;
+pub use dense::{hermite, DENSE_ORDER};
 pub use record::{Interrupted, Recorder, Solution, Stats, StopEvent};
 
 #[allow(unused_imports)]
@@ -70,6 +73,7 @@ pub struct Driver<'a, T: Real, S> {
     stop: Option<StopFn<'a, T, S>>,
     cancel: Option<&'a AtomicBool>,
     compensated: bool,
+    save_at: Option<Vec<T>>,
 }
 
 impl<'a, T: Real, S: State<Scalar = T>> Driver<'a, T, S> {
@@ -96,12 +100,41 @@ impl<'a, T: Real, S: State<Scalar = T>> Driver<'a, T, S> {
             stop: None,
             cancel: None,
             compensated: false,
+            save_at: None,
         }
     }
 
     /// Record every `n` accepted steps (the first and last states are always recorded).
     pub fn every(mut self, n: u64) -> Self {
         self.every = n.max(1);
+        self
+    }
+
+    /// Record the state at exactly these times (and nowhere else), interpolated inside the
+    /// steps by the continuous extension ([`hermite`], order [`DENSE_ORDER`]); replaces the
+    /// records every N steps. The times must be finite, inside the span and strictly
+    /// ordered in the run's direction (checked when the run starts). A time that falls on
+    /// a step's end records that state as computed; a stop condition still ends the run,
+    /// with its event as the last record.
+    ///
+    /// ```
+    /// use stormer::{catalog::Rk4, Driver, ExplicitRk, Problem};
+    /// struct Decay;
+    /// impl Problem for Decay {
+    ///     type Scalar = f64;
+    ///     type State = [f64; 1];
+    ///     fn rhs(&self, _t: f64, y: &[f64; 1], dy: &mut [f64; 1]) { dy[0] = -y[0]; }
+    /// }
+    /// let mut rk4 = ExplicitRk::<Rk4, _>::new(&[1.0]);
+    /// let times = [0.25, 0.5, 0.75];
+    /// let solution = Driver::fixed(0.1).save_at(times).run(&Decay, &mut rk4, 0.0, &[1.0], 1.0).unwrap();
+    /// assert_eq!(solution.t, times);
+    /// for (t, y) in solution.t.iter().zip(&solution.y) {
+    ///     assert!((y[0] - (-t).exp()).abs() < 1e-6);
+    /// }
+    /// ```
+    pub fn save_at(mut self, times: impl IntoIterator<Item = T>) -> Self {
+        self.save_at = Some(times.into_iter().collect());
         self
     }
 
@@ -234,7 +267,10 @@ impl<'a, T: Real, S: State<Scalar = T>> Driver<'a, T, S> {
                     Ok(())
                 }
             })
-            .and_then(|_| out.record(t0, y0, p.energy(t0, y0)));
+            .and_then(|_| match &self.save_at {
+                Some(times) if !SaveAt::<T, S>::records_start(times, t0) => Ok(()),
+                _ => out.record(t0, y0, p.energy(t0, y0)),
+            });
         if let Err(e) = setup {
             return Err((stats, e));
         }
@@ -258,9 +294,18 @@ impl<'a, T: Real, S: State<Scalar = T>> Driver<'a, T, S> {
 
     /// A run that would compute nothing is an error, not an empty success: an empty span,
     /// or a fixed step longer than the span (it would be shortened to the span, or rounded
-    /// to zero steps, and the user would not get the step they asked for). The run checks
-    /// this first; a caller may check it before it creates its outputs.
+    /// to zero steps, and the user would not get the step they asked for); so are output
+    /// times ([`Driver::save_at`]) outside the span or out of order. The run checks this
+    /// first; a caller may check it before it creates its outputs.
     pub fn check_span(&self, t0: T, t_end: T) -> Result<(), Error> {
+        self.check_steps(t0, t_end)?;
+        match &self.save_at {
+            Some(times) => Self::check_save_at(times, t0, t_end),
+            None => Ok(()),
+        }
+    }
+
+    fn check_steps(&self, t0: T, t_end: T) -> Result<(), Error> {
         let span = t_end - t0;
         if span == T::zero() {
             return Err(Error::invalid(
@@ -325,11 +370,12 @@ impl<'a, T: Real, S: State<Scalar = T>> Driver<'a, T, S> {
         }
         let n = n as u64;
         let mut y = y0.clone();
-        if self.stop.is_none() && stepper.steps_in_place() {
+        if self.stop.is_none() && self.save_at.is_none() && stepper.steps_in_place() {
             return self.fixed_in_place(p, stepper, t0, &mut y, t_end, h, n, exact, out, stats);
         }
         let mut y_new = y0.clone();
         let mut g_old = self.stop.as_ref().map(|g| g(t0, y0));
+        let mut save = self.save_at.as_deref().map(|times| SaveAt::new(times, t0, y0));
         for i in 0..n {
             let t = t0 + lit::<T>(i as f64) * h;
             if self.cancelled(i) {
@@ -341,24 +387,57 @@ impl<'a, T: Real, S: State<Scalar = T>> Driver<'a, T, S> {
                 return Err(Error::NonFinite { t: to_f64(t), step: i });
             }
             if let Some(event) = self.locate(p, stepper, t, hi, &y, &mut y_new, &mut g_old)? {
-                stats.steps += 1;
-                stepper.accept();
-                out.record(event.t, &event.y, p.energy(event.t, &event.y))?;
-                return Ok(Some(event));
+                return self.end_at(p, stepper, t, &y, event, save.as_mut(), out, stats);
             }
-            stepper.accept();
-            core::mem::swap(&mut y, &mut y_new);
-            stats.steps += 1;
             let t_next = if i + 1 == n && !exact {
                 t_end
             } else {
                 t0 + lit::<T>((i + 1) as f64) * h
             };
-            if (i + 1) % self.every == 0 || i + 1 == n {
+            if let Some(save) = save.as_mut() {
+                save.record_step(p, stepper, t, t_next, &y, &y_new, out, stats)?;
+            }
+            stepper.accept();
+            core::mem::swap(&mut y, &mut y_new);
+            stats.steps += 1;
+            if save.is_none() && ((i + 1) % self.every == 0 || i + 1 == n) {
                 out.record(t_next, &y, p.energy(t_next, &y))?;
             }
         }
         Ok(None)
+    }
+
+    /// The end of a run at a located stop event inside the step from `(t, y)`: the output
+    /// times before it (with `save_at`), then the event as the last record.
+    #[allow(clippy::too_many_arguments)]
+    fn end_at<P, St, R>(
+        &self,
+        p: &P,
+        stepper: &mut St,
+        t: T,
+        y: &S,
+        event: StopEvent<T, S>,
+        save: Option<&mut SaveAt<'_, T, S>>,
+        out: &mut R,
+        stats: &mut Stats,
+    ) -> Result<Option<StopEvent<T, S>>, Error>
+    where
+        P: Problem<Scalar = T, State = S>,
+        St: Stepper<P> + ?Sized,
+        R: Recorder<T, S> + ?Sized,
+    {
+        let mut recorded = false;
+        if let Some(save) = save {
+            // the stepper's last step is the one that located the event: from `y` to it
+            save.record_step(p, stepper, t, event.t, y, &event.y, out, stats)?;
+            recorded = save.last_recorded() == Some(event.t);
+        }
+        stats.steps += 1;
+        stepper.accept();
+        if !recorded {
+            out.record(event.t, &event.y, p.energy(event.t, &event.y))?;
+        }
+        Ok(Some(event))
     }
 
     /// The fixed-step loop of a stepper that steps in place (no stop condition).

@@ -200,6 +200,12 @@ where
         })
     }
 
+    /// `k[0]` is `f(t, y)` after every step; the last stage of a FSAL tableau is
+    /// `f(t + h, y_new)` (to the rounding of a compensated step's `y_new`).
+    fn end_slopes(&self) -> [Option<&P::State>; 2] {
+        [self.k.first(), self.k.last().filter(|_| self.fsal)]
+    }
+
     fn accept(&mut self) {
         if let Some(sum) = self.compensated.as_mut() {
             // the last stage was evaluated at the uncompensated y_new: no FSAL reuse

@@ -67,6 +67,14 @@ pub trait Stepper<P: Problem> {
     /// The last step's `y_new` becomes the current state.
     fn accept(&mut self);
 
+    /// The slopes `f(t, y)` and `f(t + h, y_new)` of the last step (before
+    /// [`Stepper::accept`]) where the stepper has them already (a Runge-Kutta method's
+    /// first stage, a FSAL method's last), so that the driver's continuous extension
+    /// evaluates only the ones missing. `[None, None]` by default.
+    fn end_slopes(&self) -> [Option<&P::State>; 2] {
+        [None, None]
+    }
+
     /// True when [`Stepper::step_in_place`] is implemented: the fixed-step driver then
     /// steps the state in place (a splitting updates `q` and `p` where they are; copying
     /// the state into `y_new` first and back after costs as much as the step itself on a
@@ -143,6 +151,9 @@ impl<P: Problem, St: Stepper<P> + ?Sized> Stepper<P> for Box<St> {
     }
     fn accept(&mut self) {
         (**self).accept()
+    }
+    fn end_slopes(&self) -> [Option<&P::State>; 2] {
+        (**self).end_slopes()
     }
     fn steps_in_place(&self) -> bool {
         (**self).steps_in_place()

@@ -49,6 +49,9 @@ struct Row<'a> {
     fsal: bool,
     symplectic: bool,
     symmetric: bool,
+    /// The order of the states between steps (`--save-at`): the driver's cubic Hermite
+    /// interpolant for every method today (docs/output-and-events.md).
+    dense_order: usize,
     /// The names other libraries give it (`RK45`, `DP5`, `leapfrog`...), accepted by
     /// `--method`.
     aliases: Vec<&'static str>,
@@ -65,6 +68,7 @@ fn json(m: &MethodInfo) -> Row<'_> {
         fsal: m.flags.fsal,
         symplectic: m.flags.symplectic,
         symmetric: m.flags.symmetric,
+        dense_order: stormer::DENSE_ORDER,
         aliases: aliases_of(&m.name).collect(),
     }
 }

@@ -10,6 +10,7 @@ mod plot;
 mod progress;
 mod run;
 mod sample;
+mod save_at;
 mod scene;
 mod study;
 mod tour;

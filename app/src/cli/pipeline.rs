@@ -34,6 +34,8 @@ pub struct Options {
     pub t_end: Option<f64>,
     /// A record every this many steps (the first and last are always recorded).
     pub every: Option<u64>,
+    /// Records at exactly these times instead (interpolated between steps).
+    pub save_at: Option<Vec<f64>>,
     /// How implicit methods solve their stage equations.
     pub implicit: ImplicitOptions,
     /// Compensated (Kahan) summation of each step's increment.
@@ -49,6 +51,7 @@ impl Default for Options {
             steps: Steps::Fixed(None),
             t_end: None,
             every: None,
+            save_at: None,
             implicit: ImplicitOptions::fixed_point(),
             compensated: false,
             cancel: None,
@@ -66,6 +69,7 @@ pub struct SceneRun<'s, S: Scene> {
     control: StepControl<f64>,
     t_end: f64,
     every: u64,
+    save_at: Option<Vec<f64>>,
     compensated: bool,
     cancel: Option<&'static AtomicBool>,
 }
@@ -151,6 +155,7 @@ impl<'s, S: Scene> SceneRun<'s, S> {
             control,
             t_end: options.t_end.unwrap_or(setup.run.t_end),
             every: options.every.unwrap_or(setup.run.every),
+            save_at: options.save_at.clone(),
             compensated: options.compensated,
             cancel: options.cancel,
         })
@@ -174,7 +179,11 @@ impl<'s, S: Scene> SceneRun<'s, S> {
     /// Refuses a run that would compute nothing (an empty span, a step longer than the
     /// span), before the caller creates its outputs.
     pub fn check_span(&self) -> Result<(), Error> {
-        self.driver(1).check_span(self.t0(), self.t_end)
+        let mut driver = self.driver(1);
+        if let Some(times) = &self.save_at {
+            driver = driver.save_at(times.iter().copied());
+        }
+        driver.check_span(self.t0(), self.t_end)
     }
 
     /// The driver of this run, recording every `every` steps.
@@ -195,27 +204,35 @@ impl<'s, S: Scene> SceneRun<'s, S> {
 
     /// Runs, handing each record to `out` as it is made.
     pub fn run_into<R: Recorder<f64, S::State> + ?Sized>(&mut self, out: &mut R) -> Outcome<S> {
-        self.run_recording(self.every, out)
+        self.run_recording(self.every, true, out)
     }
 
     /// Runs keeping of the records only what they tell (the outcome's track).
     pub fn measure(&mut self) -> Outcome<S> {
-        self.run_recording(self.every, &mut Nothing)
+        self.run_recording(self.every, true, &mut Nothing)
     }
 
     /// Runs with no records but the first and the last (a study's reference and timing
     /// runs): what the outcome's track tells is of those two.
     pub fn run_quietly(&mut self) -> Outcome<S> {
-        self.run_recording(u64::MAX, &mut Nothing)
+        self.run_recording(u64::MAX, false, &mut Nothing)
     }
 
-    fn run_recording<R: Recorder<f64, S::State> + ?Sized>(&mut self, every: u64, out: &mut R) -> Outcome<S> {
+    /// Runs recording every `every` steps, or at the output times when `at_times` and the
+    /// run has them.
+    fn run_recording<R>(&mut self, every: u64, at_times: bool, out: &mut R) -> Outcome<S>
+    where
+        R: Recorder<f64, S::State> + ?Sized,
+    {
         let mut tracking = Tracking {
             setup: self.setup,
             track: Track::default(),
             out,
         };
-        let (driver, setup) = (self.driver(every), self.setup);
+        let (mut driver, setup) = (self.driver(every), self.setup);
+        if let Some(times) = self.save_at.as_ref().filter(|_| at_times) {
+            driver = driver.save_at(times.iter().copied());
+        }
         let result = driver.run_into(
             &setup.model,
             &mut *self.stepper,

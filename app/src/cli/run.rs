@@ -28,6 +28,10 @@ pub struct RunArgs {
     /// [default: the scene's].
     #[arg(long, value_name = "N")]
     pub every: Option<u64>,
+    /// Write records at exactly these times instead, interpolated between steps (cubic
+    /// Hermite, order 3): START:STEP:END or a comma list.
+    #[arg(long, value_name = "TIMES", conflicts_with = "every", allow_hyphen_values = true)]
+    pub save_at: Option<String>,
     /// Output CSV file [default: out/SCENE-METHOD.csv].
     #[arg(long, short, value_name = "FILE.csv")]
     pub out: Option<PathBuf>,
@@ -113,8 +117,9 @@ struct Runner<'a> {
 
 impl Runner<'_> {
     /// The pipeline's options from the arguments.
-    fn options(&self) -> Options {
+    fn options(&self) -> Result<Options, Error> {
         let args = self.args;
+        let save_at = args.save_at.as_deref().map(super::save_at::parse).transpose()?;
         let mut implicit = match args.solver {
             Some(SolverArg::Newton) => ImplicitOptions::newton(),
             Some(SolverArg::FixedPoint) | None => ImplicitOptions::fixed_point(),
@@ -132,14 +137,15 @@ impl Runner<'_> {
         } else {
             Steps::Fixed(args.dt)
         };
-        Options {
+        Ok(Options {
             steps,
             t_end: args.t_end,
             every: args.every,
+            save_at,
             implicit,
             compensated: args.compensated,
             cancel: Some(super::interrupt::flag()),
-        }
+        })
     }
 }
 
@@ -150,7 +156,7 @@ impl SceneVisitor for Runner<'_> {
         let args = self.args;
         let method_name = args.method.as_deref().unwrap_or(&setup.run.method);
         let method = choice::resolve(method_name, args.alpha)?;
-        let options = self.options();
+        let options = self.options()?;
         let mut run = SceneRun::new(&setup, &method, &options)?;
         let default_path =
             PathBuf::from("out").join(format!("{}-{}.csv", file_safe(&setup.name), file_safe(method.name())));
