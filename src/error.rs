@@ -43,13 +43,16 @@ pub enum Error {
         /// The rejected step size.
         h: f64,
     },
-    /// The adaptive driver hit its step budget.
-    #[error("gave up at t = {t} after {steps} steps (max_steps)")]
+    /// The run would need, or has taken, more steps than its limit (`Driver::max_steps`).
+    #[error("{}", too_many_steps(*t, *steps, *needed))]
     TooManySteps {
-        /// Time reached.
+        /// Time reached (the start time for a run refused before its first step).
         t: f64,
-        /// Steps taken.
+        /// The limit.
         steps: u64,
+        /// The steps a fixed-step run would need; `None` for an adaptive run that reached
+        /// the limit on its way.
+        needed: Option<f64>,
     },
     /// A method's data are not a valid method.
     #[error("invalid method {name}: {reason}")]
@@ -104,6 +107,27 @@ pub enum Error {
         /// Why.
         reason: String,
     },
+}
+
+fn too_many_steps(t: f64, limit: u64, needed: Option<f64>) -> String {
+    match needed {
+        Some(n) => {
+            // a count in full where it is one, else three digits: never 9.999999999999999e299
+            let n = match n {
+                n if n <= 1e15 => format!("{n:.0}"),
+                n if n.is_finite() => format!("{n:.3e}"),
+                _ => "over 1e308".into(),
+            };
+            format!(
+                "the run needs {n} steps, more than the limit of {limit} steps (max_steps); \
+                 raise the limit or take longer steps"
+            )
+        }
+        None => format!(
+            "gave up at t = {t} after {limit} steps, the limit (max_steps); raise the limit, \
+             loosen the tolerances or shorten the span"
+        ),
+    }
 }
 
 fn suggest(names: &[String]) -> String {

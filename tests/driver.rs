@@ -129,8 +129,43 @@ fn a_run_beyond_the_step_budget_is_refused_before_it_starts() {
         .max_steps(10)
         .run(&Decay, &mut rk4(&[1.0]), 0.0, &[1.0], 1.0)
         .unwrap_err();
-    assert!(matches!(err.error, Error::TooManySteps { .. }), "{:?}", err.error);
-    assert_eq!(err.solution.t, [0.0]);
+    let needed = Error::TooManySteps {
+        t: 0.0,
+        steps: 10,
+        needed: Some(1000.0),
+    };
+    assert_eq!(err.error, needed);
+    assert_eq!(
+        err.error.to_string(),
+        "the run needs 1000 steps, more than the limit of 10 steps (max_steps); raise the limit or take longer steps"
+    );
+    assert!(err.solution.t.is_empty(), "refused before the first record");
+    // an adaptive run stops where it reaches the limit, with what it computed
+    let tol = Tolerances::new(1e-12, 1e-12);
+    let err = Driver::adaptive(tol)
+        .max_steps(5)
+        .run(
+            &Decay,
+            &mut ExplicitRk::<DormandPrince5, _>::new(&[1.0]),
+            0.0,
+            &[1.0],
+            1.0,
+        )
+        .unwrap_err();
+    let Error::TooManySteps {
+        t,
+        steps: 5,
+        needed: None,
+    } = err.error
+    else {
+        panic!("{:?}", err.error)
+    };
+    assert!(t > 0.0 && t < 1.0);
+    assert!(err
+        .error
+        .to_string()
+        .starts_with(&format!("gave up at t = {t} after 5 steps, the limit (max_steps)")));
+    assert_eq!(err.solution.stats.steps, 5);
 }
 
 #[test]

@@ -1843,3 +1843,43 @@ fn compensated_summation_keeps_round_off_down_on_a_long_run() {
         "refused before any output"
     );
 }
+
+/// A run past the step limit said `gave up at t = 0 after 100000000 steps (max_steps);
+/// stopped after 0 steps`; now it names the steps needed and the flag that raises the limit,
+/// and the flag works.
+#[test]
+fn the_step_limit_names_the_steps_needed_and_its_flag() {
+    let dir = workdir("max-steps");
+    for (args, needed) in [
+        (["--dt", "1e-300", "--t-end", "1"], "needs 1.000e300 steps"),
+        (["--dt", "0.1", "--t-end", "1e300"], "needs 1.000e301 steps"),
+        (
+            ["--dt", "0.001", "--t-end", "200"],
+            "needs 200000 steps, more than the limit of 100000 steps",
+        ),
+    ] {
+        let mut all = vec!["run", "pendulum", "--max-steps", "100000"];
+        all.extend(args);
+        let out = stormer(&dir, &all);
+        assert_error(&out, needed);
+        assert!(
+            stderr(&out).contains("(the limit is --max-steps N)"),
+            "{}",
+            stderr(&out)
+        );
+    }
+    assert!(!dir.join("out").exists(), "refused before any output");
+    assert_ok(&stormer(
+        &dir,
+        &[
+            "run",
+            "pendulum",
+            "--dt",
+            "0.001",
+            "--t-end",
+            "200",
+            "--max-steps",
+            "200000",
+        ],
+    ));
+}

@@ -78,6 +78,7 @@ impl<T: Real, S: State<Scalar = T>> Driver<'_, T, S> {
                 return Err(Error::TooManySteps {
                     t: to_f64(t),
                     steps: stats.steps,
+                    needed: None,
                 });
             }
             if self.cancelled(stats.steps + stats.rejected) {

@@ -317,6 +317,13 @@ impl<'a, T: Real, S: State<Scalar = T>> Driver<'a, T, S> {
             ));
         }
         match self.control {
+            StepControl::Fixed(h) if h.is_finite() && h != T::zero() && (span / h).abs() > lit(self.max_steps as f64) => {
+                Err(Error::TooManySteps {
+                    t: to_f64(t0),
+                    steps: self.max_steps,
+                    needed: Some(to_f64((span / h).abs()).ceil()),
+                })
+            }
             StepControl::Fixed(h) if h.is_finite() && h.abs() > span.abs() => Err(Error::invalid(
                 "step size",
                 format!(
@@ -366,6 +373,7 @@ impl<'a, T: Real, S: State<Scalar = T>> Driver<'a, T, S> {
             return Err(Error::TooManySteps {
                 t: to_f64(t0),
                 steps: self.max_steps,
+                needed: Some(n),
             });
         }
         let n = n as u64;

@@ -36,6 +36,8 @@ pub struct Options {
     pub every: Option<u64>,
     /// Records at exactly these times instead (interpolated between steps).
     pub save_at: Option<Vec<f64>>,
+    /// The step limit (the driver's default when `None`).
+    pub max_steps: Option<u64>,
     /// How implicit methods solve their stage equations.
     pub implicit: ImplicitOptions,
     /// Compensated (Kahan) summation of each step's increment.
@@ -52,6 +54,7 @@ impl Default for Options {
             t_end: None,
             every: None,
             save_at: None,
+            max_steps: None,
             implicit: ImplicitOptions::fixed_point(),
             compensated: false,
             cancel: None,
@@ -70,6 +73,7 @@ pub struct SceneRun<'s, S: Scene> {
     t_end: f64,
     every: u64,
     save_at: Option<Vec<f64>>,
+    max_steps: Option<u64>,
     compensated: bool,
     cancel: Option<&'static AtomicBool>,
 }
@@ -156,6 +160,7 @@ impl<'s, S: Scene> SceneRun<'s, S> {
             t_end: options.t_end.unwrap_or(setup.run.t_end),
             every: options.every.unwrap_or(setup.run.every),
             save_at: options.save_at.clone(),
+            max_steps: options.max_steps,
             compensated: options.compensated,
             cancel: options.cancel,
         })
@@ -189,6 +194,9 @@ impl<'s, S: Scene> SceneRun<'s, S> {
     /// The driver of this run, recording every `every` steps.
     fn driver(&self, every: u64) -> Driver<'s, f64, S::State> {
         let mut driver = Driver::with(self.control).every(every);
+        if let Some(n) = self.max_steps {
+            driver = driver.max_steps(n);
+        }
         if let Some(stop) = self.setup.model.stop() {
             let model = &self.setup.model;
             driver = driver.stop_when(move |t, y| (stop.g)(model, t, y));

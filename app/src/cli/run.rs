@@ -32,6 +32,10 @@ pub struct RunArgs {
     /// Hermite, order 3): START:STEP:END or a comma list.
     #[arg(long, value_name = "TIMES", conflicts_with = "every", allow_hyphen_values = true)]
     pub save_at: Option<String>,
+    /// Give up beyond this many steps [default: 100000000]; a fixed-step run that would
+    /// need more is refused before it starts.
+    #[arg(long, value_name = "N")]
+    pub max_steps: Option<u64>,
     /// Output CSV file [default: out/SCENE-METHOD.csv].
     #[arg(long, short, value_name = "FILE.csv")]
     pub out: Option<PathBuf>,
@@ -104,6 +108,17 @@ fn check(args: &RunArgs) -> Result<(), Error> {
     Ok(())
 }
 
+/// What the command line adds to the library's step-limit error: the flag that raises it.
+const MAX_STEPS_HINT: &str = " (the limit is --max-steps N)";
+
+/// The library's error, with the flag that changes what it names where there is one.
+fn flag_hint(e: Error) -> anyhow::Error {
+    match e {
+        Error::TooManySteps { .. } => anyhow!("{e}{MAX_STEPS_HINT}"),
+        e => e.into(),
+    }
+}
+
 /// Runs a scene.
 pub fn run(args: &RunArgs) -> anyhow::Result<()> {
     check(args)?;
@@ -142,6 +157,7 @@ impl Runner<'_> {
             t_end: args.t_end,
             every: args.every,
             save_at,
+            max_steps: args.max_steps,
             implicit,
             compensated: args.compensated,
             cancel: Some(super::interrupt::flag()),
@@ -167,7 +183,7 @@ impl SceneVisitor for Runner<'_> {
             .map(Path::new)
             .collect();
         super::output::refuse_overwriting(&path, &inputs)?;
-        run.check_span()?;
+        run.check_span().map_err(flag_hint)?;
         let mut csv = CsvRecorder::create(&path, &setup)?;
         csv.progress = Some(super::progress::Progress::new(run.t0(), run.t_end()));
         let outcome = run.run_into(&mut csv);
@@ -204,7 +220,12 @@ impl SceneVisitor for Runner<'_> {
                 Err(_) if matches!(e, Error::Io { .. }) => String::new(),
                 Err(f) => format!("; {f}"),
             };
-            return Err(anyhow!("{e}; stopped after {} steps{kept}", stats.steps));
+            let hint = if matches!(e, Error::TooManySteps { .. }) {
+                MAX_STEPS_HINT
+            } else {
+                ""
+            };
+            return Err(anyhow!("{e}{hint}; stopped after {} steps{kept}", stats.steps));
         }
         flushed?;
         let summary = summary(
