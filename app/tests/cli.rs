@@ -1883,3 +1883,25 @@ fn the_step_limit_names_the_steps_needed_and_its_flag() {
         ],
     ));
 }
+
+/// Yoshida's triple jump with its weights in closed form, cube roots included, is read,
+/// checked and measured at its order.
+#[test]
+fn a_composition_in_closed_form_with_cube_roots_measures_its_order() {
+    let dir = workdir("closed-form");
+    let file = "name = \"triple_jump_closed_form\"\nfamily = \"composition\"\norder = 4\n\
+                gamma = [\"1/(2 - 2^(1/3))\", \"1 - 2/(2 - 2^(1/3))\", \"1/(2 - cbrt(2))\"]\n";
+    std::fs::write(dir.join("tj.toml"), file).unwrap();
+    let out = stormer(&dir, &["verify", "tj.toml"]);
+    assert_ok(&out);
+    assert!(
+        stdout(&out).contains("measured order   4.00 (agrees with the declared 4)"),
+        "{}",
+        stdout(&out)
+    );
+    std::fs::write(dir.join("neg.toml"), file.replace("2 - cbrt(2)", "2 - (-2)^(1/3)")).unwrap();
+    assert_error(
+        &stormer(&dir, &["verify", "neg.toml"]),
+        "gamma[3] = \"1/(2 - (-2)^(1/3))\": a fractional power needs a base > 0",
+    );
+}

@@ -1,14 +1,14 @@
 //! Coefficient expressions: the arithmetic a method's coefficients are written in.
 //!
 //! `"1/6"`, `"- 3 / 73"`, `"1/2 - sqrt(3)/6"`, `"0.526001519587677318785587544488e-01"`,
-//! `"2 ^ -3"`. The grammar, loosest binding first:
+//! `"2 ^ -3"`, `"1/(2 - 2^(1/3))"`, `"cbrt(2)"`. The grammar, loosest binding first:
 //!
 //! ```text
 //! expr    = term (("+" | "-") term)*
 //! term    = unary (("*" | "/") unary)*
 //! unary   = ("+" | "-") unary | power
-//! power   = primary (("^" | "**") unary)?        the exponent must be an integer
-//! primary = number | "(" expr ")" | "sqrt" "(" expr ")"
+//! power   = primary (("^" | "**") unary)?        a fractional exponent needs a base > 0
+//! primary = number | "(" expr ")" | ("sqrt" | "cbrt") "(" expr ")"
 //! ```
 //!
 //! Whitespace is allowed anywhere between tokens, so the stringified token streams a
@@ -48,8 +48,9 @@ fn error(message: impl Into<String>, offset: usize) -> ExprError {
 /// Accepted: integers (`"3"`, `"1_000"`), decimals with optional exponent (`"5.2e-2"`,
 /// `"1."`, `".5"`, `"0.526001519587677318785587544488e-01"`), Rust numeric suffixes
 /// (`"1.0f64"`, `"2f64"`, `"3u32"`; `f32` literals are still read as `f64`), `+ - * /`,
-/// unary minus and plus, parentheses, `sqrt(x)`, and `x ^ n` or `x ** n` with an integer
-/// exponent `n`. Whitespace is allowed anywhere between tokens.
+/// unary minus and plus, parentheses, `sqrt(x)`, `cbrt(x)`, and `x ^ e` or `x ** e`: any
+/// integer exponent, or a fractional one of a positive base (`2^(1/3)`, the closed forms of
+/// Yoshida's and Suzuki's weights). Whitespace is allowed anywhere between tokens.
 ///
 /// Every decimal literal is converted as a whole by Rust's correctly rounded
 /// `str::parse::<f64>`, so a literal yields the `f64` nearest to its exact value.
@@ -57,7 +58,7 @@ fn error(message: impl Into<String>, offset: usize) -> ExprError {
 /// # Errors
 ///
 /// Syntax errors, unknown names, `"division by zero"`, `"sqrt of a negative number"`, a
-/// non-integer exponent, and any other non-finite intermediate or final result. The error
+/// fractional power of a base <= 0, and any other non-finite intermediate or final result. The error
 /// carries the byte offset in `src` of the offending token.
 pub fn eval_coefficient(src: &str) -> Result<f64, ExprError> {
     let mut parser = Parser { src, pos: 0, depth: 0 };
@@ -218,15 +219,29 @@ impl Parser<'_> {
         self.skip_ws();
         let exponent_at = self.pos;
         let exponent = self.unary()?;
-        if exponent.fract() != 0.0 || exponent.abs() > f64::from(i32::MAX) {
-            return Err(error("the exponent must be an integer", exponent_at));
+        if exponent.fract() == 0.0 && exponent.abs() <= f64::from(i32::MAX) {
+            // Checked: an integer within the range of i32.
+            let n = exponent as i32;
+            if base == 0.0 && n < 0 {
+                return Err(error("division by zero", op));
+            }
+            return finite(base.powi(n), op);
         }
-        // Checked above: an integer within the range of i32.
-        let n = exponent as i32;
-        if base == 0.0 && n < 0 {
-            return Err(error("division by zero", op));
+        if base <= 0.0 {
+            return Err(error(
+                format!("a fractional power needs a base > 0, got {base} ^ {exponent}"),
+                exponent_at,
+            ));
         }
-        finite(base.powi(n), op)
+        // thirds and halves through the correctly rounded roots: 2^(1/3) is cbrt(2) to the bit
+        let root = |k: f64, r: fn(f64) -> f64| {
+            let m = exponent * k;
+            (m.fract() == 0.0 && m.abs() <= 64.0).then(|| r(base).powi(m as i32))
+        };
+        let value = root(2.0, f64::sqrt)
+            .or_else(|| root(3.0, f64::cbrt))
+            .unwrap_or_else(|| base.powf(exponent));
+        finite(value, op)
     }
 
     fn primary(&mut self) -> Result<f64, ExprError> {
@@ -245,17 +260,22 @@ impl Parser<'_> {
             }
             Some(c) if c.is_ascii_alphabetic() || c == b'_' => {
                 let name = self.identifier();
-                if name != "sqrt" {
-                    return Err(error(
-                        format!(
-                            "unknown name `{name}` (only numbers, + - * / ^, parentheses and sqrt(...) are allowed)"
-                        ),
-                        start,
-                    ));
-                }
+                let cube = match name {
+                    "sqrt" => false,
+                    "cbrt" => true,
+                    _ => {
+                        return Err(error(
+                            format!(
+                                "unknown name `{name}` (only numbers, + - * / ^, parentheses, sqrt(...) and \
+                                 cbrt(...) are allowed)"
+                            ),
+                            start,
+                        ))
+                    }
+                };
                 self.skip_ws();
                 if self.peek() != Some(b'(') {
-                    return Err(self.unexpected("'(' after sqrt"));
+                    return Err(self.unexpected(if cube { "'(' after cbrt" } else { "'(' after sqrt" }));
                 }
                 let open = self.pos;
                 self.enter()?;
@@ -263,6 +283,9 @@ impl Parser<'_> {
                 let value = self.expr()?;
                 self.close(open)?;
                 self.leave();
+                if cube {
+                    return Ok(value.cbrt());
+                }
                 if value < 0.0 {
                     return Err(error("sqrt of a negative number", start));
                 }
@@ -428,7 +451,20 @@ mod tests {
         assert!(same(ok("-2^2"), -4.0));
         assert!(same(ok("2^3^2"), 512.0));
         assert!(same(ok("(1/2)^2 * 4"), 1.0));
-        assert_eq!(err("2^0.5").message, "the exponent must be an integer");
+        assert_eq!(ok("2^(1/3)").to_bits(), 2f64.cbrt().to_bits());
+        assert_eq!(ok("cbrt(2)").to_bits(), 2f64.cbrt().to_bits());
+        assert_eq!(ok("2^0.5").to_bits(), 2f64.sqrt().to_bits());
+        assert_eq!(ok("4^(2/3)").to_bits(), 4f64.cbrt().powi(2).to_bits());
+        assert_eq!(ok("cbrt(-8)"), -2.0);
+        assert!(same(ok("2^0.3"), 2f64.powf(0.3)));
+        assert!(same(ok("1/(2 - 2^(1/3))"), 1.0 / (2.0 - 2f64.cbrt())));
+        let e = err("(-2)^(1/3)");
+        assert_eq!(
+            e.message,
+            "a fractional power needs a base > 0, got -2 ^ 0.3333333333333333"
+        );
+        assert_eq!(e.offset, 5);
+        assert_eq!(err("0^0.5").message, "a fractional power needs a base > 0, got 0 ^ 0.5");
         assert_eq!(err("0^-1").message, "division by zero");
         assert_eq!(err("2^99999").message, "result too large for f64");
     }
