@@ -98,7 +98,9 @@ pub mod prelude {
 #[doc(hidden)]
 pub mod __private {
     pub use crate::flows::{General, QuadraticOnly, Splittable};
-    pub use crate::method::{ButcherMethod, ExplicitMethod, Flags, SplittingData, SplittingMethod, TableauData};
+    pub use crate::method::{
+        ButcherMethod, DenseData, ExplicitMethod, Flags, SplittingData, SplittingMethod, TableauData,
+    };
     pub use crate::real::lit;
     pub use crate::stepper::{ExplicitRk, ImplicitOptions, ImplicitRk, Stepper};
     pub use crate::{Problem, Real, State, Tableau};

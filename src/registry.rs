@@ -329,6 +329,8 @@ pub fn theta(alpha: f64) -> Result<Tableau, Error> {
         embedded_order: None,
         b_hat3: None,
         tolerance: None,
+        dense: None,
+        dense_order: None,
     };
     Tableau::new(format!("theta({alpha})"), &spec)
 }

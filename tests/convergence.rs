@@ -240,6 +240,8 @@ fn with_weights(name: &str, b: Vec<f64>, order: usize, tolerance: Option<f64>) -
             embedded_order: None,
             b_hat3: None,
             tolerance,
+            dense: None,
+            dense_order: None,
         },
     )
     .unwrap()

@@ -686,6 +686,8 @@ fn lobatto_iiib4_with_the_catalog_pair_put_back_grows_its_step_without_limit() {
         embedded_order: Some(2),
         b_hat3: None,
         tolerance: None,
+        dense: None,
+        dense_order: None,
     };
     let put_back = Tableau::new("lobatto_iiib4-catalog-pair", &spec).unwrap();
     let p = Oscillator::<f64>(PhantomData);

@@ -273,6 +273,10 @@ def declaration(m):
         out += [f"        embedded_order: {m['embedded_order']},"]
     if "b_hat3" in m:
         out += array("b_hat3: ", lit(m["b_hat3"]), 8)
+    if "dense" in m:
+        out += ["        dense: ["]
+        out += [line for row in m["dense"] for line in array("", lit(row), 12)]
+        out += ["        ],", f"        dense_order: {m['dense_order']},"]
     return out + ["    }", "}"]
 
 

@@ -165,6 +165,8 @@ fn methods_json_lists_the_catalog() {
     let rk4 = list.iter().find(|m| m["name"] == "rk4").unwrap();
     assert_eq!(rk4["order"], 4);
     assert_eq!(rk4["dense_order"], 3);
+    let dp5 = list.iter().find(|m| m["name"] == "dormand_prince5").unwrap();
+    assert_eq!(dp5["dense_order"], 4);
     assert!(rk4["embedded_order"].is_null());
     let dop853 = list.iter().find(|m| m["name"] == "dop853").unwrap();
     assert_eq!(

@@ -66,7 +66,7 @@ impl fmt::Display for Condition {
 }
 
 /// Elementary weights of every tree of a forest up to some order, for one stage matrix.
-struct Weights {
+pub(crate) struct Weights {
     stages: usize,
     /// `Φ(t)` for tree index `t`, at `t * stages ..`.
     phi: Vec<f64>,
@@ -77,7 +77,7 @@ struct Weights {
 impl Weights {
     /// Computes `Φ` for all trees of order `<= max_order`, each from its subtrees' `a Φ`.
     /// `a` is read row-major `s x s`; missing entries count as zero, extra ones are ignored.
-    fn compute(forest: &Forest, a: &[f64], s: usize, max_order: usize) -> Weights {
+    pub(crate) fn compute(forest: &Forest, a: &[f64], s: usize, max_order: usize) -> Weights {
         let entry = |i: usize, j: usize| a.get(i * s + j).copied().unwrap_or(0.0);
         let matrix: Vec<f64> = (0..s * s).map(|k| entry(k / s, k % s)).collect();
         let count = forest.end_of(max_order);
@@ -118,7 +118,7 @@ impl Weights {
     }
 
     /// `(got, scale)`: `sum_i w_i Φ_i(t)` and `sum_i |w_i| |Φ|_i(t)`.
-    fn contract(&self, t: usize, w: &[f64]) -> (f64, f64) {
+    pub(crate) fn contract(&self, t: usize, w: &[f64]) -> (f64, f64) {
         let s = self.stages;
         let phi = &self.phi[t * s..(t + 1) * s];
         let abs_phi = &self.abs_phi[t * s..(t + 1) * s];

@@ -44,6 +44,7 @@
 #![forbid(unsafe_code)]
 
 pub mod conditions;
+pub mod dense;
 pub mod expr;
 mod forest;
 pub mod number;
@@ -53,6 +54,7 @@ pub mod tableau;
 pub mod tree;
 
 pub use conditions::{achieved_order, order_conditions, Condition, DEFAULT_TOLERANCE, MAX_ORDER};
+pub use dense::dense_conditions;
 pub use expr::{eval_coefficient, ExprError};
 pub use splitting::{
     validate_composition, validate_splitting, CompositionSpec, Flow, Op, SplitCondition, SplittingError, SplittingSpec,

@@ -5,6 +5,7 @@
 use std::fmt;
 
 use crate::conditions::{order_conditions, Condition, DEFAULT_TOLERANCE, MAX_ORDER};
+use crate::dense::dense_conditions;
 use crate::number::format_distinct;
 
 /// A Butcher tableau as declared, before validation.
@@ -28,6 +29,12 @@ pub struct TableauSpec {
     pub b_hat3: Option<Vec<f64>>,
     /// Relative tolerance of the checks; `None` means [`DEFAULT_TOLERANCE`].
     pub tolerance: Option<f64>,
+    /// The method's own dense output: row `i` holds the coefficients `d_i1 .. d_im` of
+    /// `b_i(theta) = sum_k d_ik theta^k`, so that `y(t + theta h) = y + h sum_i b_i(theta)
+    /// k_i` ([`crate::dense`]).
+    pub dense: Option<Vec<Vec<f64>>>,
+    /// The declared order of the dense output (required exactly when `dense` is given).
+    pub dense_order: Option<usize>,
 }
 
 /// Properties derived from the coefficients (never declared).
@@ -65,6 +72,10 @@ pub struct ValidTableau {
     pub order: usize,
     /// Verified order of `b_hat`.
     pub embedded_order: Option<usize>,
+    /// The dense-output coefficients, `s` rows of `m` powers.
+    pub dense: Option<Vec<Vec<f64>>>,
+    /// Verified order of the dense output.
+    pub dense_order: Option<usize>,
     /// Derived properties.
     pub flags: Flags,
     /// Every condition checked, all holding: those of `b`, then `b_hat`, then `b_hat3`.
@@ -130,6 +141,17 @@ pub enum TableauError {
         /// The declared tolerance.
         tolerance: f64,
     },
+    /// `dense` is given without `dense_order`, or the other way round.
+    DenseWithoutOrder,
+    /// The dense output does not end at the step: `b_i(1) = sum_k d_ik` differs from `b_i`.
+    DenseEnd {
+        /// The stage `i`.
+        stage: usize,
+        /// `b_i(1)`.
+        at_one: f64,
+        /// `b_i`.
+        b: f64,
+    },
 }
 
 impl fmt::Display for TableauError {
@@ -144,6 +166,17 @@ impl fmt::Display for TableauError {
             } => write!(
                 f,
                 "a has {found} rows but the tableau has {expected} stages (one per entry of b)"
+            ),
+            TableauError::Shape {
+                what: "dense",
+                index: Some(row),
+                expected,
+                found,
+            } => write!(
+                f,
+                "row {} of dense has {found} coefficients but the first has {expected}: every stage's \
+                 polynomial lists the same powers theta^1 .. theta^m",
+                row + 1
             ),
             TableauError::Shape {
                 what,
@@ -179,8 +212,10 @@ impl fmt::Display for TableauError {
                 )
             }
             TableauError::OrderCondition { weights, condition } => {
-                if *weights != "b" {
-                    write!(f, "embedded ({weights}) ")?;
+                match *weights {
+                    "b" => {}
+                    "dense" => f.write_str("dense output: ")?,
+                    _ => write!(f, "embedded ({weights}) ")?,
                 }
                 write!(f, "{condition}")
             }
@@ -191,6 +226,13 @@ impl fmt::Display for TableauError {
             TableauError::MissingEmbeddedOrder => f.write_str("b_hat is given without embedded_order"),
             TableauError::EmbeddedOrderWithoutWeights => f.write_str("embedded_order is given without b_hat"),
             TableauError::ZeroOrder => f.write_str("an order must be at least 1"),
+            TableauError::DenseWithoutOrder => f.write_str("dense and dense_order go together: give both or neither"),
+            TableauError::DenseEnd { stage, at_one, b } => write!(
+                f,
+                "the dense output does not end at the step: b_{}(1) = {at_one} but b_{} = {b}",
+                stage + 1,
+                stage + 1
+            ),
             TableauError::InvalidTolerance { tolerance } => {
                 write!(f, "tolerance {tolerance} is not a finite non-negative number")
             }
@@ -225,6 +267,11 @@ pub fn validate(spec: &TableauSpec) -> Result<ValidTableau, TableauError> {
         (None, Some(_)) => return Err(TableauError::EmbeddedOrderWithoutWeights),
         (Some(_), Some(p)) => check_order(p)?,
         (None, None) => {}
+    }
+    match (&spec.dense, spec.dense_order) {
+        (Some(_), Some(q)) => check_order(q)?,
+        (None, None) => {}
+        _ => return Err(TableauError::DenseWithoutOrder),
     }
     let tol = match spec.tolerance {
         None => DEFAULT_TOLERANCE,
@@ -269,6 +316,9 @@ pub fn validate(spec: &TableauSpec) -> Result<ValidTableau, TableauError> {
     if let Some(b_hat3) = &spec.b_hat3 {
         conditions.extend(checked_conditions(&a, b_hat3, "b_hat3", 3, tol)?);
     }
+    if let (Some(dense), Some(q)) = (&spec.dense, spec.dense_order) {
+        conditions.extend(checked_dense(&a, &spec.b, dense, q, tol)?);
+    }
 
     let flags = derive_flags(&a, &spec.b, &c, tol);
     Ok(ValidTableau {
@@ -280,6 +330,8 @@ pub fn validate(spec: &TableauSpec) -> Result<ValidTableau, TableauError> {
         b_hat3: spec.b_hat3.clone(),
         order: spec.order,
         embedded_order: spec.embedded_order,
+        dense: spec.dense.clone(),
+        dense_order: spec.dense_order,
         flags,
         conditions,
     })
@@ -347,6 +399,52 @@ fn checked_conditions(
     match conditions.iter().find(|c| !c.holds()) {
         Some(failing) => Err(TableauError::OrderCondition {
             weights,
+            condition: failing.clone(),
+        }),
+        None => Ok(conditions),
+    }
+}
+
+/// The dense output's shape (one row per stage, every row as long), finiteness, its end
+/// `b(1) = b`, and its continuous conditions up to `order`, or the first failure.
+fn checked_dense(
+    a: &[f64],
+    b: &[f64],
+    dense: &[Vec<f64>],
+    order: usize,
+    tol: f64,
+) -> Result<Vec<Condition>, TableauError> {
+    let s = b.len();
+    let m = dense.first().map_or(0, Vec::len);
+    if dense.len() != s {
+        return Err(TableauError::Shape {
+            what: "dense",
+            index: None,
+            expected: s,
+            found: dense.len(),
+        });
+    }
+    if let Some((row, r)) = dense.iter().enumerate().find(|(_, r)| r.len() != m || m == 0) {
+        return Err(TableauError::Shape {
+            what: "dense",
+            index: Some(row),
+            expected: m.max(1),
+            found: r.len(),
+        });
+    }
+    let flat: Vec<f64> = dense.iter().flatten().copied().collect();
+    check_finite("dense", &flat)?;
+    for (stage, (row, &bi)) in dense.iter().zip(b).enumerate() {
+        let at_one: f64 = row.iter().sum();
+        let scale: f64 = row.iter().map(|d| d.abs()).sum();
+        if !close(at_one, bi, scale, tol) {
+            return Err(TableauError::DenseEnd { stage, at_one, b: bi });
+        }
+    }
+    let conditions = dense_conditions(a, dense, order, tol);
+    match conditions.iter().find(|c| !c.holds()) {
+        Some(failing) => Err(TableauError::OrderCondition {
+            weights: "dense",
             condition: failing.clone(),
         }),
         None => Ok(conditions),

@@ -78,6 +78,9 @@ impl<'d, T: Real, S: State<Scalar = T>> SaveAt<'d, T, S> {
         while let Some(&s) = self.times.get(self.next).filter(|&&s| inside(s)) {
             if s == end {
                 out.record(s, y_new, p.energy(s, y_new))?;
+            } else if stepper.interpolate((s - t) / h, y, &mut self.at) {
+                // the method's own continuous extension
+                out.record(s, &self.at, p.energy(s, &self.at))?;
             } else {
                 // the slopes only for a step with a time inside it
                 if !ready {

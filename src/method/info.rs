@@ -27,8 +27,23 @@ pub struct TableauData {
     pub b_hat3: Option<&'static [f64]>,
     /// The tolerance factor of the order-condition checks, when the declaration set one.
     pub tolerance: Option<f64>,
+    /// The method's own dense output, when the declaration gives one.
+    pub dense: Option<DenseData>,
     /// Flags derived from the data at compile time.
     pub flags: Flags,
+}
+
+/// A method's own dense output as compiled in: `y(t + theta h) = y + h sum_i b_i(theta) k_i`
+/// with `b_i(theta) = sum_k d[i][k - 1] theta^k`, checked against the continuous order
+/// conditions up to `order` (`stormer_order::dense`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DenseData {
+    /// Its order between steps.
+    pub order: usize,
+    /// The highest power of theta, `m`.
+    pub powers: usize,
+    /// The coefficients, `s x m` row-major: stage `i`'s at `i * m ..`.
+    pub d: &'static [f64],
 }
 
 /// One row of the method table (`stormer methods`).
@@ -44,6 +59,9 @@ pub struct MethodInfo {
     pub stages: usize,
     /// Embedded order, if the method estimates its error.
     pub embedded_order: Option<usize>,
+    /// Order of the method's own dense output, if it has one (else the driver's cubic
+    /// Hermite interpolant serves, order [`crate::DENSE_ORDER`]).
+    pub dense_order: Option<usize>,
     /// Derived flags.
     pub flags: Flags,
 }
@@ -57,6 +75,7 @@ impl TableauData {
             order: self.order,
             stages: self.stages,
             embedded_order: self.embedded_order,
+            dense_order: self.dense.map(|d| d.order),
             flags: self.flags,
         }
     }

@@ -45,6 +45,7 @@ impl SplittingData {
             order: self.order,
             stages: self.stages,
             embedded_order: None,
+            dense_order: None,
             flags: self.flags,
         }
     }
@@ -263,6 +264,7 @@ impl Splitting {
             order: self.order(),
             stages: self.stages(),
             embedded_order: None,
+            dense_order: None,
             flags: self.flags(),
         }
     }

@@ -68,6 +68,10 @@ impl Tableau {
             embedded_order: data.embedded_order,
             b_hat3: data.b_hat3.map(<[f64]>::to_vec),
             tolerance: data.tolerance,
+            dense: data
+                .dense
+                .map(|d| d.d.chunks(d.powers.max(1)).map(<[f64]>::to_vec).collect()),
+            dense_order: data.dense.map(|d| d.order),
         };
         Tableau::new(data.name, &spec)
     }
@@ -132,6 +136,11 @@ impl Tableau {
     pub fn b_hat3(&self) -> Option<&[f64]> {
         self.valid.b_hat3.as_deref()
     }
+    /// The method's own dense output: per stage, the coefficients of theta^1 .. theta^m
+    /// of `b_i(theta)`, checked to [`Tableau::info`]'s `dense_order`.
+    pub fn dense(&self) -> Option<&[Vec<f64>]> {
+        self.valid.dense.as_deref()
+    }
     /// Every order condition that was checked, with its residual.
     pub fn conditions(&self) -> &[Condition] {
         &self.valid.conditions
@@ -155,6 +164,8 @@ impl Tableau {
             embedded_order: None,
             b_hat3: None,
             tolerance: self.tolerance,
+            dense: None,
+            dense_order: None,
         };
         Some(Tableau::new(format!("{} (embedded)", self.name), &spec))
     }
@@ -166,6 +177,7 @@ impl Tableau {
             order: self.order(),
             stages: self.stages(),
             embedded_order: self.embedded_order(),
+            dense_order: self.valid.dense_order,
             flags: self.flags(),
         }
     }
@@ -195,6 +207,8 @@ struct MethodFile {
     b: Vec<Coefficient>,
     b_hat: Option<Vec<Coefficient>>,
     b_hat3: Option<Vec<Coefficient>>,
+    dense: Option<Vec<Vec<Coefficient>>>,
+    dense_order: Option<usize>,
     tolerance: Option<f64>,
     explicit: Option<bool>,
     fsal: Option<bool>,
@@ -253,6 +267,16 @@ impl MethodFile {
                 .transpose()
                 .map_err(fail)?,
             tolerance: self.tolerance,
+            dense: self
+                .dense
+                .as_deref()
+                .map(|rows| {
+                    let row = |(i, r): (usize, &Vec<Coefficient>)| vector(r, &format!("dense[{}]", i + 1));
+                    rows.iter().enumerate().map(row).collect::<Result<Vec<_>, _>>()
+                })
+                .transpose()
+                .map_err(fail)?,
+            dense_order: self.dense_order,
         };
         let tableau = Tableau::new(self.name.clone(), &spec).map_err(|e| match e {
             Error::InvalidMethod { reason, .. } => fail(reason),

@@ -5,7 +5,9 @@
 use super::compensated::CompensatedCombination;
 use super::{Counters, Stepper, Tolerances};
 use crate::method::ExplicitMethod;
-use crate::{Error, MethodInfo, Problem, State};
+#[allow(unused_imports)]
+use crate::real::ops::*;
+use crate::{lit, Error, MethodInfo, Problem, State};
 
 /// The stages of an explicit tableau, as [`ExplicitStepper`] runs them: compiled
 /// ([`Unrolled`], the code `tableau!` generates) or read at run time
@@ -27,6 +29,10 @@ pub trait ExplicitStages<S: State>: Clone + core::fmt::Debug {
     fn error(&self, h: S::Scalar, k: &[S], err: &mut S);
     /// `err = h sum_i (b_i - b_hat3_i) k_i`.
     fn error3(&self, h: S::Scalar, k: &[S], err: &mut S);
+    /// The number of powers `m` of the method's own dense output, `None` without one.
+    fn dense_powers(&self) -> Option<usize>;
+    /// The dense output's coefficient of theta^(power + 1) in `b_stage(theta)`.
+    fn dense_coefficient(&self, stage: usize, power: usize) -> f64;
 }
 
 /// The stages `tableau!` generated for `M`, with its coefficients converted to the
@@ -66,6 +72,14 @@ impl<M: ExplicitMethod, S: State> ExplicitStages<S> for Unrolled<M, S> {
     #[inline(always)]
     fn error3(&self, h: S::Scalar, k: &[S], err: &mut S) {
         M::error3(&self.co, h, k, err);
+    }
+
+    fn dense_powers(&self) -> Option<usize> {
+        M::DATA.dense.map(|d| d.powers)
+    }
+
+    fn dense_coefficient(&self, stage: usize, power: usize) -> f64 {
+        M::DATA.dense.map_or(0.0, |d| d.d[stage * d.powers + power])
     }
 }
 
@@ -204,6 +218,23 @@ where
     /// `f(t + h, y_new)` (to the rounding of a compensated step's `y_new`).
     fn end_slopes(&self) -> [Option<&P::State>; 2] {
         [self.k.first(), self.k.last().filter(|_| self.fsal)]
+    }
+
+    /// `y + h sum_i b_i(theta) k_i` with the method's own `b_i(theta)`.
+    fn interpolate(&self, theta: P::Scalar, y: &P::State, out: &mut P::State) -> bool {
+        let Some(powers) = self.stages.dense_powers() else {
+            return false;
+        };
+        out.copy_from(y);
+        for (i, k) in self.k.iter().enumerate() {
+            let (mut weight, mut power) = (P::Scalar::zero(), P::Scalar::one());
+            for m in 0..powers {
+                power *= theta;
+                weight += lit::<P::Scalar>(self.stages.dense_coefficient(i, m)) * power;
+            }
+            out.axpy(self.last_h * weight, k);
+        }
+        true
     }
 
     fn accept(&mut self) {

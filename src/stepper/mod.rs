@@ -75,6 +75,14 @@ pub trait Stepper<P: Problem> {
         [None, None]
     }
 
+    /// The method's own continuous extension of the last step (before
+    /// [`Stepper::accept`]): `out = y(t + theta h)` from the step's start `y`, of order
+    /// `info().dense_order`; false, with `out` untouched, for a method without one (the
+    /// driver then interpolates itself, [`crate::hermite`]).
+    fn interpolate(&self, _theta: P::Scalar, _y: &P::State, _out: &mut P::State) -> bool {
+        false
+    }
+
     /// True when [`Stepper::step_in_place`] is implemented: the fixed-step driver then
     /// steps the state in place (a splitting updates `q` and `p` where they are; copying
     /// the state into `y_new` first and back after costs as much as the step itself on a
@@ -154,6 +162,9 @@ impl<P: Problem, St: Stepper<P> + ?Sized> Stepper<P> for Box<St> {
     }
     fn end_slopes(&self) -> [Option<&P::State>; 2] {
         (**self).end_slopes()
+    }
+    fn interpolate(&self, theta: P::Scalar, y: &P::State, out: &mut P::State) -> bool {
+        (**self).interpolate(theta, y, out)
     }
     fn steps_in_place(&self) -> bool {
         (**self).steps_in_place()

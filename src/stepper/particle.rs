@@ -78,6 +78,7 @@ impl ParticleMethod {
             order,
             stages: 1,
             embedded_order: None,
+            dense_order: None,
             flags,
         }
     }

@@ -88,6 +88,14 @@ impl<S: State> ExplicitStages<S> for RuntimeStages<S> {
         self.tableau.info()
     }
 
+    fn dense_powers(&self) -> Option<usize> {
+        self.tableau.dense().map(|d| d.first().map_or(0, Vec::len))
+    }
+
+    fn dense_coefficient(&self, stage: usize, power: usize) -> f64 {
+        self.tableau.dense().map_or(0.0, |d| d[stage][power])
+    }
+
     fn weights(&self) -> &[f64] {
         self.tableau.b()
     }

@@ -49,8 +49,9 @@ struct Row<'a> {
     fsal: bool,
     symplectic: bool,
     symmetric: bool,
-    /// The order of the states between steps (`--save-at`): the driver's cubic Hermite
-    /// interpolant for every method today (docs/output-and-events.md).
+    /// The order of the states between steps (`--save-at`): the method's own dense output
+    /// where it has one, else the driver's cubic Hermite interpolant
+    /// (docs/output-and-events.md).
     dense_order: usize,
     /// The names other libraries give it (`RK45`, `DP5`, `leapfrog`...), accepted by
     /// `--method`.
@@ -68,7 +69,7 @@ fn json(m: &MethodInfo) -> Row<'_> {
         fsal: m.flags.fsal,
         symplectic: m.flags.symplectic,
         symmetric: m.flags.symmetric,
-        dense_order: stormer::DENSE_ORDER,
+        dense_order: m.dense_order.unwrap_or(stormer::DENSE_ORDER),
         aliases: aliases_of(&m.name).collect(),
     }
 }

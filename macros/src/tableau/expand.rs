@@ -277,6 +277,15 @@ pub fn expand(method: &Method) -> TokenStream {
     let (a, b, c) = (floats(&t.a), floats(&t.b), floats(&t.c));
     let b_hat = optional_floats(t.b_hat.as_ref());
     let b_hat3 = optional_floats(t.b_hat3.as_ref());
+    let dense = match (&t.dense, t.dense_order) {
+        (Some(rows), Some(q)) => {
+            let q = Literal::usize_unsuffixed(q);
+            let m = Literal::usize_unsuffixed(rows.first().map_or(0, Vec::len));
+            let d = floats(&rows.concat());
+            quote!(::stormer::__private::Some(::stormer::__private::DenseData { order: #q, powers: #m, d: #d }))
+        }
+        _ => quote!(::stormer::__private::None),
+    };
     let stormer_order::Flags {
         explicit,
         fsal,
@@ -315,6 +324,7 @@ pub fn expand(method: &Method) -> TokenStream {
                 b_hat: #b_hat,
                 b_hat3: #b_hat3,
                 tolerance: #tolerance,
+                dense: #dense,
                 flags: ::stormer::__private::Flags {
                     explicit: #explicit,
                     fsal: #fsal,

@@ -11,7 +11,7 @@ use syn::{bracketed, Expr, Ident, LitStr, Token};
 use crate::declaration::{self, parse_order, push, Header, Keyed, Spanned};
 
 /// The keys a tableau accepts, in the order the documentation lists them.
-pub const KEYS: [&str; 9] = [
+pub const KEYS: [&str; 11] = [
     "name",
     "order",
     "c",
@@ -20,6 +20,8 @@ pub const KEYS: [&str; 9] = [
     "b_hat",
     "embedded_order",
     "b_hat3",
+    "dense",
+    "dense_order",
     "tolerance",
 ];
 
@@ -43,6 +45,10 @@ pub struct Input {
     pub embedded_order: Option<Keyed<Spanned<usize>>>,
     /// `b_hat3: [...]`, optional.
     pub b_hat3: Option<Array>,
+    /// `dense: [[...], ...]`, optional: per stage, the coefficients of theta^1.. of b_i(theta).
+    pub dense: Option<Matrix>,
+    /// `dense_order: 4`, optional.
+    pub dense_order: Option<Keyed<Spanned<usize>>>,
     /// `tolerance: 1e-10`, optional.
     pub tolerance: Option<Expr>,
 }
@@ -98,6 +104,8 @@ struct Fields {
     b_hat: Option<Keyed<Array>>,
     embedded_order: Option<Keyed<Spanned<usize>>>,
     b_hat3: Option<Array>,
+    dense: Option<Matrix>,
+    dense_order: Option<Keyed<Spanned<usize>>>,
     tolerance: Option<Expr>,
 }
 
@@ -119,6 +127,11 @@ impl Fields {
                 self.embedded_order = Some(Keyed { key, value });
             }
             "b_hat3" => self.b_hat3 = Some(input.parse()?),
+            "dense" => self.dense = Some(input.parse()?),
+            "dense_order" => {
+                let value = parse_order(input, &key)?;
+                self.dense_order = Some(Keyed { key, value });
+            }
             _ => self.tolerance = Some(input.parse()?),
         }
         Ok(())
@@ -138,6 +151,8 @@ impl Parse for Input {
             b_hat,
             embedded_order,
             b_hat3,
+            dense,
+            dense_order,
             tolerance,
         } = fields;
         for (key, present) in [
@@ -161,6 +176,8 @@ impl Parse for Input {
                 b_hat,
                 embedded_order,
                 b_hat3,
+                dense,
+                dense_order,
                 tolerance,
             }),
             (Some(e), ..) => Err(e),

@@ -116,6 +116,17 @@ fn target<'a>(input: &'a Input, err: &TableauError, s: usize) -> Target<'a> {
             ..
         } => Tokens(row(*i)),
         TableauError::Shape { what: "a", .. } => Tokens(input.a.span),
+        TableauError::Shape { what: "dense", .. }
+        | TableauError::NonFinite { what: "dense", .. }
+        | TableauError::DenseEnd { .. }
+        | TableauError::OrderCondition { weights: "dense", .. } => {
+            input.dense.as_ref().map_or(fallback, |d| Tokens(d.span))
+        }
+        TableauError::DenseWithoutOrder => match (&input.dense, &input.dense_order) {
+            (Some(d), None) => Tokens(d.span),
+            (_, Some(k)) => Tokens(k.key.span()),
+            _ => fallback,
+        },
         TableauError::Shape { what, .. } => array(what).map_or(fallback, |a| Tokens(a.span)),
         TableauError::NonFinite { what: "a", index } => {
             let (i, j) = (index / s.max(1), index % s.max(1));
@@ -146,6 +157,10 @@ pub fn validate(input: Input) -> syn::Result<Method> {
     let c = input.c.as_ref().map(|c| ev.array(c));
     let b_hat = input.b_hat.as_ref().map(|k| ev.array(&k.value));
     let b_hat3 = input.b_hat3.as_ref().map(|b| ev.array(b));
+    let dense = input
+        .dense
+        .as_ref()
+        .map(|d| d.rows.iter().map(|row| ev.array(row)).collect());
     let tolerance = input.tolerance.as_ref().and_then(|expr| ev.one(expr));
     if let Some(e) = ev.errors {
         return Err(e);
@@ -161,6 +176,8 @@ pub fn validate(input: Input) -> syn::Result<Method> {
         embedded_order: input.embedded_order.as_ref().map(|k| k.value.value),
         b_hat3,
         tolerance,
+        dense,
+        dense_order: input.dense_order.as_ref().map(|k| k.value.value),
     };
     match stormer_order::validate(&spec) {
         Ok(tableau) => Ok(Method {
