@@ -594,7 +594,5 @@ fn interleaved_ratios() {
 criterion_group!(benches, bench);
 
 fn main() {
-    benches();
-    interleaved_ratios();
-    Criterion::default().configure_from_args().final_summary();
+    interleaved::main(benches, interleaved_ratios);
 }
