@@ -26,11 +26,17 @@ fn read_csv(path: &Path) -> (Vec<String>, Vec<Vec<f64>>) {
     (header, rows)
 }
 
+/// The summary (stderr) of a run of `args` in `dir` that succeeds.
+#[track_caller]
+fn run_summary(dir: &Path, args: &[&str]) -> String {
+    stderr(&stormer_ok(dir, args))
+}
+
 /// A run of `args` in `dir` that succeeds: its summary (stderr) and the CSV it wrote at
 /// `csv` (relative to `dir`), as (header, rows of numbers).
 #[track_caller]
 fn run_csv(dir: &Path, args: &[&str], csv: &str) -> (String, Vec<String>, Vec<Vec<f64>>) {
-    let summary = stderr(&stormer_ok(dir, args));
+    let summary = run_summary(dir, args);
     let (header, rows) = read_csv(&dir.join(csv));
     (summary, header, rows)
 }
@@ -88,7 +94,7 @@ fn damped_oscillator_reproduces_the_exact_solution() {
 fn adaptive_dop853_on_the_harmonic_oscillator() {
     let dir = workdir("adaptive");
     let csv = dir.join("h.csv");
-    let out = stormer_ok(
+    let summary = run_summary(
         &dir,
         &[
             "run",
@@ -103,7 +109,7 @@ fn adaptive_dop853_on_the_harmonic_oscillator() {
             csv.to_str().unwrap(),
         ],
     );
-    assert!(stderr(&out).contains("rejected"), "{}", stderr(&out));
+    assert!(summary.contains("rejected"), "{summary}");
     let (header, rows) = read_csv(&csv);
     assert_eq!(header, ["t", "x", "v", "energy"]);
     assert!(
@@ -662,8 +668,7 @@ fn splittings_run_on_every_hamiltonian_scene() {
         ("outer-solar-system", "velocity_verlet_kdk", "1000", 101),
     ];
     for (scene, method, t_end, evaluations) in runs {
-        let out = stormer_ok(&dir, &["run", scene, "--method", method, "--t-end", t_end]);
-        let summary = stderr(&out);
+        let summary = run_summary(&dir, &["run", scene, "--method", method, "--t-end", t_end]);
         assert!(summary.contains("100 steps"), "{summary}");
         assert_eq!(summary_number(&summary, "steps,") as u64, evaluations, "{summary}");
         assert!(summary_number(&summary, "max |dE/E0|") < 1e-3, "{summary}");
@@ -693,7 +698,7 @@ fn a_splitting_method_file_runs_on_a_scene() {
     let dir = workdir("splitting-file");
     let leapfrog = "name = \"my_leapfrog\"\norder = 2\ndrift = [\"1/2\", \"1/2\"]\nkick = [\"1\", \"0\"]\n";
     std::fs::write(dir.join("leapfrog.toml"), leapfrog).unwrap();
-    let out = stormer_ok(
+    let summary = run_summary(
         &dir,
         &[
             "run",
@@ -705,9 +710,8 @@ fn a_splitting_method_file_runs_on_a_scene() {
         ],
     );
     assert!(
-        stderr(&out).starts_with("my_leapfrog on kepler-e06: 1000 steps"),
-        "{}",
-        stderr(&out)
+        summary.starts_with("my_leapfrog on kepler-e06: 1000 steps"),
+        "{summary}"
     );
     // the same coefficients as the catalog's stormer_verlet_dkd: the same numbers, bit for bit
     stormer_ok(
@@ -900,13 +904,9 @@ fn charged_particle_methods_run_on_charged_particle_scenes_only() {
     ] {
         let mut args = vec!["run", "penning-trap", "--method", method, "--t-end", "1"];
         args.extend_from_slice(extra);
-        let out = stormer_ok(&dir, &args);
+        let summary = run_summary(&dir, &args);
         // (Euler-Cromer, first order, is at 4e-2)
-        assert!(
-            summary_number(&stderr(&out), "max |dE/E0|") < 0.1,
-            "{method}: {}",
-            stderr(&out)
-        );
+        assert!(summary_number(&summary, "max |dE/E0|") < 0.1, "{method}: {summary}");
     }
     let (header, _) = read_csv(&dir.join("out/penning-trap-boris.csv"));
     assert_eq!(header.len(), 1 + 18 + 1);
@@ -968,11 +968,11 @@ fn exb_drift_with_boris_moves_with_the_drift_velocity() {
     let text = stdout(&show).replace("velocity = [0.0, 0.0, 0.0]", "velocity = [0.0, -0.5, 0.0]");
     std::fs::write(dir.join("on-drift.toml"), text).unwrap();
     let error = |method: &str| {
-        let out = stormer_ok(
+        let summary = run_summary(
             &dir,
             &["run", "on-drift.toml", "--method", method, "--dt", "1", "--t-end", "10"],
         );
-        summary_number(&stderr(&out), "max error vs exact")
+        summary_number(&summary, "max error vs exact")
     };
     assert!(error("boris") < 1e-12);
     let lag = 0.5 * 10.0 * (1.0 - 0.5 / 0.5f64.tan());
@@ -987,8 +987,7 @@ fn exb_drift_with_boris_moves_with_the_drift_velocity() {
 fn the_cyclotron_follows_its_exact_helix() {
     let dir = workdir("cyclotron");
     for dt in ["0.1", "1", "5"] {
-        let out = stormer_ok(&dir, &["run", "cyclotron", "--dt", dt]);
-        let summary = stderr(&out);
+        let summary = run_summary(&dir, &["run", "cyclotron", "--dt", dt]);
         assert!(
             summary_number(&summary, "max error vs exact") < 1e-12,
             "dt {dt}: {summary}"
@@ -1029,12 +1028,8 @@ fn arenstorf_closes_its_orbit_from_the_command_line() {
         assert!((1..7).all(|i| (last[i] - start[i - 1]).abs() < 1e-6), "{last:?}");
     }
     // the scene's own run is the fixed-step composition
-    let out = stormer_ok(&dir, &["run", "arenstorf"]);
-    assert!(
-        stderr(&out).contains("kahan_li6 on arenstorf: 85327 steps"),
-        "{}",
-        stderr(&out)
-    );
+    let summary = run_summary(&dir, &["run", "arenstorf"]);
+    assert!(summary.contains("kahan_li6 on arenstorf: 85327 steps"), "{summary}");
     // the Coriolis force is not a kick: RKN methods are refused
     assert_error(
         &stormer(&dir, &["run", "arenstorf", "--method", "blanes_moan_srkn11b"]),
@@ -1509,8 +1504,8 @@ fn a_study_in_three_shards_merges_into_the_whole() {
         for shard in ["1/3", "2/3", "3/3"] {
             let mut part = with_quick(args);
             part.extend(["--shard", shard, "--out", "parts"]);
-            let out = stormer_ok(&dir, &part);
-            assert!(stderr(&out).contains("stormer merge"), "{}", stderr(&out));
+            let summary = run_summary(&dir, &part);
+            assert!(summary.contains("stormer merge"), "{summary}");
             parts.push(format!("parts/{stem}.shard-{}-of-3.json", &shard[..1]));
         }
         // no table from a shard alone
@@ -1565,11 +1560,10 @@ fn a_study_in_three_shards_merges_into_the_whole() {
 #[test]
 fn run_draws_its_pictures() {
     let dir = workdir("pictures");
-    let out = stormer_ok(&dir, &["run", "kepler", "--t-end", "3"]);
+    let summary = run_summary(&dir, &["run", "kepler", "--t-end", "3"]);
     assert!(
-        stderr(&out).contains("pictures: out/kepler-velocity_verlet_kdk-xy.svg"),
-        "{}",
-        stderr(&out)
+        summary.contains("pictures: out/kepler-velocity_verlet_kdk-xy.svg"),
+        "{summary}"
     );
     let orbit = std::fs::read_to_string(dir.join("out/kepler-velocity_verlet_kdk-xy.svg")).unwrap();
     // title, axis labels and one legend entry per body
@@ -1732,12 +1726,11 @@ fn a_close_encounter_at_a_fixed_step_reports_its_energy_error() {
          dt = 0.006283185307179587\nt_end = 6.283185307179586\nevery = 1\n",
     )
     .unwrap();
-    let out = stormer_ok(&dir, &["run", "kepler-e099.toml", "--out", "e099.csv"]);
-    let drift = summary_number(&stderr(&out), "max |dE/E0|");
-    assert!(drift > 300.0, "{}", stderr(&out));
-    let error = summary_number(&stderr(&out), "max error vs exact");
-    assert!(error > 1.0, "{}", stderr(&out));
-    let (header, rows) = read_csv(&dir.join("e099.csv"));
+    let (summary, header, rows) = run_csv(&dir, &["run", "kepler-e099.toml", "--out", "e099.csv"], "e099.csv");
+    let drift = summary_number(&summary, "max |dE/E0|");
+    assert!(drift > 300.0, "{summary}");
+    let error = summary_number(&summary, "max error vs exact");
+    assert!(error > 1.0, "{summary}");
     assert_eq!(header.last().unwrap(), "energy");
     assert_eq!(rows.len(), 1001);
     let last_energy = *rows.last().unwrap().last().unwrap();
@@ -1752,8 +1745,7 @@ fn compensated_summation_keeps_round_off_down_on_a_long_run() {
         let mut args = vec!["run", "cyclotron", "--dt", "0.0625", "--t-end", "6283.185307179586"];
         args.extend_from_slice(&["--every", "100000"]);
         args.extend_from_slice(extra);
-        let out = stormer_ok(&dir, &args);
-        let summary = stderr(&out);
+        let summary = run_summary(&dir, &args);
         assert!(summary.contains("100531 steps"), "{summary}");
         summary_number(&summary, "max error vs exact")
     };
