@@ -32,6 +32,7 @@ use std::hint::black_box;
 use std::time::Instant;
 
 use criterion::{criterion_group, Criterion};
+use ode_solvers::dop_shared::{IntegrationError, SolverResult, Stats};
 use ode_solvers::{OutputType, System, Vector4};
 use stormer::catalog::{Dop853, DormandPrince5};
 use stormer::driver::Recorder;
@@ -123,20 +124,24 @@ fn ours<M: ExplicitMethod>(tol: f64) -> Run {
 }
 
 fn theirs_dopri5(tol: f64) -> Run {
-    let y = y0();
-    let mut s = ode_solvers::Dopri5::new(FreeKick::new(), 0.0, T_END, T_END, Vector4::from(y), tol, tol);
+    let mut s = ode_solvers::Dopri5::new(FreeKick::new(), 0.0, T_END, T_END, Vector4::from(y0()), tol, tol);
     s.set_output(OutputType::Sparse);
-    let stats = s.integrate().unwrap_or_else(|e| panic!("{e}"));
-    let end = s.y_out().last().expect("an end state");
-    ([end[0], end[1], end[2], end[3]], u64::from(stats.num_eval))
+    let stats = s.integrate();
+    their_run(stats, s.results())
 }
 
 fn theirs_dop853(tol: f64) -> Run {
-    let y = y0();
-    let mut s = ode_solvers::Dop853::new(FreeKick::new(), 0.0, T_END, T_END, Vector4::from(y), tol, tol);
+    let mut s = ode_solvers::Dop853::new(FreeKick::new(), 0.0, T_END, T_END, Vector4::from(y0()), tol, tol);
     s.set_output(OutputType::Sparse);
-    let stats = s.integrate().unwrap_or_else(|e| panic!("{e}"));
-    let end = s.y_out().last().expect("an end state");
+    let stats = s.integrate();
+    their_run(stats, s.results())
+}
+
+/// One run of theirs, once integrated: the last state of the sparse output and the
+/// evaluations (`Dopri5` and `Dop853` share these types, not a trait).
+fn their_run(stats: Result<Stats, IntegrationError>, out: &SolverResult<f64, Vector4<f64>>) -> Run {
+    let stats = stats.unwrap_or_else(|e| panic!("{e}"));
+    let end = out.get().1.last().expect("an end state");
     ([end[0], end[1], end[2], end[3]], u64::from(stats.num_eval))
 }
 

@@ -18,8 +18,6 @@ mod interleaved;
 
 use std::hint::black_box;
 
-use interleaved::Kernel;
-
 use criterion::{criterion_group, Criterion};
 use stormer::catalog::VelocityVerletKdk;
 use stormer::magnetic::{gyration_coefficients, Charged, GyrationCache, Lorentz};
@@ -157,13 +155,10 @@ fn bench(c: &mut Criterion) {
 
 /// Interleaved timing of the three kernels: ns per step and the ratio to hand-written.
 fn interleaved_ratios() {
-    let kernels: [Kernel<[f64; 6]>; 3] = [
-        (
-            "hand_written",
-            Box::new(|| hand_written(STEPS, black_box(H), black_box(Y0))),
-        ),
-        ("generated", Box::new(|| generated(STEPS, black_box(H), black_box(Y0)))),
-        ("boris", Box::new(|| boris(STEPS, black_box(H), black_box(Y0)))),
+    let kernels = [
+        interleaved::kernel("hand_written", hand_written, STEPS, H, Y0),
+        interleaved::kernel("generated", generated, STEPS, H, Y0),
+        interleaved::kernel("boris", boris, STEPS, H, Y0),
     ];
     interleaved::print_ratios(&kernels, STEPS);
 }
@@ -171,7 +166,5 @@ fn interleaved_ratios() {
 criterion_group!(benches, bench);
 
 fn main() {
-    benches();
-    interleaved_ratios();
-    Criterion::default().configure_from_args().final_summary();
+    interleaved::main(benches, interleaved_ratios);
 }

@@ -16,8 +16,6 @@ mod interleaved;
 
 use std::hint::black_box;
 
-use interleaved::Kernel;
-
 use criterion::{criterion_group, Criterion};
 use stormer::{catalog::Rk4, registry, ExplicitRk, ImplicitOptions, Problem, RuntimeRk, Stepper, Tableau};
 
@@ -127,15 +125,15 @@ fn bench(c: &mut Criterion) {
 /// rounds, in ns per step.
 fn interleaved_ratios() {
     let tableau = rk4_tableau();
-    let kernels: [Kernel<[f64; 2]>; 3] = [
-        (
-            "hand_written",
-            Box::new(|| hand_written(STEPS, black_box(H), black_box(Y0))),
-        ),
-        ("generated", Box::new(|| generated(STEPS, black_box(H), black_box(Y0)))),
-        (
+    let kernels = [
+        interleaved::kernel("hand_written", hand_written, STEPS, H, Y0),
+        interleaved::kernel("generated", generated, STEPS, H, Y0),
+        interleaved::kernel(
             "runtime_tableau",
-            Box::new(|| runtime_tableau(&tableau, STEPS, black_box(H), black_box(Y0))),
+            |steps, h, y0| runtime_tableau(&tableau, steps, h, y0),
+            STEPS,
+            H,
+            Y0,
         ),
     ];
     interleaved::print_ratios(&kernels, STEPS);
@@ -144,7 +142,5 @@ fn interleaved_ratios() {
 criterion_group!(benches, bench);
 
 fn main() {
-    benches();
-    interleaved_ratios();
-    Criterion::default().configure_from_args().final_summary();
+    interleaved::main(benches, interleaved_ratios);
 }

@@ -36,18 +36,27 @@ fn allocations_for(steps: usize) -> usize {
     after - before
 }
 
-fn driver_allocations_for(steps: u64) -> usize {
-    let y0 = nalgebra::SVector::<f64, 2>::new(0.5, 0.0);
-    let mut stepper = ExplicitRk::<Rk4, _>::new(&y0);
+/// The allocations of a driver run of `steps` fixed steps of 0.01 from `y0`, compensated or
+/// not, its step count checked. Recording only the start and the end: the loop itself must
+/// not allocate.
+fn driver_run_allocations<P, St>(problem: &P, stepper: &mut St, compensated: bool, y0: &P::State, steps: u64) -> usize
+where
+    P: Problem<Scalar = f64>,
+    St: Stepper<P>,
+{
     let before = allocations();
-    // Recording only the start and the end: the loop itself must not allocate.
-    let solution = Driver::fixed(0.01)
-        .every(u64::MAX)
-        .run(&Pendulum, &mut stepper, 0.0, &y0, steps as f64 * 0.01)
-        .unwrap();
+    let driver = Driver::fixed(0.01).every(u64::MAX);
+    let driver = if compensated { driver.compensated() } else { driver };
+    let solution = driver.run(problem, stepper, 0.0, y0, steps as f64 * 0.01).unwrap();
     let after = allocations();
     assert_eq!(solution.stats.steps, steps);
     after - before
+}
+
+fn driver_allocations_for(steps: u64) -> usize {
+    let y0 = nalgebra::SVector::<f64, 2>::new(0.5, 0.0);
+    let mut stepper = ExplicitRk::<Rk4, _>::new(&y0);
+    driver_run_allocations(&Pendulum, &mut stepper, false, &y0, steps)
 }
 
 #[test]
@@ -99,15 +108,7 @@ fn compensated_driver_allocations_for(steps: u64) -> usize {
     let y0 = nalgebra::SVector::<f64, 2>::new(0.5, 0.0);
     let mut jump = SplittingStepper::<TripleJump4, _>::new(&y0).unwrap();
     Stepper::<Swing>::set_compensated(&mut jump, true).unwrap();
-    let before = allocations();
-    let solution = Driver::fixed(0.01)
-        .every(u64::MAX)
-        .compensated()
-        .run(&Swing, &mut jump, 0.0, &y0, steps as f64 * 0.01)
-        .unwrap();
-    let after = allocations();
-    assert_eq!(solution.stats.steps, steps);
-    after - before
+    driver_run_allocations(&Swing, &mut jump, true, &y0, steps)
 }
 
 #[test]

@@ -9,22 +9,27 @@
 // Trajectories are compared bit for bit on purpose.
 #![allow(clippy::float_cmp)]
 
+use std::marker::PhantomData;
+
 use stormer::catalog::{ImplicitMidpoint, Rk4};
 use stormer::magnetic::{Charged, Lorentz};
 use stormer::stepper::{Boris, BorisRotation, Composed};
 use stormer::{
-    registry, ButcherMethod, Driver, Error, ImplicitOptions, ImplicitRk, Problem, RuntimeRk, RuntimeSplitting,
+    registry, ButcherMethod, Driver, Error, ImplicitOptions, ImplicitRk, Problem, Real, RuntimeRk, RuntimeSplitting,
     SecondOrder, Splittable, Splitting, StepControl, Stepper, Tableau, Tolerances,
 };
 
-/// `q'' = 0`.
-struct Free;
+/// `q'' = 0`, in `f64` (`FREE`) or `f32` (`FREE32`).
+struct Free<T = f64>(PhantomData<T>);
 
-impl SecondOrder for Free {
-    type Scalar = f64;
-    type State = [f64; 2];
-    fn acceleration(&self, _t: f64, _q: &[f64], a: &mut [f64]) {
-        a[0] = 0.0;
+const FREE: Free = Free(PhantomData);
+const FREE32: Free<f32> = Free(PhantomData);
+
+impl<T: Real> SecondOrder for Free<T> {
+    type Scalar = T;
+    type State = [T; 2];
+    fn acceleration(&self, _t: T, _q: &[T], a: &mut [T]) {
+        a[0] = T::zero();
     }
 }
 
@@ -35,7 +40,7 @@ const H: f64 = 0.1;
 fn relative_error(stepper: &mut dyn Stepper<Free>, compensated: bool) -> f64 {
     let driver = Driver::fixed(H).every(u64::MAX);
     let driver = if compensated { driver.compensated() } else { driver };
-    let solution = driver.run(&Free, stepper, 0.0, &[0.0, 1.0], STEPS as f64 * H).unwrap();
+    let solution = driver.run(&FREE, stepper, 0.0, &[0.0, 1.0], STEPS as f64 * H).unwrap();
     assert_eq!(solution.stats.steps, STEPS);
     let exact = STEPS as f64 * H;
     (solution.y.last().unwrap()[0] - exact).abs() / exact
@@ -154,37 +159,42 @@ fn adaptive_runs_and_stop_conditions_work_compensated() {
     );
 }
 
-/// A particle in a non-uniform field along z whose strength depends on its position.
-struct Bottle;
-
-impl Lorentz for Bottle {
-    type Scalar = f64;
-    type State = [f64; 12];
-    fn omega(&self, k: usize, q: &[f64]) -> [f64; 3] {
-        let r2 = q[3 * k] * q[3 * k] + q[3 * k + 1] * q[3 * k + 1];
-        [0.1 * q[3 * k], -0.2 * q[3 * k + 1], 1.0 + r2]
-    }
-    fn acceleration(&self, _t: f64, _q: &[f64], a: &mut [f64]) {
-        a.fill(0.0);
-    }
+/// A magnetic field and no other force, on states of `N` components: the rotation rate of
+/// particle `k` at the positions, and whether the field is declared uniform (the gyrations
+/// then come from the cache).
+struct Field<const N: usize> {
+    omega: fn(usize, &[f64]) -> [f64; 3],
+    uniform: bool,
 }
 
-/// The same field, declared uniform (the gyrations then come from the cache).
-struct Uniform;
-
-impl Lorentz for Uniform {
+impl<const N: usize> Lorentz for Field<N> {
     type Scalar = f64;
-    type State = [f64; 12];
-    fn omega(&self, _k: usize, _q: &[f64]) -> [f64; 3] {
-        [0.3, -0.4, 1.2]
+    type State = [f64; N];
+    fn omega(&self, k: usize, q: &[f64]) -> [f64; 3] {
+        (self.omega)(k, q)
     }
     fn uniform(&self) -> bool {
-        true
+        self.uniform
     }
     fn acceleration(&self, _t: f64, _q: &[f64], a: &mut [f64]) {
         a.fill(0.0);
     }
 }
+
+/// A particle in a non-uniform field along z whose strength depends on its position.
+const BOTTLE: Field<12> = Field {
+    omega: |k, q| {
+        let r2 = q[3 * k] * q[3 * k] + q[3 * k + 1] * q[3 * k + 1];
+        [0.1 * q[3 * k], -0.2 * q[3 * k + 1], 1.0 + r2]
+    },
+    uniform: false,
+};
+
+/// A constant field, declared uniform.
+const UNIFORM: Field<12> = Field {
+    omega: |_, _| [0.3, -0.4, 1.2],
+    uniform: true,
+};
 
 /// A problem that keeps the provided `drift_increment` (a drift `q += tau p^3`).
 struct CubicDrift;
@@ -231,9 +241,9 @@ fn drift_increments_add_what_the_drifts_do() {
     let y: Vec<f64> = (0..12).map(|i| (0.7 * i as f64).sin() * 2.0).collect();
     for tau in [0.3, -0.05, 2.5] {
         for (name, worst) in [
-            ("non-uniform field", increment_matches_drift(&Charged(Bottle), &y, tau)),
-            ("uniform field", increment_matches_drift(&Charged(Uniform), &y, tau)),
-            ("Hamiltonian", increment_matches_drift(&Free, &y[..2], tau)),
+            ("non-uniform field", increment_matches_drift(&Charged(BOTTLE), &y, tau)),
+            ("uniform field", increment_matches_drift(&Charged(UNIFORM), &y, tau)),
+            ("Hamiltonian", increment_matches_drift(&FREE, &y[..2], tau)),
             ("provided form", increment_matches_drift(&CubicDrift, &[0.5, 1.5], tau)),
         ] {
             assert!(worst <= 8.0 * f64::EPSILON, "{name}, tau = {tau}: {worst:e}");
@@ -246,13 +256,13 @@ fn charged_particles_run_compensated() {
     // exact gyration, no force: every method follows the helix to round-off
     let y0 = [1.0, 0.0, 0.0, 0.0, 1.0, 0.1, -1.0, 0.5, 0.0, 0.2, 0.0, 0.3];
     for name in ["velocity_verlet_kdk", "triple_jump4"] {
-        let mut plain = registry::splitting_stepper::<Charged<Uniform>>(name, &y0).unwrap();
-        let mut comp = registry::splitting_stepper::<Charged<Uniform>>(name, &y0).unwrap();
+        let mut plain = registry::splitting_stepper::<Charged<Field<12>>>(name, &y0).unwrap();
+        let mut comp = registry::splitting_stepper::<Charged<Field<12>>>(name, &y0).unwrap();
         let a = Driver::fixed(0.01)
             .every(u64::MAX)
-            .run(&Charged(Uniform), &mut plain, 0.0, &y0, 100.0);
+            .run(&Charged(UNIFORM), &mut plain, 0.0, &y0, 100.0);
         let driver = Driver::fixed(0.01).every(u64::MAX).compensated();
-        let b = driver.run(&Charged(Uniform), &mut comp, 0.0, &y0, 100.0);
+        let b = driver.run(&Charged(UNIFORM), &mut comp, 0.0, &y0, 100.0);
         let (a, b) = (a.unwrap(), b.unwrap());
         let (ya, yb) = (a.y.last().unwrap(), b.y.last().unwrap());
         assert!((0..12).all(|i| (ya[i] - yb[i]).abs() < 1e-10), "{name}: {ya:?} {yb:?}");
@@ -264,44 +274,26 @@ fn charged_particles_run_compensated() {
 fn a_stepper_without_a_compensated_form_is_refused_before_any_step() {
     let y0 = [1.0, 0.0, 0.0, 0.0, 1.0, 0.1];
     let mut boris = Boris::new(BorisRotation::Cayley, &y0).unwrap();
-    let err = Stepper::<Charged<Cyclotron>>::set_compensated(&mut boris, true).unwrap_err();
+    let err = Stepper::<Charged<Field<6>>>::set_compensated(&mut boris, true).unwrap_err();
     assert!(
         err.to_string().contains("boris") && err.to_string().contains("no compensated form"),
         "{err}"
     );
-    Stepper::<Charged<Cyclotron>>::set_compensated(&mut boris, false).unwrap();
+    Stepper::<Charged<Field<6>>>::set_compensated(&mut boris, false).unwrap();
     let failed = Driver::fixed(0.1)
         .compensated()
-        .run(&Charged(Cyclotron), &mut boris, 0.0, &y0, 1.0)
+        .run(&Charged(CYCLOTRON), &mut boris, 0.0, &y0, 1.0)
         .unwrap_err();
     assert!(matches!(failed.error, Error::Unsupported { .. }), "{}", failed.error);
     assert_eq!(failed.solution.stats.steps, 0);
     assert!(failed.solution.y.is_empty(), "nothing recorded");
 }
 
-struct Cyclotron;
-
-impl Lorentz for Cyclotron {
-    type Scalar = f64;
-    type State = [f64; 6];
-    fn omega(&self, _k: usize, _q: &[f64]) -> [f64; 3] {
-        [0.0, 0.0, 1.0]
-    }
-    fn acceleration(&self, _t: f64, _q: &[f64], a: &mut [f64]) {
-        a.fill(0.0);
-    }
-}
-
-/// `q'' = 0` in `f32`.
-struct Free32;
-
-impl SecondOrder for Free32 {
-    type Scalar = f32;
-    type State = [f32; 2];
-    fn acceleration(&self, _t: f32, _q: &[f32], a: &mut [f32]) {
-        a[0] = 0.0;
-    }
-}
+/// A constant field along z, not declared uniform.
+const CYCLOTRON: Field<6> = Field {
+    omega: |_, _| [0.0, 0.0, 1.0],
+    uniform: false,
+};
 
 #[test]
 fn in_f32_too() {
@@ -312,13 +304,13 @@ fn in_f32_too() {
     for name in ["rk4", "velocity_verlet_kdk"] {
         let error = |compensated: bool| {
             let mut stepper = if name == "rk4" {
-                registry::stepper::<Free32>(name, &y0, &ImplicitOptions::default()).unwrap()
+                registry::stepper::<Free<f32>>(name, &y0, &ImplicitOptions::default()).unwrap()
             } else {
-                registry::splitting_stepper::<Free32>(name, &y0).unwrap()
+                registry::splitting_stepper::<Free<f32>>(name, &y0).unwrap()
             };
             let driver = Driver::fixed(h).every(u64::MAX);
             let driver = if compensated { driver.compensated() } else { driver };
-            let solution = driver.run(&Free32, &mut stepper, 0.0, &y0, steps as f32 * h).unwrap();
+            let solution = driver.run(&FREE32, &mut stepper, 0.0, &y0, steps as f32 * h).unwrap();
             assert_eq!(solution.stats.steps, steps as u64);
             (solution.y.last().unwrap()[0] as f64 - exact).abs() / exact
         };
@@ -338,11 +330,11 @@ fn a_compensated_compiled_splitting_does_not_step_in_place() {
     verlet.set_compensated(true).unwrap();
     assert!(!verlet.steps_in_place());
     let mut y = y0;
-    let err = verlet.step_in_place(&Free, 0.0, H, &mut y).unwrap_err();
+    let err = verlet.step_in_place(&FREE, 0.0, H, &mut y).unwrap_err();
     assert!(matches!(err, Error::Misuse(_)), "{err}");
     assert_eq!(y, y0, "nothing stepped");
     verlet.set_compensated(false).unwrap();
     assert!(verlet.steps_in_place());
-    verlet.step_in_place(&Free, 0.0, H, &mut y).unwrap();
+    verlet.step_in_place(&FREE, 0.0, H, &mut y).unwrap();
     assert_eq!(y, [H, 1.0]);
 }

@@ -11,7 +11,7 @@ mod problems;
 use problems::{BlowUp, Decay, Fall};
 use std::sync::atomic::AtomicBool;
 use stormer::catalog::{DormandPrince5, Rk4};
-use stormer::{Driver, Error, ExplicitRk, Problem, Tolerances};
+use stormer::{Driver, Error, ExplicitRk, Interrupted, Problem, Solution, Tolerances};
 
 /// `y' = -y` in f32.
 struct Decay32;
@@ -41,11 +41,18 @@ fn rk4<const N: usize>(y0: &[f64; N]) -> ExplicitRk<Rk4, [f64; N]> {
     ExplicitRk::new(y0)
 }
 
+/// RK4 under `driver` on `y' = -y` from `y(t0) = 1` to `t_end`.
+fn decay(
+    driver: Driver<'_, f64, [f64; 1]>,
+    t0: f64,
+    t_end: f64,
+) -> Result<Solution<f64, [f64; 1]>, Interrupted<f64, [f64; 1]>> {
+    driver.run(&Decay, &mut rk4(&[1.0]), t0, &[1.0], t_end)
+}
+
 #[test]
 fn fixed_steps_land_on_the_end_time_with_a_shorter_last_step() {
-    let sol = Driver::fixed(0.3)
-        .run(&Decay, &mut rk4(&[1.0]), 0.0, &[1.0], 1.0)
-        .unwrap();
+    let sol = decay(Driver::fixed(0.3), 0.0, 1.0).unwrap();
     assert_eq!(sol.t, [0.0, 0.3, 0.6, 0.8999999999999999, 1.0]);
     assert_eq!(sol.stats.steps, 4);
     assert_eq!(sol.stats.evaluations, 16);
@@ -54,19 +61,14 @@ fn fixed_steps_land_on_the_end_time_with_a_shorter_last_step() {
 
 #[test]
 fn a_span_backwards_in_time_is_stepped_backwards() {
-    let sol = Driver::fixed(0.25)
-        .run(&Decay, &mut rk4(&[1.0]), 1.0, &[1.0], 0.0)
-        .unwrap();
+    let sol = decay(Driver::fixed(0.25), 1.0, 0.0).unwrap();
     assert_eq!(sol.t, [1.0, 0.75, 0.5, 0.25, 0.0]);
     assert!((sol.y[4][0] - 1.0f64.exp()).abs() < 1e-4, "{}", sol.y[4][0]);
 }
 
 #[test]
 fn every_nth_step_is_recorded_and_always_the_last() {
-    let sol = Driver::fixed(0.1)
-        .every(3)
-        .run(&Decay, &mut rk4(&[1.0]), 0.0, &[1.0], 1.0)
-        .unwrap();
+    let sol = decay(Driver::fixed(0.1).every(3), 0.0, 1.0).unwrap();
     assert_eq!(sol.t.len(), 5, "{:?}", sol.t);
     assert_eq!((sol.t[0], sol.t[4]), (0.0, 1.0));
     assert_eq!(sol.stats.steps, 10);
@@ -75,13 +77,8 @@ fn every_nth_step_is_recorded_and_always_the_last() {
 #[test]
 fn the_in_place_loop_and_the_loop_with_a_stop_condition_agree_to_the_bit() {
     // no stop condition: the in-place loop; a condition that never fires: the other one
-    let plain = Driver::fixed(0.01)
-        .run(&Decay, &mut rk4(&[1.0]), 0.0, &[1.0], 3.0)
-        .unwrap();
-    let watched = Driver::fixed(0.01)
-        .stop_when(|_t, _y: &[f64; 1]| 1.0)
-        .run(&Decay, &mut rk4(&[1.0]), 0.0, &[1.0], 3.0)
-        .unwrap();
+    let plain = decay(Driver::fixed(0.01), 0.0, 3.0).unwrap();
+    let watched = decay(Driver::fixed(0.01).stop_when(|_t, _y: &[f64; 1]| 1.0), 0.0, 3.0).unwrap();
     assert_eq!(
         plain.y.last().unwrap()[0].to_bits(),
         watched.y.last().unwrap()[0].to_bits()
@@ -91,9 +88,7 @@ fn the_in_place_loop_and_the_loop_with_a_stop_condition_agree_to_the_bit() {
 
 #[test]
 fn an_empty_span_is_refused_with_what_to_change() {
-    let err = Driver::fixed(0.1)
-        .run(&Decay, &mut rk4(&[1.0]), 2.0, &[1.0], 2.0)
-        .unwrap_err();
+    let err = decay(Driver::fixed(0.1), 2.0, 2.0).unwrap_err();
     let message = err.error.to_string();
     assert!(message.contains("invalid time span: empty"), "{message}");
     assert!(
@@ -108,27 +103,20 @@ fn an_empty_span_is_refused_with_what_to_change() {
 #[test]
 fn a_step_longer_than_the_span_is_refused() {
     // it used to round to zero steps and report success
-    let err = Driver::fixed(1e12)
-        .run(&Decay, &mut rk4(&[1.0]), 0.0, &[1.0], 1.0)
-        .unwrap_err();
+    let err = decay(Driver::fixed(1e12), 0.0, 1.0).unwrap_err();
     let message = err.error.to_string();
     assert!(
         message.contains("invalid step size: 1e12 is longer than the time span (1e0)"),
         "{message}"
     );
     // a step equal to the span is one step
-    let sol = Driver::fixed(1.0)
-        .run(&Decay, &mut rk4(&[1.0]), 0.0, &[1.0], 1.0)
-        .unwrap();
+    let sol = decay(Driver::fixed(1.0), 0.0, 1.0).unwrap();
     assert_eq!(sol.stats.steps, 1);
 }
 
 #[test]
 fn a_run_beyond_the_step_budget_is_refused_before_it_starts() {
-    let err = Driver::fixed(1e-3)
-        .max_steps(10)
-        .run(&Decay, &mut rk4(&[1.0]), 0.0, &[1.0], 1.0)
-        .unwrap_err();
+    let err = decay(Driver::fixed(1e-3).max_steps(10), 0.0, 1.0).unwrap_err();
     let needed = Error::TooManySteps {
         t: 0.0,
         steps: 10,
@@ -187,17 +175,14 @@ fn non_finite_inputs_are_refused() {
     assert!(run(f64::NAN, 1.0, 1.0).is_err());
     assert!(run(0.0, 1.0, f64::INFINITY).is_err());
     assert!(run(0.0, f64::NAN, 1.0).is_err());
-    let zero_step = Driver::fixed(0.0).run(&Decay, &mut rk4(&[1.0]), 0.0, &[1.0], 1.0);
+    let zero_step = decay(Driver::fixed(0.0), 0.0, 1.0);
     assert!(zero_step.unwrap_err().error.to_string().contains("non-zero"));
 }
 
 #[test]
 fn a_cancelled_run_keeps_what_it_recorded() {
     let flag = AtomicBool::new(true);
-    let err = Driver::fixed(0.1)
-        .cancel_when(&flag)
-        .run(&Decay, &mut rk4(&[1.0]), 0.0, &[1.0], 1.0)
-        .unwrap_err();
+    let err = decay(Driver::fixed(0.1).cancel_when(&flag), 0.0, 1.0).unwrap_err();
     assert_eq!(err.error, Error::Cancelled { t: 0.0, step: 0 });
     assert_eq!(err.solution.t, [0.0]);
 }

@@ -32,6 +32,9 @@ use stormer::{
 mod counting_alloc;
 use counting_alloc::allocations;
 
+#[path = "support/problems.rs"]
+mod problems;
+
 // ---------------------------------------------------------------------------------------
 // Problems.
 
@@ -400,19 +403,13 @@ fn backward_euler_fixed_point_diverges_with_an_error() {
 
 #[test]
 fn a_step_without_a_nearby_solution_is_an_error() {
-    /// `y' = y^2` blows up at t = 1; a step of 10 from y = 1 has no real solution near y.
-    struct Blowup;
-    impl Problem for Blowup {
-        type Scalar = f64;
-        type State = [f64; 1];
-        fn rhs(&self, _t: f64, y: &[f64; 1], dy: &mut [f64; 1]) {
-            dy[0] = y[0] * y[0];
-        }
-    }
+    // `y' = y^2` blows up at t = 1; a step of 10 from y = 1 has no real solution near y.
     for solver in SOLVERS {
         let mut stepper = ImplicitRk::new(&tableau::<ImplicitMidpoint>(), &[1.0], options(solver));
         let mut y_new = [0.0];
-        let err = stepper.step(&Blowup, 0.0, 10.0, &[1.0], &mut y_new).unwrap_err();
+        let err = stepper
+            .step(&problems::BlowUp, 0.0, 10.0, &[1.0], &mut y_new)
+            .unwrap_err();
         eprintln!("y' = y^2, h = 10, {solver:?}: {err}");
         let Error::SolverDiverged {
             iterations, residual, ..
@@ -424,10 +421,10 @@ fn a_step_without_a_nearby_solution_is_an_error() {
         assert!(residual.is_nan() || residual > 1e-10, "residual {residual:e}");
         // The failure leaves nothing behind: a shorter step from the same state (what
         // event location or a caller retrying does) gives what a fresh stepper gives.
-        stepper.step(&Blowup, 0.0, 0.1, &[1.0], &mut y_new).unwrap();
+        stepper.step(&problems::BlowUp, 0.0, 0.1, &[1.0], &mut y_new).unwrap();
         let mut fresh = [0.0];
         ImplicitRk::new(&tableau::<ImplicitMidpoint>(), &[1.0], options(solver))
-            .step(&Blowup, 0.0, 0.1, &[1.0], &mut fresh)
+            .step(&problems::BlowUp, 0.0, 0.1, &[1.0], &mut fresh)
             .unwrap();
         assert_eq!(y_new.map(f64::to_bits), fresh.map(f64::to_bits));
     }

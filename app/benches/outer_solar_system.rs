@@ -257,12 +257,20 @@ where
         }
         return y;
     }
+    ping_pong(steps, y0, |i, from, to| {
+        let _ = stepper.step(problem, i as f64 * h, h, from, to);
+        stepper.accept();
+    })
+}
+
+/// `steps` steps between two copies of `y0` (no swap): step `i` reads one and writes the
+/// other; the state last written is returned.
+#[inline(always)]
+fn ping_pong<Y: Clone>(steps: usize, y0: &Y, mut step: impl FnMut(usize, &Y, &mut Y)) -> Y {
     let (mut a, mut b) = (y0.clone(), y0.clone());
     for i in 0..steps {
-        let t = i as f64 * h;
         let (from, to) = if i % 2 == 0 { (&a, &mut b) } else { (&b, &mut a) };
-        let _ = stepper.step(problem, t, h, from, to);
-        stepper.accept();
+        step(i, from, to);
     }
     if steps % 2 == 0 {
         a
@@ -271,14 +279,25 @@ where
     }
 }
 
+/// A new `SplittingStepper` of `M` through `with_stepper` on `problem`.
+fn with_new_stepper<M, P>(problem: &P, steps: usize, h: f64, y0: &P::State) -> P::State
+where
+    M: SplittingMethod,
+    P: stormer::Problem<Scalar = f64>,
+    P::State: stormer::State,
+    SplittingStepper<M, P::State>: Stepper<P>,
+{
+    match SplittingStepper::<M, P::State>::new(y0) {
+        Ok(mut st) => with_stepper(problem, &mut st, steps, h, y0),
+        Err(e) => panic!("{e}"),
+    }
+}
+
 fn generated<M: SplittingMethod>(s: &Setup, steps: usize, h: f64, y0: &[f64; 24]) -> [f64; 24]
 where
     SplittingStepper<M, [f64; 24]>: Stepper<Problem>,
 {
-    match SplittingStepper::<M, [f64; 24]>::new(y0) {
-        Ok(mut st) => with_stepper(&s.nbody, &mut st, steps, h, y0),
-        Err(e) => panic!("{e}"),
-    }
+    with_new_stepper::<M, _>(&s.nbody, steps, h, y0)
 }
 
 /// As `generated`, on the problem whose force loop is chosen at run time.
@@ -286,10 +305,7 @@ fn generated_any_shape<M: SplittingMethod>(s: &Setup, steps: usize, h: f64, y0: 
 where
     SplittingStepper<M, [f64; 24]>: Stepper<AnyShapeProblem>,
 {
-    match SplittingStepper::<M, [f64; 24]>::new(y0) {
-        Ok(mut st) => with_stepper(&s.any_shape, &mut st, steps, h, y0),
-        Err(e) => panic!("{e}"),
-    }
+    with_new_stepper::<M, _>(&s.any_shape, steps, h, y0)
 }
 
 /// The generated word in place, without the `Stepper` interface.
@@ -316,18 +332,40 @@ fn generated_flows<M: SplittingMethod>(s: &Setup, steps: usize, h: f64, y0: &[f6
     join(&q, &p)
 }
 
+/// The generated word of `M` on the two halves of one `[f64; 24]` state, with its own work
+/// halves and the FSAL flag carried from step to step.
+struct Word<M: SplittingMethod> {
+    co: M::Coeffs<f64>,
+    work: [f64; 24],
+    cached: bool,
+}
+
+impl<M: SplittingMethod> Word<M> {
+    fn new() -> Self {
+        Word {
+            co: M::coeffs::<f64>(),
+            work: [0.0; 24],
+            cached: false,
+        }
+    }
+
+    /// Step `i` (of size `h`) in place on `y`.
+    #[inline(always)]
+    fn apply(&mut self, s: &Setup, i: usize, h: f64, y: &mut [f64; 24]) {
+        let (q, p) = y.split_at_mut(12);
+        let (v, f) = self.work.split_at_mut(12);
+        M::flows(&self.co, &s.nbody, i as f64 * h, h, q, p, v, f, &mut (), self.cached);
+        self.cached = M::DATA.flags.fsal;
+    }
+}
+
 /// The generated word in place on one `[f64; 24]` state (its two halves), no second
 /// state: what an in-place step of a stepper would do.
 fn generated_in_place<M: SplittingMethod>(s: &Setup, steps: usize, h: f64, y0: &[f64; 24]) -> [f64; 24] {
-    let co = M::coeffs::<f64>();
+    let mut word = Word::<M>::new();
     let mut y = *y0;
-    let mut work = [0.0; 24];
-    let mut cached = false;
     for i in 0..steps {
-        let (q, p) = y.split_at_mut(12);
-        let (v, f) = work.split_at_mut(12);
-        M::flows(&co, &s.nbody, i as f64 * h, h, q, p, v, f, &mut (), cached);
-        cached = M::DATA.flags.fsal;
+        word.apply(s, i, h, &mut y);
     }
     y
 }
@@ -335,45 +373,21 @@ fn generated_in_place<M: SplittingMethod>(s: &Setup, steps: usize, h: f64, y0: &
 /// The generated word on a copy of the state, as the `Stepper` interface does it
 /// (`y_new <- y`, then the word in place on `y_new`), ping-ponging between two states.
 fn generated_flows_copy<M: SplittingMethod>(s: &Setup, steps: usize, h: f64, y0: &[f64; 24]) -> [f64; 24] {
-    let co = M::coeffs::<f64>();
-    let (mut a, mut b) = (*y0, *y0);
-    let mut work = [0.0; 24];
-    let mut cached = false;
-    for i in 0..steps {
-        let (from, to) = if i % 2 == 0 { (&a, &mut b) } else { (&b, &mut a) };
+    let mut word = Word::<M>::new();
+    ping_pong(steps, y0, |i, from, to| {
         to.copy_from_slice(from);
-        let (q, p) = to.split_at_mut(12);
-        let (v, f) = work.split_at_mut(12);
-        M::flows(&co, &s.nbody, i as f64 * h, h, q, p, v, f, &mut (), cached);
-        cached = M::DATA.flags.fsal;
-    }
-    if steps % 2 == 0 {
-        a
-    } else {
-        b
-    }
+        word.apply(s, i, h, to);
+    })
 }
 
 /// As `generated_flows_copy`, but the word runs on a local copy written back at the end.
 fn generated_flows_local<M: SplittingMethod>(s: &Setup, steps: usize, h: f64, y0: &[f64; 24]) -> [f64; 24] {
-    let co = M::coeffs::<f64>();
-    let (mut a, mut b) = (*y0, *y0);
-    let mut work = [0.0; 24];
-    let mut cached = false;
-    for i in 0..steps {
-        let (from, to) = if i % 2 == 0 { (&a, &mut b) } else { (&b, &mut a) };
+    let mut word = Word::<M>::new();
+    ping_pong(steps, y0, |i, from, to| {
         let mut local = *from;
-        let (q, p) = local.split_at_mut(12);
-        let (v, f) = work.split_at_mut(12);
-        M::flows(&co, &s.nbody, i as f64 * h, h, q, p, v, f, &mut (), cached);
+        word.apply(s, i, h, &mut local);
         *to = local;
-        cached = M::DATA.flags.fsal;
-    }
-    if steps % 2 == 0 {
-        a
-    } else {
-        b
-    }
+    })
 }
 
 /// Keeps the last record only.
@@ -406,10 +420,7 @@ fn file_scene<M: SplittingMethod>(s: &Setup, steps: usize, h: f64) -> DVector<f6
 where
     SplittingStepper<M, DVector<f64>>: Stepper<FileProblem>,
 {
-    match SplittingStepper::<M, DVector<f64>>::new(&s.y0_file) {
-        Ok(mut st) => with_stepper(&s.file, &mut st, steps, h, &s.y0_file),
-        Err(e) => panic!("{e}"),
-    }
+    with_new_stepper::<M, _>(&s.file, steps, h, &s.y0_file)
 }
 
 /// Force evaluations alone: `steps` evaluations of `NBody`'s force, and of the hand one.
@@ -583,7 +594,5 @@ fn interleaved_ratios() {
 criterion_group!(benches, bench);
 
 fn main() {
-    benches();
-    interleaved_ratios();
-    Criterion::default().configure_from_args().final_summary();
+    interleaved::main(benches, interleaved_ratios);
 }

@@ -10,6 +10,10 @@ use stormer::magnetic::Charged;
 use stormer::{registry, Driver, ImplicitOptions, Method, Problem, Solution, StepControl, Stepper, Tolerances};
 use stormer_app::scenes::{self, AnyScene, RestrictedThreeBody, Setup};
 
+#[path = "support/refusals.rs"]
+mod refusals;
+use refusals::splitting_refusal;
+
 /// The built-in scene.
 fn arenstorf() -> Setup<Charged<RestrictedThreeBody>> {
     match scenes::load("arenstorf").unwrap() {
@@ -102,12 +106,7 @@ fn the_magnetic_verlet_alone_is_far_off_at_that_step() {
 fn the_coriolis_force_cannot_be_a_kick() {
     // A Runge-Kutta-Nystrom method assumes the force depends on positions only.
     let s = arenstorf();
-    let rkn = Method::Splitting(registry::find_splitting("blanes_moan_srkn11b").unwrap());
-    let message = rkn
-        .stepper_for(&s.model, &s.y0, &Default::default())
-        .err()
-        .unwrap()
-        .to_string();
+    let message = splitting_refusal(&s, "blanes_moan_srkn11b");
     assert!(message.contains("quadratic in p"), "{message}");
 }
 

@@ -8,7 +8,7 @@ use std::process::{Command, Stdio};
 
 #[path = "support/binary.rs"]
 mod binary;
-use binary::{assert_error, assert_ok, stderr, stdout, stormer};
+use binary::{assert_error, assert_ok, stderr, stdout, stormer, stormer_ok};
 
 /// A fresh directory for one test.
 fn workdir(name: &str) -> PathBuf {
@@ -26,10 +26,31 @@ fn read_csv(path: &Path) -> (Vec<String>, Vec<Vec<f64>>) {
     (header, rows)
 }
 
+/// The summary (stderr) of a run of `args` in `dir` that succeeds.
+#[track_caller]
+fn run_summary(dir: &Path, args: &[&str]) -> String {
+    stderr(&stormer_ok(dir, args))
+}
+
+/// A run of `args` in `dir` that succeeds: its summary (stderr) and the CSV it wrote at
+/// `csv` (relative to `dir`), as (header, rows of numbers).
+#[track_caller]
+fn run_csv(dir: &Path, args: &[&str], csv: &str) -> (String, Vec<String>, Vec<Vec<f64>>) {
+    let summary = run_summary(dir, args);
+    let (header, rows) = read_csv(&dir.join(csv));
+    (summary, header, rows)
+}
+
+/// What a run of `args` in `dir` that succeeds prints, read as JSON.
+#[track_caller]
+fn json(dir: &Path, args: &[&str]) -> serde_json::Value {
+    serde_json::from_str(&stdout(&stormer_ok(dir, args))).unwrap()
+}
+
 #[test]
 fn damped_oscillator_reproduces_the_exact_solution() {
     let dir = workdir("damped");
-    let out = stormer(
+    let (summary, header, rows) = run_csv(
         &dir,
         &[
             "run",
@@ -41,15 +62,13 @@ fn damped_oscillator_reproduces_the_exact_solution() {
             "--t-end",
             "10",
         ],
+        "out/damped-oscillator-rk4.csv",
     );
-    assert_ok(&out);
-    let summary = stderr(&out);
     assert!(
         summary.contains("10000 steps") && summary.contains("max error vs exact"),
         "{summary}"
     );
     assert!(!summary.contains("dE"), "no energy for a damped oscillator: {summary}");
-    let (header, rows) = read_csv(&dir.join("out/damped-oscillator-rk4.csv"));
     assert_eq!(header, ["t", "x", "v"]);
     assert_eq!(rows.len(), 10001);
     // SCENES.md 2, written here as a phase-shifted cosine: x = A e^{-g t} cos(wd t - phi).
@@ -75,7 +94,7 @@ fn damped_oscillator_reproduces_the_exact_solution() {
 fn adaptive_dop853_on_the_harmonic_oscillator() {
     let dir = workdir("adaptive");
     let csv = dir.join("h.csv");
-    let out = stormer(
+    let summary = run_summary(
         &dir,
         &[
             "run",
@@ -90,8 +109,7 @@ fn adaptive_dop853_on_the_harmonic_oscillator() {
             csv.to_str().unwrap(),
         ],
     );
-    assert_ok(&out);
-    assert!(stderr(&out).contains("rejected"), "{}", stderr(&out));
+    assert!(summary.contains("rejected"), "{summary}");
     let (header, rows) = read_csv(&csv);
     assert_eq!(header, ["t", "x", "v", "energy"]);
     assert!(
@@ -114,14 +132,13 @@ fn csv_round_trip_is_bitwise() {
     use stormer::{registry, Driver, ImplicitOptions};
     use stormer_app::scenes::Pendulum;
     let dir = workdir("roundtrip");
-    let out = stormer(
+    let (_, header, rows) = run_csv(
         &dir,
         &[
             "run", "pendulum", "--method", "dop853", "--dt", "0.03", "--t-end", "7", "--every", "7",
         ],
+        "out/pendulum-dop853.csv",
     );
-    assert_ok(&out);
-    let (header, rows) = read_csv(&dir.join("out/pendulum-dop853.csv"));
     assert_eq!(header, ["t", "theta", "omega", "energy"]);
     let y0 = [std::f64::consts::FRAC_PI_4, 0.0];
     let mut stepper = registry::stepper::<Pendulum>("dop853", &y0, &ImplicitOptions::default()).unwrap();
@@ -141,9 +158,7 @@ fn csv_round_trip_is_bitwise() {
 #[test]
 fn methods_json_lists_the_catalog() {
     let dir = workdir("methods");
-    let out = stormer(&dir, &["methods", "--format", "json"]);
-    assert_ok(&out);
-    let list: serde_json::Value = serde_json::from_str(&stdout(&out)).unwrap();
+    let list = json(&dir, &["methods", "--format", "json"]);
     let list = list.as_array().unwrap();
     assert_eq!(list.len(), 31 + 37 + 21 + 3);
     for m in list {
@@ -207,8 +222,7 @@ fn methods_json_lists_the_catalog() {
             ("euler_cromer", 1, false)
         ]
     );
-    let table = stormer(&dir, &["methods"]);
-    assert_ok(&table);
+    let table = stormer_ok(&dir, &["methods"]);
     let text = stdout(&table);
     assert!(text.lines().next().unwrap().starts_with("name"));
     assert_eq!(text.lines().count(), 1 + 31 + 37 + 21 + 3);
@@ -234,9 +248,7 @@ fn a_closed_pipe_is_not_an_error() {
 #[test]
 fn verify_rk4_json() {
     let dir = workdir("verify");
-    let out = stormer(&dir, &["verify", "rk4", "--format", "json"]);
-    assert_ok(&out);
-    let v: serde_json::Value = serde_json::from_str(&stdout(&out)).unwrap();
+    let v = json(&dir, &["verify", "rk4", "--format", "json"]);
     assert_eq!(v["name"], "rk4");
     assert_eq!(v["declared_order"], 4);
     assert_eq!(v["order_conditions_ok"], true);
@@ -296,8 +308,7 @@ fn a_method_file_runs() {
         (v["declared_order"].as_u64(), v["achieved_order"].as_u64()),
         (Some(2), Some(2))
     );
-    let out = stormer(&dir, &["run", "harmonic", "--method", "heun.toml", "--t-end", "1"]);
-    assert_ok(&out);
+    stormer_ok(&dir, &["run", "harmonic", "--method", "heun.toml", "--t-end", "1"]);
     assert!(dir.join("out/harmonic-my_heun.csv").is_file());
 }
 
@@ -305,32 +316,29 @@ fn a_method_file_runs() {
 fn method_names() {
     let dir = workdir("names");
     // `-` and `_` are both accepted, and optional when unambiguous.
-    assert_ok(&stormer(
-        &dir,
-        &["run", "harmonic", "--method", "rk-4", "--t-end", "0.1"],
-    ));
-    assert_ok(&stormer(
+    stormer_ok(&dir, &["run", "harmonic", "--method", "rk-4", "--t-end", "0.1"]);
+    stormer_ok(
         &dir,
         &["run", "harmonic", "--method", "gauss-legendre4", "--t-end", "0.01"],
-    ));
-    assert_ok(&stormer(&dir, &["verify", "Dormand-Prince5"]));
+    );
+    stormer_ok(&dir, &["verify", "Dormand-Prince5"]);
     assert_error(
         &stormer(&dir, &["run", "harmonic", "--method", "rk5", "--t-end", "0.1"]),
         "did you mean",
     );
     // the names users bring from scipy, OrdinaryDiffEq.jl and REBOUND are aliases
-    assert_ok(&stormer(&dir, &["verify", "dopri853"]));
+    stormer_ok(&dir, &["verify", "dopri853"]);
     assert_error(&stormer(&dir, &["verify", "dopri"]), "did you mean");
     assert_error(
         &stormer(&dir, &["run", "harmonic", "--method", "rk4", "--alpha", "0.3"]),
         "--alpha",
     );
-    assert_ok(&stormer(
+    stormer_ok(
         &dir,
         &[
             "run", "harmonic", "--method", "theta", "--alpha", "0.5", "--dt", "0.01", "--t-end", "0.1",
         ],
-    ));
+    );
 }
 
 #[test]
@@ -386,7 +394,7 @@ fn lobatto_iiib4_refuses_adaptive_steps() {
         );
     }
     assert!(!dir.join("out").exists(), "nothing is written for a refused run");
-    assert_ok(&stormer(
+    stormer_ok(
         &dir,
         &[
             "run",
@@ -398,10 +406,8 @@ fn lobatto_iiib4_refuses_adaptive_steps() {
             "--t-end",
             "10",
         ],
-    ));
-    let out = stormer(&dir, &["methods", "--format", "json"]);
-    assert_ok(&out);
-    let list: serde_json::Value = serde_json::from_str(&stdout(&out)).unwrap();
+    );
+    let list = json(&dir, &["methods", "--format", "json"]);
     let iiib = list
         .as_array()
         .unwrap()
@@ -460,13 +466,14 @@ fn malformed_scene_files() {
 #[test]
 fn a_copied_scene_file_runs() {
     let dir = workdir("copied-scene");
-    let show = stormer(&dir, &["scene", "show", "pendulum"]);
-    assert_ok(&show);
+    let show = stormer_ok(&dir, &["scene", "show", "pendulum"]);
     let text = stdout(&show).replace("t_end = 60.0", "t_end = 3.0");
     std::fs::write(dir.join("my-pendulum.toml"), text).unwrap();
-    let out = stormer(&dir, &["run", "my-pendulum.toml", "--method", "dormand-prince5"]);
-    assert_ok(&out);
-    let (_, rows) = read_csv(&dir.join("out/my-pendulum-dormand_prince5.csv"));
+    let (_, _, rows) = run_csv(
+        &dir,
+        &["run", "my-pendulum.toml", "--method", "dormand-prince5"],
+        "out/my-pendulum-dormand_prince5.csv",
+    );
     assert_eq!(rows.last().unwrap()[0], 3.0);
     let list = stdout(&stormer(&dir, &["scene", "list"]));
     for name in ["pendulum", "harmonic", "damped-oscillator"] {
@@ -515,14 +522,9 @@ fn a_failing_run_keeps_its_records() {
 #[test]
 fn verify_measures_order_symplecticity_and_reversibility() {
     let dir = workdir("verify-checks");
-    let json = |args: &[&str]| -> serde_json::Value {
-        let out = stormer(&dir, args);
-        assert_ok(&out);
-        serde_json::from_str(&stdout(&out)).unwrap()
-    };
     let f = |v: &serde_json::Value, key: &str| v[key].as_f64().unwrap_or_else(|| panic!("{key}: {v}"));
     // a sixth-order composition: order 6 measured, defect at round-off, reversible
-    let v = json(&["verify", "kahan_li6", "--format", "json"]);
+    let v = json(&dir, &["verify", "kahan_li6", "--format", "json"]);
     assert_eq!(v["family"], "composition");
     assert!((f(&v, "measured_order") - 6.0).abs() <= 0.2, "{v}");
     assert_eq!(v["measured_order_problem"], "quartic_kinetic");
@@ -534,7 +536,7 @@ fn verify_measures_order_symplecticity_and_reversibility() {
     assert!(f(&v, "symplectic_defect_bound") < 1e-13, "a round-off bound: {v}");
     assert!(f(&v, "reversibility_defect") <= f(&v, "reversibility_defect_bound"));
     // RK4: fourth order, neither symplectic nor reversible, by orders of magnitude
-    let v = json(&["verify", "rk4", "--format", "json"]);
+    let v = json(&dir, &["verify", "rk4", "--format", "json"]);
     assert!((f(&v, "measured_order") - 4.0).abs() <= 0.2, "{v}");
     assert_eq!(
         (v["symplectic"].as_bool(), v["reversible"].as_bool()),
@@ -543,7 +545,7 @@ fn verify_measures_order_symplecticity_and_reversibility() {
     assert!(f(&v, "symplectic_defect") > 1e6 * f(&v, "symplectic_defect_bound"));
     assert_eq!(v["symplectic_condition"], false);
     // a Runge-Kutta-Nystrom splitting is measured on a quadratic kinetic energy
-    let v = json(&["verify", "mclachlan-atela4", "--format", "json"]);
+    let v = json(&dir, &["verify", "mclachlan-atela4", "--format", "json"]);
     assert_eq!(v["measured_order_problem"], "henon_heiles");
     assert!((f(&v, "measured_order") - 4.0).abs() <= 0.2, "{v}");
     // the text form says it in words
@@ -559,9 +561,7 @@ fn verify_reads_splitting_and_composition_files() {
     let dir = workdir("verify-splitting-files");
     let leapfrog = "name = \"my_leapfrog\"\nfamily = \"splitting\"\norder = 2\ndrift = [\"1/2\", \"1/2\"]\nkick = [\"1\", \"0\"]\n";
     std::fs::write(dir.join("leapfrog.toml"), leapfrog).unwrap();
-    let out = stormer(&dir, &["verify", "leapfrog.toml", "--format", "json"]);
-    assert_ok(&out);
-    let v: serde_json::Value = serde_json::from_str(&stdout(&out)).unwrap();
+    let v = json(&dir, &["verify", "leapfrog.toml", "--format", "json"]);
     assert_eq!(
         (v["name"].as_str(), v["family"].as_str()),
         (Some("my_leapfrog"), Some("splitting"))
@@ -582,12 +582,7 @@ fn verify_reads_splitting_and_composition_files() {
 #[test]
 fn verify_reports_the_stability_interval() {
     let dir = workdir("verify-stability");
-    let json = |args: &[&str]| -> serde_json::Value {
-        let out = stormer(&dir, args);
-        assert_ok(&out);
-        serde_json::from_str(&stdout(&out)).unwrap()
-    };
-    let interval = |method: &str| json(&["verify", method, "--format", "json"])["stability_interval"].clone();
+    let interval = |method: &str| json(&dir, &["verify", method, "--format", "json"])["stability_interval"].clone();
     let close = |v: serde_json::Value, x: f64| {
         let got = v.as_f64().unwrap_or_else(|| panic!("a number: {v}"));
         assert!((got - x).abs() < 1e-9, "{got} vs {x}");
@@ -635,9 +630,7 @@ fn verify_reports_the_stability_interval() {
 fn verify_measures_tableaus_on_the_tree_system() {
     let dir = workdir("verify-tree");
     for (method, p, q) in [("verner6", 6.0, 5.0), ("verner9", 9.0, 8.0)] {
-        let out = stormer(&dir, &["verify", method, "--format", "json"]);
-        assert_ok(&out);
-        let v: serde_json::Value = serde_json::from_str(&stdout(&out)).unwrap();
+        let v = json(&dir, &["verify", method, "--format", "json"]);
         assert_eq!(v["measured_order_problem"], "tree_system", "{v}");
         assert!((v["measured_order"].as_f64().unwrap() - p).abs() <= 0.2, "{v}");
         assert!((v["measured_embedded_order"].as_f64().unwrap() - q).abs() <= 0.2, "{v}");
@@ -679,24 +672,21 @@ fn splittings_run_on_every_hamiltonian_scene() {
         ("outer-solar-system", "velocity_verlet_kdk", "1000", 101),
     ];
     for (scene, method, t_end, evaluations) in runs {
-        let out = stormer(&dir, &["run", scene, "--method", method, "--t-end", t_end]);
-        assert_ok(&out);
-        let summary = stderr(&out);
+        let summary = run_summary(&dir, &["run", scene, "--method", method, "--t-end", t_end]);
         assert!(summary.contains("100 steps"), "{summary}");
         assert_eq!(summary_number(&summary, "steps,") as u64, evaluations, "{summary}");
         assert!(summary_number(&summary, "max |dE/E0|") < 1e-3, "{summary}");
     }
     // The pendulum keeps its columns; Verlet's energy error stays small where explicit
     // Euler's drifts up by a third over the minute (SCENES.md 1).
-    let out = stormer(
+    let (summary, header, rows) = run_csv(
         &dir,
         &["run", "pendulum", "--method", "velocity_verlet_kdk", "--every", "100"],
+        "out/pendulum-velocity_verlet_kdk.csv",
     );
-    assert_ok(&out);
-    let (header, rows) = read_csv(&dir.join("out/pendulum-velocity_verlet_kdk.csv"));
     assert_eq!(header, ["t", "theta", "omega", "energy"]);
     assert_eq!(rows.len(), 61);
-    let verlet = summary_number(&stderr(&out), "max |dE/E0|");
+    let verlet = summary_number(&summary, "max |dE/E0|");
     let euler = summary_number(
         &stderr(&stormer(
             &dir,
@@ -712,7 +702,7 @@ fn a_splitting_method_file_runs_on_a_scene() {
     let dir = workdir("splitting-file");
     let leapfrog = "name = \"my_leapfrog\"\norder = 2\ndrift = [\"1/2\", \"1/2\"]\nkick = [\"1\", \"0\"]\n";
     std::fs::write(dir.join("leapfrog.toml"), leapfrog).unwrap();
-    let out = stormer(
+    let summary = run_summary(
         &dir,
         &[
             "run",
@@ -723,14 +713,12 @@ fn a_splitting_method_file_runs_on_a_scene() {
             "6.283185307179586",
         ],
     );
-    assert_ok(&out);
     assert!(
-        stderr(&out).starts_with("my_leapfrog on kepler-e06: 1000 steps"),
-        "{}",
-        stderr(&out)
+        summary.starts_with("my_leapfrog on kepler-e06: 1000 steps"),
+        "{summary}"
     );
     // the same coefficients as the catalog's stormer_verlet_dkd: the same numbers, bit for bit
-    let catalog = stormer(
+    stormer_ok(
         &dir,
         &[
             "run",
@@ -741,7 +729,6 @@ fn a_splitting_method_file_runs_on_a_scene() {
             "6.283185307179586",
         ],
     );
-    assert_ok(&catalog);
     let a = std::fs::read_to_string(dir.join("out/kepler-e06-my_leapfrog.csv")).unwrap();
     let b = std::fs::read_to_string(dir.join("out/kepler-e06-stormer_verlet_dkd.csv")).unwrap();
     assert_eq!(a, b);
@@ -775,10 +762,10 @@ fn incompatible_method_and_scene_pairs_are_refused_with_the_reason() {
     assert!(!dir.join("out").exists(), "nothing is written for a refused run");
     // while Runge-Kutta methods run on every scene, Hamiltonian or not
     for scene in ["damped-oscillator", "kepler", "kepler-e06", "outer-solar-system"] {
-        assert_ok(&stormer(
+        stormer_ok(
             &dir,
             &["run", scene, "--method", "rk4", "--t-end", "0.1", "--dt", "0.01"],
-        ));
+        );
     }
 }
 
@@ -788,19 +775,14 @@ fn the_kepler_scene_has_the_users_period() {
     // apocentre with the relative y-coordinate rising through 0; it does so again one
     // period later, located by interpolating between DOP853 records 1e-3 years apart.
     let dir = workdir("kepler-period");
-    let out = stormer(
+    let (summary, header, rows) = run_csv(
         &dir,
         &[
             "run", "kepler", "--method", "dop853", "--dt", "0.001", "--t-end", "3", "--every", "1",
         ],
+        "out/kepler-dop853.csv",
     );
-    assert_ok(&out);
-    assert!(
-        summary_number(&stderr(&out), "max error vs exact") < 1e-9,
-        "{}",
-        stderr(&out)
-    );
-    let (header, rows) = read_csv(&dir.join("out/kepler-dop853.csv"));
+    assert!(summary_number(&summary, "max error vs exact") < 1e-9, "{summary}");
     assert_eq!(
         header,
         [
@@ -830,8 +812,7 @@ fn the_kepler_scene_has_the_users_period() {
 #[test]
 fn neptune_and_pluto_are_added_by_editing_the_scene_file() {
     let dir = workdir("neptune-pluto");
-    let show = stormer(&dir, &["scene", "show", "outer-solar-system"]);
-    assert_ok(&show);
+    let show = stormer_ok(&dir, &["scene", "show", "outer-solar-system"]);
     // values of Hairer, Lubich, Wanner, GNI I.2.4, as SCENES.md 4 suggests
     let added = "[[bodies]]\nname = \"Neptune\"\nmass = 0.0000517759138449\n\
                  position = [11.4707666, -25.7294829, -10.8169456]\n\
@@ -841,13 +822,12 @@ fn neptune_and_pluto_are_added_by_editing_the_scene_file() {
                  velocity = [0.00276725, -0.00170702, -0.00136504]\n\n[run]";
     let text = stdout(&show).replacen("[run]", added, 1);
     std::fs::write(dir.join("six-bodies.toml"), text).unwrap();
-    let out = stormer(
+    let (summary, header, rows) = run_csv(
         &dir,
         &["run", "six-bodies.toml", "--method", "triple_jump4", "--t-end", "10000"],
+        "out/six-bodies-triple_jump4.csv",
     );
-    assert_ok(&out);
-    assert!(summary_number(&stderr(&out), "max |dE/E0|") < 1e-7, "{}", stderr(&out));
-    let (header, rows) = read_csv(&dir.join("out/six-bodies-triple_jump4.csv"));
+    assert!(summary_number(&summary, "max |dE/E0|") < 1e-7, "{summary}");
     assert_eq!(header.len(), 1 + 36 + 1);
     assert_eq!(&header[13..16], ["neptune_x", "neptune_y", "neptune_z"]);
     assert_eq!(header[36], "pluto_pz");
@@ -871,7 +851,7 @@ use users_magnetic_verlet::users_magnetic_verlet;
 fn coulomb_magnetic_with_velocity_verlet_is_the_users_magnetic_verlet() {
     // SCENES.md 5's reference run, spelled out as the issue does
     let dir = workdir("coulomb-magnetic");
-    let out = stormer(
+    let (summary, header, rows) = run_csv(
         &dir,
         &[
             "run",
@@ -885,14 +865,12 @@ fn coulomb_magnetic_with_velocity_verlet_is_the_users_magnetic_verlet() {
             "--every",
             "10",
         ],
+        "out/coulomb-magnetic-velocity_verlet_kdk.csv",
     );
-    assert_ok(&out);
-    let summary = stderr(&out);
     assert!(
         summary.starts_with("velocity_verlet_kdk on coulomb-magnetic: 10000 steps, 10001 evaluations"),
         "{summary}"
     );
-    let (header, rows) = read_csv(&dir.join("out/coulomb-magnetic-velocity_verlet_kdk.csv"));
     assert_eq!(header, ["t", "x", "y", "z", "vx", "vy", "vz", "energy"]);
     assert_eq!(rows.len(), 1001, "1000 records after the initial one");
     // the same sequence of operations as the users' loop: the same numbers to round-off
@@ -930,14 +908,9 @@ fn charged_particle_methods_run_on_charged_particle_scenes_only() {
     ] {
         let mut args = vec!["run", "penning-trap", "--method", method, "--t-end", "1"];
         args.extend_from_slice(extra);
-        let out = stormer(&dir, &args);
-        assert_ok(&out);
+        let summary = run_summary(&dir, &args);
         // (Euler-Cromer, first order, is at 4e-2)
-        assert!(
-            summary_number(&stderr(&out), "max |dE/E0|") < 0.1,
-            "{method}: {}",
-            stderr(&out)
-        );
+        assert!(summary_number(&summary, "max |dE/E0|") < 0.1, "{method}: {summary}");
     }
     let (header, _) = read_csv(&dir.join("out/penning-trap-boris.csv"));
     assert_eq!(header.len(), 1 + 18 + 1);
@@ -972,14 +945,8 @@ fn exb_drift_with_boris_moves_with_the_drift_velocity() {
     // B = (0, 0, 1), E = (0.5, 0, 0), unit ratio: omega = -B, a = E. The guiding centre
     // R = q + (omega x v + a)/|omega|^2 moves with E x B/|B|^2 = (0, -0.5, 0).
     let dir = workdir("exb-drift");
-    let out = stormer(&dir, &["run", "exb-drift"]);
-    assert_ok(&out);
-    assert!(
-        stderr(&out).starts_with("boris on exb-drift: 6284 steps"),
-        "{}",
-        stderr(&out)
-    );
-    let (header, rows) = read_csv(&dir.join("out/exb-drift-boris.csv"));
+    let (summary, header, rows) = run_csv(&dir, &["run", "exb-drift"], "out/exb-drift-boris.csv");
+    assert!(summary.starts_with("boris on exb-drift: 6284 steps"), "{summary}");
     assert_eq!(header, ["t", "x", "y", "z", "vx", "vy", "vz", "energy"]);
     let centre = |r: &[f64]| [r[1] + r[5] + 0.5, r[2] - r[4], r[3]];
     // it oscillates with Boris's discrete gyration (amplitude measured 2.5e-5) about a
@@ -997,11 +964,7 @@ fn exb_drift_with_boris_moves_with_the_drift_velocity() {
     });
     assert!(worst < 5e-5, "guiding centre off the E x B drift by {worst:e}");
     // and the particle itself follows the exact cycloid to Boris's phase error
-    assert!(
-        summary_number(&stderr(&out), "max error vs exact") < 1e-3,
-        "{}",
-        stderr(&out)
-    );
+    assert!(summary_number(&summary, "max error vs exact") < 1e-3, "{summary}");
 
     // PERFORMANCE.md's trade-off at omega h = 1: started on the drift velocity, Boris moves
     // exactly with it, Boris with the exact phase lags by u t (1 - (x/2)/tan(x/2)), x = 1
@@ -1009,12 +972,11 @@ fn exb_drift_with_boris_moves_with_the_drift_velocity() {
     let text = stdout(&show).replace("velocity = [0.0, 0.0, 0.0]", "velocity = [0.0, -0.5, 0.0]");
     std::fs::write(dir.join("on-drift.toml"), text).unwrap();
     let error = |method: &str| {
-        let out = stormer(
+        let summary = run_summary(
             &dir,
             &["run", "on-drift.toml", "--method", method, "--dt", "1", "--t-end", "10"],
         );
-        assert_ok(&out);
-        summary_number(&stderr(&out), "max error vs exact")
+        summary_number(&summary, "max error vs exact")
     };
     assert!(error("boris") < 1e-12);
     let lag = 0.5 * 10.0 * (1.0 - 0.5 / 0.5f64.tan());
@@ -1029,9 +991,7 @@ fn exb_drift_with_boris_moves_with_the_drift_velocity() {
 fn the_cyclotron_follows_its_exact_helix() {
     let dir = workdir("cyclotron");
     for dt in ["0.1", "1", "5"] {
-        let out = stormer(&dir, &["run", "cyclotron", "--dt", dt]);
-        assert_ok(&out);
-        let summary = stderr(&out);
+        let summary = run_summary(&dir, &["run", "cyclotron", "--dt", dt]);
         assert!(
             summary_number(&summary, "max error vs exact") < 1e-12,
             "dt {dt}: {summary}"
@@ -1060,28 +1020,20 @@ fn arenstorf_closes_its_orbit_from_the_command_line() {
         ),
     ];
     for (args, file, measured) in runs {
-        let out = stormer(&dir, args);
-        assert_ok(&out);
-        let summary = stderr(&out);
+        let (summary, header, rows) = run_csv(&dir, args, file);
         // the summary's error is the distance from the start after the period
         let closure = summary_number(&summary, "max error vs exact");
         assert!(closure < 1e-6, "{summary}");
         assert!((closure / measured - 1.0).abs() < 0.05, "{summary}");
         assert!(summary_number(&summary, "max |dE/E0|") < 1e-9, "{summary}");
-        let (header, rows) = read_csv(&dir.join(file));
         assert_eq!(header, ["t", "x", "y", "z", "vx", "vy", "vz", "energy"]);
         let last = rows.last().unwrap();
         assert_eq!(last[0], period);
         assert!((1..7).all(|i| (last[i] - start[i - 1]).abs() < 1e-6), "{last:?}");
     }
     // the scene's own run is the fixed-step composition
-    let out = stormer(&dir, &["run", "arenstorf"]);
-    assert_ok(&out);
-    assert!(
-        stderr(&out).contains("kahan_li6 on arenstorf: 85327 steps"),
-        "{}",
-        stderr(&out)
-    );
+    let summary = run_summary(&dir, &["run", "arenstorf"]);
+    assert!(summary.contains("kahan_li6 on arenstorf: 85327 steps"), "{summary}");
     // the Coriolis force is not a kick: RKN methods are refused
     assert_error(
         &stormer(&dir, &["run", "arenstorf", "--method", "blanes_moan_srkn11b"]),
@@ -1127,8 +1079,7 @@ fn the_free_kick_stops_when_the_ball_lands() {
     assert!((last[0] - t1).abs() < 1e-9 && last[2].abs() < 1e-12, "{last:?}");
     assert!(rows.windows(2).all(|w| w[1][5] < w[0][5]));
     // a run that ends in the air says so
-    let short = stormer(&dir, &["run", "free-kick", "--t-end", "0.5"]);
-    assert_ok(&short);
+    let short = stormer_ok(&dir, &["run", "free-kick", "--t-end", "0.5"]);
     assert!(
         stderr(&short).contains("no landing before t = 0.5"),
         "{}",
@@ -1150,7 +1101,7 @@ fn compare_and_scan_measure_the_free_kick_at_its_landing() {
     let compare: Vec<&str> = "compare free-kick --methods rk4,dop853 --dt 0.001 --t-end 3"
         .split(' ')
         .collect();
-    assert_ok(&stormer(&dir, &with_quick(&compare)));
+    stormer_ok(&dir, &with_quick(&compare));
     let (header, rows) = read_table(&dir.join("out/compare-free-kick.csv"));
     assert_eq!(rows.len(), 2);
     let cell = |row: &[String], name: &str| -> f64 { row[column(&header, name)].parse().unwrap() };
@@ -1189,7 +1140,7 @@ fn compare_and_scan_measure_the_free_kick_at_its_landing() {
     let scan: Vec<&str> = "scan free-kick --method heun2 --steps 300,600,1200 --t-end 3"
         .split(' ')
         .collect();
-    assert_ok(&stormer(&dir, &with_quick(&scan)));
+    stormer_ok(&dir, &with_quick(&scan));
     let (header, rows) = read_table(&dir.join("out/scan-free-kick-heun2.csv"));
     let cell = |row: &[String], name: &str| -> f64 { row[column(&header, name)].parse().unwrap() };
     for row in &rows {
@@ -1258,11 +1209,10 @@ fn compare_runs_on_every_kind_of_scene() {
         ("outer-solar-system", "triple_jump4,rk4", "100,50", "4000", "reference"),
     ];
     for &(scene, methods, dt, t_end, truth) in cases {
-        let out = stormer(
+        let out = stormer_ok(
             &dir,
             &with_quick(&["compare", scene, "--methods", methods, "--dt", dt, "--t-end", t_end]),
         );
-        assert_ok(&out);
         let summary = stderr(&out);
         let expected = if truth == "exact" {
             "against the exact solution"
@@ -1322,8 +1272,7 @@ fn compare_with_tolerances_and_the_cached_reference() {
         "--t-end",
         "10",
     ]);
-    let out = stormer(&dir, &args);
-    assert_ok(&out);
+    stormer_ok(&dir, &args);
     let (header, rows) = read_table(&dir.join("out/compare-pendulum.csv"));
     // dop853 at the step and both tolerances; rk4 (no embedded pair) at the step only
     assert_eq!(rows.len(), 4);
@@ -1341,7 +1290,7 @@ fn compare_with_tolerances_and_the_cached_reference() {
     let name = cached[0].file_name().unwrap().to_string_lossy().into_owned();
     assert!(name.starts_with("pendulum-t10.0-") && name.ends_with(".json"), "{name}");
     let before = std::fs::metadata(&cached[0]).unwrap().modified().unwrap();
-    assert_ok(&stormer(&dir, &args));
+    stormer_ok(&dir, &args);
     assert_eq!(std::fs::metadata(&cached[0]).unwrap().modified().unwrap(), before);
     // a reference that is not the scene's would show in the errors: replace its state by
     // zeros and the error becomes the size of the state
@@ -1351,75 +1300,63 @@ fn compare_with_tolerances_and_the_cached_reference() {
         *x = serde_json::json!(0.0);
     }
     std::fs::write(&cached[0], json.to_string()).unwrap();
-    assert_ok(&stormer(&dir, &args));
+    stormer_ok(&dir, &args);
     let (_, rows) = read_table(&dir.join("out/compare-pendulum.csv"));
     let error: f64 = rows[0][column(&header, "error")].parse().unwrap();
     assert!(error > 0.1, "the cached reference was not used: {error}");
     // another span, another reference
-    let out = stormer(
+    stormer_ok(
         &dir,
         &with_quick(&["compare", "pendulum", "--methods", "rk4", "--dt", "0.1", "--t-end", "5"]),
     );
-    assert_ok(&out);
     assert_eq!(std::fs::read_dir(dir.join("out/references")).unwrap().count(), 2);
 }
 
 #[test]
 fn compare_and_scan_refuse_incompatible_methods_with_the_reason() {
     let dir = workdir("compare-refused");
-    let out = stormer(
-        &dir,
-        &with_quick(&[
-            "compare",
-            "damped-oscillator",
-            "--methods",
-            "rk4,velocity_verlet_kdk",
-            "--dt",
-            "0.01",
-        ]),
-    );
-    assert_error(
-        &out,
-        "velocity_verlet_kdk cannot be used here: the damped oscillator is not a Hamiltonian system",
-    );
-    let out = stormer(
-        &dir,
-        &with_quick(&[
-            "scan",
-            "damped-oscillator",
-            "--method",
-            "triple_jump4",
-            "--steps",
-            "10,20",
-        ]),
-    );
-    assert_error(&out, "not a Hamiltonian system");
-    let out = stormer(
-        &dir,
-        &with_quick(&["compare", "pendulum", "--methods", "rk4,dop853", "--tolerances", "1e-6"]),
-    );
-    assert_error(&out, "rk4 cannot be used here: it has no embedded error estimate");
-    let out = stormer(
-        &dir,
-        &with_quick(&["compare", "pendulum", "--methods", "rk5", "--dt", "0.1"]),
-    );
-    assert_error(&out, "rk5");
-    let out = stormer(&dir, &with_quick(&["compare", "pendulum", "--methods", "rk4"]));
-    assert_error(&out, "--dt/--tolerances");
-    let out = stormer(
-        &dir,
-        &with_quick(&["compare", "pendulum", "--methods", "rk4,rk4", "--dt", "0.1"]),
-    );
-    assert_error(&out, "rk4 is given twice");
-    let out = stormer(
-        &dir,
-        &with_quick(&["scan", "pendulum", "--method", "rk4", "--steps", "0,10"]),
-    );
-    assert_error(&out, "--steps");
+    let refusals: [(&[&str], &str); 7] = [
+        (
+            &[
+                "compare",
+                "damped-oscillator",
+                "--methods",
+                "rk4,velocity_verlet_kdk",
+                "--dt",
+                "0.01",
+            ],
+            "velocity_verlet_kdk cannot be used here: the damped oscillator is not a Hamiltonian system",
+        ),
+        (
+            &[
+                "scan",
+                "damped-oscillator",
+                "--method",
+                "triple_jump4",
+                "--steps",
+                "10,20",
+            ],
+            "not a Hamiltonian system",
+        ),
+        (
+            &["compare", "pendulum", "--methods", "rk4,dop853", "--tolerances", "1e-6"],
+            "rk4 cannot be used here: it has no embedded error estimate",
+        ),
+        (&["compare", "pendulum", "--methods", "rk5", "--dt", "0.1"], "rk5"),
+        (&["compare", "pendulum", "--methods", "rk4"], "--dt/--tolerances"),
+        (
+            &["compare", "pendulum", "--methods", "rk4,rk4", "--dt", "0.1"],
+            "rk4 is given twice",
+        ),
+        (&["scan", "pendulum", "--method", "rk4", "--steps", "0,10"], "--steps"),
+    ];
+    for (args, needle) in refusals {
+        assert_error(&stormer(&dir, &with_quick(args)), needle);
+    }
     // nothing ran, nothing was written
     assert!(!dir.join("out").exists());
     // a run that diverges is a row of the table, not a failure of the study
-    let out = stormer(
+    let out = stormer_ok(
         &dir,
         &with_quick(&[
             "compare",
@@ -1432,7 +1369,6 @@ fn compare_and_scan_refuse_incompatible_methods_with_the_reason() {
             "500",
         ]),
     );
-    assert_ok(&out);
     let (header, rows) = read_table(&dir.join("out/compare-harmonic.csv"));
     assert!(rows[0][column(&header, "failure")].contains("non-finite"), "{rows:?}");
     assert!(rows[0][column(&header, "error")].is_empty());
@@ -1468,7 +1404,7 @@ fn scan_slopes_match_the_declared_orders_on_two_scenes() {
         ("harmonic", "200,400,800,1600", "10"),
         ("pendulum", "50,100,200,400", "10"),
     ] {
-        let out = stormer(
+        let out = stormer_ok(
             &dir,
             &with_quick(&[
                 "scan",
@@ -1481,7 +1417,6 @@ fn scan_slopes_match_the_declared_orders_on_two_scenes() {
                 t_end,
             ]),
         );
-        assert_ok(&out);
         let table = stdout(&out);
         assert!(table.contains("observed order"), "{table}");
         let stem = format!("out/scan-{scene}-rk4+velocity_verlet_kdk+triple_jump4");
@@ -1517,11 +1452,10 @@ fn scan_works_on_every_kind_of_scene_and_leaves_the_rounding_floor_out_of_the_fi
         // so short a span that dop853's errors are rounding: no point is fitted
         ("outer-solar-system", "dop853", "10,20", "10"),
     ] {
-        let out = stormer(
+        stormer_ok(
             &dir,
             &with_quick(&["scan", scene, "--method", method, "--steps", steps, "--t-end", t_end]),
         );
-        assert_ok(&out);
         let (header, rows) = read_table(&dir.join(format!("out/scan-{scene}-{method}.csv")));
         let fitted = column(&header, "fitted_order");
         let in_fit = column(&header, "in_fit");
@@ -1569,22 +1503,20 @@ fn a_study_in_three_shards_merges_into_the_whole() {
     ] {
         let mut whole = with_quick(args);
         whole.extend(["--out", "whole"]);
-        assert_ok(&stormer(&dir, &whole));
+        stormer_ok(&dir, &whole);
         let mut parts = Vec::new();
         for shard in ["1/3", "2/3", "3/3"] {
             let mut part = with_quick(args);
             part.extend(["--shard", shard, "--out", "parts"]);
-            let out = stormer(&dir, &part);
-            assert_ok(&out);
-            assert!(stderr(&out).contains("stormer merge"), "{}", stderr(&out));
+            let summary = run_summary(&dir, &part);
+            assert!(summary.contains("stormer merge"), "{summary}");
             parts.push(format!("parts/{stem}.shard-{}-of-3.json", &shard[..1]));
         }
         // no table from a shard alone
         assert!(!dir.join(format!("parts/{stem}.csv")).exists());
         let mut merge = vec!["merge", "--out", "merged"];
         merge.extend(parts.iter().rev().map(String::as_str));
-        let out = stormer(&dir, &merge);
-        assert_ok(&out);
+        stormer_ok(&dir, &merge);
         // same rows, timings aside
         let (header, a) = read_table(&dir.join(format!("whole/{stem}.csv")));
         let (header_b, b) = read_table(&dir.join(format!("merged/{stem}.csv")));
@@ -1632,12 +1564,10 @@ fn a_study_in_three_shards_merges_into_the_whole() {
 #[test]
 fn run_draws_its_pictures() {
     let dir = workdir("pictures");
-    let out = stormer(&dir, &["run", "kepler", "--t-end", "3"]);
-    assert_ok(&out);
+    let summary = run_summary(&dir, &["run", "kepler", "--t-end", "3"]);
     assert!(
-        stderr(&out).contains("pictures: out/kepler-velocity_verlet_kdk-xy.svg"),
-        "{}",
-        stderr(&out)
+        summary.contains("pictures: out/kepler-velocity_verlet_kdk-xy.svg"),
+        "{summary}"
     );
     let orbit = std::fs::read_to_string(dir.join("out/kepler-velocity_verlet_kdk-xy.svg")).unwrap();
     // title, axis labels and one legend entry per body
@@ -1646,8 +1576,7 @@ fn run_draws_its_pictures() {
     }
     let energy = std::fs::read_to_string(dir.join("out/kepler-velocity_verlet_kdk-energy.svg")).unwrap();
     assert!(energy.contains("energy error") && energy.contains("|E - E0| / |E0|"));
-    let out = stormer(&dir, &["run", "pendulum", "--t-end", "5"]);
-    assert_ok(&out);
+    stormer_ok(&dir, &["run", "pendulum", "--t-end", "5"]);
     let state = std::fs::read_to_string(dir.join("out/pendulum-rk4-state.svg")).unwrap();
     assert!(
         state.contains("theta") && state.contains("omega"),
@@ -1660,8 +1589,7 @@ fn run_draws_its_pictures() {
 #[test]
 fn tour_writes_the_report_with_verdicts() {
     let dir = workdir("tour");
-    let out = stormer(&dir, &["tour", "--out", "report"]);
-    assert_ok(&out);
+    stormer_ok(&dir, &["tour", "--out", "report"]);
     let report = dir.join("report");
     let html = std::fs::read_to_string(report.join("index.html")).expect("index.html");
     assert!(report.join("summary.md").is_file());
@@ -1802,13 +1730,11 @@ fn a_close_encounter_at_a_fixed_step_reports_its_energy_error() {
          dt = 0.006283185307179587\nt_end = 6.283185307179586\nevery = 1\n",
     )
     .unwrap();
-    let out = stormer(&dir, &["run", "kepler-e099.toml", "--out", "e099.csv"]);
-    assert_ok(&out);
-    let drift = summary_number(&stderr(&out), "max |dE/E0|");
-    assert!(drift > 300.0, "{}", stderr(&out));
-    let error = summary_number(&stderr(&out), "max error vs exact");
-    assert!(error > 1.0, "{}", stderr(&out));
-    let (header, rows) = read_csv(&dir.join("e099.csv"));
+    let (summary, header, rows) = run_csv(&dir, &["run", "kepler-e099.toml", "--out", "e099.csv"], "e099.csv");
+    let drift = summary_number(&summary, "max |dE/E0|");
+    assert!(drift > 300.0, "{summary}");
+    let error = summary_number(&summary, "max error vs exact");
+    assert!(error > 1.0, "{summary}");
     assert_eq!(header.last().unwrap(), "energy");
     assert_eq!(rows.len(), 1001);
     let last_energy = *rows.last().unwrap().last().unwrap();
@@ -1823,9 +1749,7 @@ fn compensated_summation_keeps_round_off_down_on_a_long_run() {
         let mut args = vec!["run", "cyclotron", "--dt", "0.0625", "--t-end", "6283.185307179586"];
         args.extend_from_slice(&["--every", "100000"]);
         args.extend_from_slice(extra);
-        let out = stormer(&dir, &args);
-        assert_ok(&out);
-        let summary = stderr(&out);
+        let summary = run_summary(&dir, &args);
         assert!(summary.contains("100531 steps"), "{summary}");
         summary_number(&summary, "max error vs exact")
     };

@@ -106,19 +106,28 @@ fn run(scene: &Scene, method: &str, steps: u64) -> Drift {
     }
 }
 
+/// Each of `methods` conserves both to round-off over `steps` steps of the scene.
+fn assert_conserved(scene: &Scene, methods: &[&str], steps: u64) {
+    for method in methods {
+        let drift = run(scene, method, steps);
+        assert!(drift.momentum <= 1.0 && drift.angular <= 1.0, "{method}");
+    }
+}
+
 #[test]
 fn splittings_conserve_momentum_and_angular_momentum_in_the_outer_solar_system() {
     let scene = nbody(scenes::load("outer-solar-system").unwrap());
     // 10 000 steps of 10 days: 100 000 days, about 8 Saturn orbits
-    for method in [
-        "velocity_verlet_kdk",
-        "stormer_verlet_dkd",
-        "triple_jump4",
-        "blanes_moan_srkn11b",
-    ] {
-        let drift = run(&scene, method, 10_000);
-        assert!(drift.momentum <= 1.0 && drift.angular <= 1.0, "{method}");
-    }
+    assert_conserved(
+        &scene,
+        &[
+            "velocity_verlet_kdk",
+            "stormer_verlet_dkd",
+            "triple_jump4",
+            "blanes_moan_srkn11b",
+        ],
+        10_000,
+    );
 }
 
 #[test]
@@ -130,20 +139,14 @@ fn neptune_and_pluto_added_by_editing_the_file() {
         ["Sun", "Jupiter", "Saturn", "Uranus", "Neptune", "Pluto"]
     );
     assert_eq!(scene.y0.len(), 36);
-    for method in ["velocity_verlet_kdk", "triple_jump4"] {
-        let drift = run(&scene, method, 5_000);
-        assert!(drift.momentum <= 1.0 && drift.angular <= 1.0, "{method}");
-    }
+    assert_conserved(&scene, &["velocity_verlet_kdk", "triple_jump4"], 5_000);
 }
 
 #[test]
 fn the_kepler_scene_conserves_them_too() {
     let scene = nbody(scenes::load("kepler").unwrap());
     // 10 000 steps of 0.01 years: 43 orbits
-    for method in ["velocity_verlet_kdk", "kahan_li6"] {
-        let drift = run(&scene, method, 10_000);
-        assert!(drift.momentum <= 1.0 && drift.angular <= 1.0, "{method}");
-    }
+    assert_conserved(&scene, &["velocity_verlet_kdk", "kahan_li6"], 10_000);
 }
 
 #[test]

@@ -4,8 +4,12 @@
 //! `Omega = -mu R^3 rho |omega| / m`.
 
 use std::f64::consts::PI;
-use stormer::{registry, Driver, ImplicitOptions, Method, Problem, Solution, StepControl, StopEvent, Tolerances};
+use stormer::{registry, Driver, ImplicitOptions, Problem, Solution, StepControl, StopEvent, Tolerances};
 use stormer_app::scenes::{self, AnyScene, Scene, Setup, SpinningBall};
+
+#[path = "support/refusals.rs"]
+mod refusals;
+use refusals::splitting_refusal;
 
 /// The built-in scene, or its text with `edits` (`from -> to`) applied.
 fn kick(edits: &[(&str, &str)]) -> Setup<SpinningBall> {
@@ -157,12 +161,7 @@ fn the_magnus_force_alone_turns_the_velocity_at_omega() {
 #[test]
 fn splittings_are_refused_because_of_the_drag() {
     let s = kick(&[]);
-    let method = Method::Splitting(registry::find_splitting("velocity_verlet_kdk").unwrap());
-    let message = method
-        .stepper_for(&s.model, &s.y0, &Default::default())
-        .err()
-        .unwrap()
-        .to_string();
+    let message = splitting_refusal(&s, "velocity_verlet_kdk");
     assert!(message.contains("air drag"), "{message}");
     assert!(message.contains("use a Runge-Kutta method instead"), "{message}");
 }

@@ -24,7 +24,7 @@ use stormer::catalog::VelocityVerletKdk;
 use stormer::models::NBody;
 use stormer::stepper::StormerTwoStep;
 use stormer::{Hamiltonian, Problem, QuadraticKinetic, SplittingStepper, State, Stepper};
-use stormer_app::scenes::Pendulum;
+use stormer_app::scenes::{self, AnyScene, Pendulum};
 
 /// Max over `steps` steps of the position and velocity differences between the two
 /// forms, and the largest position component met.
@@ -80,12 +80,13 @@ fn the_two_step_form_gives_velocity_verlets_positions_on_the_pendulum() {
 
 #[test]
 fn the_two_step_form_gives_velocity_verlets_positions_on_kepler() {
-    // the kepler scene's two bodies (p = m v, so a = F / m goes through the masses)
-    let pi = std::f64::consts::PI;
-    let nb = NBody::<f64, [f64; 8]>::new(4.0 * pi * pi, &[1.0, 0.1], 2).unwrap();
-    let mut y0 = [0.0; 8];
-    nb.set_state(&[0.0, 0.0, 2.5, 0.0], &[0.0, -0.3, 0.0, 3.0], &mut y0)
-        .unwrap();
+    // the kepler scene's two bodies (p = m v, so a = F / m goes through the masses), on a
+    // static state
+    let AnyScene::NBody(kepler) = scenes::load("kepler").unwrap() else {
+        panic!("kepler is an n-body scene")
+    };
+    let nb = NBody::<f64, [f64; 8]>::new(kepler.model.g(), kepler.model.masses(), kepler.model.dim()).unwrap();
+    let y0: [f64; 8] = kepler.y0.as_slice().try_into().unwrap();
     let (h, steps) = (0.001, 2400u64); // about one orbit
     let (dq, dv, scale) = compare(&nb, &y0, h, steps, false);
     let bound = (steps * steps) as f64 * f64::EPSILON * scale;

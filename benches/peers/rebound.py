@@ -54,18 +54,21 @@ VELOCITIES = [
 ]
 
 # (label, order, force evaluations per step, setup)
-def _leapfrog(order):
+def _integrator(name, **settings):
+    """A setup that picks REBOUND's integrator `name`, then sets its `settings`."""
     def setup(sim):
-        sim.integrator = "leapfrog"
-        sim.integrator.order = order
+        sim.integrator = name
+        for key, value in settings.items():
+            setattr(sim.integrator, key, value)
     return setup
+
+
+def _leapfrog(order):
+    return _integrator("leapfrog", order=order)
 
 
 def _whfast(safe):
-    def setup(sim):
-        sim.integrator = "whfast"
-        sim.integrator.safe_mode = safe
-    return setup
+    return _integrator("whfast", safe_mode=safe)
 
 
 FIXED = [
@@ -104,10 +107,7 @@ def setup_for(label, timing):
 
 
 def ias15(epsilon):
-    def setup(sim):
-        sim.integrator = "ias15"
-        sim.integrator.epsilon = epsilon
-    return setup
+    return _integrator("ias15", epsilon=epsilon)
 
 
 def positions(sim):

@@ -9,6 +9,17 @@ use std::time::Instant;
 /// A kernel: its name and one run of `steps` steps (the result is kept from the optimizer).
 pub type Kernel<'a, R> = (&'static str, Box<dyn Fn() -> R + 'a>);
 
+/// The kernel `name` running `run(steps, h, y0)`, with `h` and `y0` hidden from the optimizer.
+pub fn kernel<'a, Y: Copy + 'a, R>(
+    name: &'static str,
+    run: impl Fn(usize, f64, Y) -> R + 'a,
+    steps: usize,
+    h: f64,
+    y0: Y,
+) -> Kernel<'a, R> {
+    (name, Box::new(move || run(steps, black_box(h), black_box(y0))))
+}
+
 /// The min and median ns per step of each kernel over `rounds` rounds, each round
 /// timing `repeat` runs of every kernel in turn.
 pub fn time<R>(kernels: &[Kernel<'_, R>], rounds: usize, repeat: usize, steps: usize) -> Vec<(f64, f64)> {
@@ -48,4 +59,11 @@ pub fn print_ratios<R>(kernels: &[Kernel<'_, R>], steps: usize) {
             median / summary[0].1
         );
     }
+}
+
+/// A bench's `main`: criterion's group, then the interleaved timing, then criterion's summary.
+pub fn main(criterion_group: fn(), interleaved: fn()) {
+    criterion_group();
+    interleaved();
+    criterion::Criterion::default().configure_from_args().final_summary();
 }

@@ -38,29 +38,28 @@ fn declared(name: &str) -> f64 {
     registry::find_splitting(name).unwrap().order as f64
 }
 
+/// The order of `name` measured on `problem` is its declared order.
+fn assert_declared_order(name: &str, measured: f64, problem: &str) {
+    let declared = declared(name);
+    assert!(
+        (measured - declared).abs() <= TOLERANCE,
+        "{name}: measured order {measured:.3} on {problem}, declared {declared}"
+    );
+}
+
 macro_rules! order_tests {
     (general: [$($g:ident),* $(,)?], quadratic: [$($r:ident),* $(,)?] $(,)?) => {
         paste::paste! {
             $(
                 #[test]
                 fn [<order_ $g>]() {
-                    let (measured, declared) = (general(stringify!($g)), declared(stringify!($g)));
-                    assert!(
-                        (measured - declared).abs() <= TOLERANCE,
-                        "{}: measured order {measured:.3} on the quartic kinetic energy, declared {declared}",
-                        stringify!($g)
-                    );
+                    assert_declared_order(stringify!($g), general(stringify!($g)), "the quartic kinetic energy");
                 }
             )*
             $(
                 #[test]
                 fn [<order_ $r>]() {
-                    let (measured, declared) = (quadratic(stringify!($r)), declared(stringify!($r)));
-                    assert!(
-                        (measured - declared).abs() <= TOLERANCE,
-                        "{}: measured order {measured:.3} on Henon-Heiles, declared {declared}",
-                        stringify!($r)
-                    );
+                    assert_declared_order(stringify!($r), quadratic(stringify!($r)), "Henon-Heiles");
                 }
             )*
 

@@ -6,15 +6,11 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use stormer::catalog::{Dop853, Euler};
 use stormer::{Driver, Error, ExplicitRk, Interrupted, Problem, Tolerances};
 
-/// `y' = y^2`, `y(0) = 1`: `y = 1 / (1 - t)`, infinite at t = 1.
-struct Blow;
-impl Problem for Blow {
-    type Scalar = f64;
-    type State = [f64; 1];
-    fn rhs(&self, _t: f64, y: &[f64; 1], dy: &mut [f64; 1]) {
-        dy[0] = y[0] * y[0];
-    }
-}
+// `y' = y^2`, `y(0) = 1`: `y = 1 / (1 - t)`, infinite at t = 1 (`BlowUp`); `x'' = -x`
+// (`Oscillator`).
+#[path = "../../../tests/support/problems.rs"]
+mod problems;
+use problems::{BlowUp, Oscillator};
 
 /// Explicit Euler at h = 0.01: `y_{n+1} = y_n + h y_n^2` overflows at step 113 (0-based),
 /// t = 1.13, after doubling its exponent a few times past the singularity.
@@ -22,7 +18,7 @@ const BLOW_UP_STEP: u64 = 113;
 
 fn euler_blow_up(driver: Driver<'_, f64, [f64; 1]>) -> Interrupted<f64, [f64; 1]> {
     let mut euler = ExplicitRk::<Euler, _>::new(&[1.0]);
-    driver.run(&Blow, &mut euler, 0.0, &[1.0], 10.0).unwrap_err()
+    driver.run(&BlowUp, &mut euler, 0.0, &[1.0], 10.0).unwrap_err()
 }
 
 /// The step of the overflow is the one reported, with its start time, and every record
@@ -75,7 +71,7 @@ fn a_blow_up_is_reported_at_its_step_with_the_records_before_it() {
 fn adaptive_steps_into_a_singularity_underflow_and_keep_the_records() {
     let mut dop853 = ExplicitRk::<Dop853, _>::new(&[1.0]);
     let Interrupted { solution, error } = Driver::adaptive(Tolerances::new(1e-10, 1e-10))
-        .run(&Blow, &mut dop853, 0.0, &[1.0], 2.0)
+        .run(&BlowUp, &mut dop853, 0.0, &[1.0], 2.0)
         .unwrap_err();
     let Error::StepSizeTooSmall { t, h } = error else {
         panic!("{error}")
@@ -100,15 +96,7 @@ fn adaptive_steps_into_a_singularity_underflow_and_keep_the_records() {
 /// steps): [`Error::Cancelled`] with the time and the step, every record before kept.
 #[test]
 fn a_cancelled_run_keeps_its_records() {
-    /// `x'' = -x`, forever.
-    struct Spin;
-    impl Problem for Spin {
-        type Scalar = f64;
-        type State = [f64; 2];
-        fn rhs(&self, _t: f64, y: &[f64; 2], dy: &mut [f64; 2]) {
-            *dy = [y[1], -y[0]];
-        }
-    }
+    // `x'' = -x`, forever
     let stop = AtomicBool::new(false);
     let h = 1e-3;
     let every = 100;
@@ -121,7 +109,7 @@ fn a_cancelled_run_keeps_its_records() {
         Driver::fixed(h)
             .every(every)
             .cancel_when(&stop)
-            .run(&Spin, &mut euler, 0.0, &[1.0, 0.0], 1e5)
+            .run(&Oscillator, &mut euler, 0.0, &[1.0, 0.0], 1e5)
             .unwrap_err()
     });
     let Error::Cancelled { t, step } = interrupted.error else {

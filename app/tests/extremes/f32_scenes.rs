@@ -16,9 +16,11 @@
 
 use nalgebra::DVector;
 use stormer::magnetic::{Charged, Lorentz};
-use stormer::models::{CentralForce, ChargedParticles, NBody};
+use stormer::models::{CentralForce, NBody};
 use stormer::stepper::{ParticleMethod, PARTICLE_METHODS};
-use stormer::{lit, registry, Driver, Error, Method, Problem, Real, SecondOrder, State, Stepper, Tolerances};
+use stormer::{
+    lit, registry, Driver, Error, Method, Problem, QuadraticKinetic, Real, SecondOrder, State, Stepper, Tolerances,
+};
 use stormer_app::scenes::{self, AnyScene, Scene, Setup};
 
 /// Steps per run: enough for round-off to accumulate, few enough for a debug build.
@@ -303,95 +305,79 @@ fn particle<L: Lorentz + 'static>(m: ParticleMethod, y0: &L::State) -> Result<Bo
     m.stepper::<L>(y0)
 }
 
+/// A twin whose splittings are those of a quadratic kinetic energy; no charged-particle
+/// methods.
+fn quadratic<P: QuadraticKinetic<Scalar = f32> + 'static>(problem: P, y0: P::State) -> Twin<P> {
+    Twin {
+        problem,
+        y0,
+        splitting: registry::splitting_stepper_quadratic,
+        particle: None,
+    }
+}
+
+/// A twin of a scene that is not Hamiltonian: no splitting, no charged-particle method.
+fn not_hamiltonian<P: Problem<Scalar = f32>>(problem: P, y0: P::State) -> Twin<P> {
+    Twin {
+        problem,
+        y0,
+        splitting: refused,
+        particle: None,
+    }
+}
+
+/// A charged-particle twin: the general splittings and the charged-particle methods.
+fn charged<L: Lorentz<Scalar = f32> + 'static>(lorentz: L, y0: L::State) -> Twin<Charged<L>> {
+    Twin {
+        problem: Charged(lorentz),
+        y0,
+        splitting: registry::splitting_stepper,
+        particle: Some(particle::<L>),
+    }
+}
+
 /// Measures every method on the named built-in scene, in f32 against f64.
 fn scene(name: &str) -> Measured {
     match scenes::load(name).unwrap() {
         AnyScene::Harmonic(s) => {
-            let twin = Twin {
-                problem: HarmonicTwin {
-                    w0_squared: (s.model.w0 * s.model.w0) as f32,
-                },
-                y0: to_f32(&s.y0),
-                splitting: registry::splitting_stepper_quadratic,
-                particle: None,
-            };
-            measure(&s, &twin)
+            let w0_squared = (s.model.w0 * s.model.w0) as f32;
+            measure(&s, &quadratic(HarmonicTwin { w0_squared }, to_f32(&s.y0)))
         }
-        AnyScene::Pendulum(s) => {
-            let twin = Twin {
-                problem: PendulumTwin(core::marker::PhantomData),
-                y0: to_f32(&s.y0),
-                splitting: registry::splitting_stepper_quadratic,
-                particle: None,
-            };
-            measure(&s, &twin)
-        }
+        AnyScene::Pendulum(s) => measure(&s, &quadratic(PendulumTwin(core::marker::PhantomData), to_f32(&s.y0))),
         AnyScene::DampedOscillator(s) => {
-            let twin = Twin {
-                problem: DampedTwin {
-                    w0_squared: (s.model.w0 * s.model.w0) as f32,
-                    damping: (s.model.w0 / s.model.q) as f32,
-                },
-                y0: to_f32(&s.y0),
-                splitting: refused,
-                particle: None,
+            let problem = DampedTwin {
+                w0_squared: (s.model.w0 * s.model.w0) as f32,
+                damping: (s.model.w0 / s.model.q) as f32,
             };
-            measure(&s, &twin)
+            measure(&s, &not_hamiltonian(problem, to_f32(&s.y0)))
         }
         AnyScene::SpinningBall(s) => {
             let b = &s.model;
             let pi = core::f64::consts::PI;
-            let twin = Twin {
-                problem: BallTwin {
-                    g: b.g as f32,
-                    drag: (b.rho * b.cx * pi * b.radius * b.radius / (2.0 * b.mass)) as f32,
-                    magnus: (-b.magnus_rate()) as f32,
-                    mass: b.mass as f32,
-                },
-                y0: to_f32(&s.y0),
-                splitting: refused,
-                particle: None,
+            let problem = BallTwin {
+                g: b.g as f32,
+                drag: (b.rho * b.cx * pi * b.radius * b.radius / (2.0 * b.mass)) as f32,
+                magnus: (-b.magnus_rate()) as f32,
+                mass: b.mass as f32,
             };
-            measure(&s, &twin)
+            measure(&s, &not_hamiltonian(problem, to_f32(&s.y0)))
         }
         AnyScene::RestrictedThreeBody(s) => {
-            let twin = Twin {
-                problem: Charged(ThreeBodyTwin {
-                    mu: s.model.0.mu as f32,
-                }),
-                y0: to_f32(&s.y0),
-                splitting: registry::splitting_stepper,
-                particle: Some(particle::<ThreeBodyTwin<f32>>),
-            };
-            measure(&s, &twin)
+            let mu = s.model.0.mu as f32;
+            measure(&s, &charged(ThreeBodyTwin { mu }, to_f32(&s.y0)))
         }
         AnyScene::CentralForce(s) => {
-            let twin = Twin {
-                problem: CentralForce::<f32, DVector<f32>>::new(s.model.mu as f32),
-                y0: dvector_f32(&s.y0),
-                splitting: registry::splitting_stepper_quadratic,
-                particle: None,
-            };
-            measure(&s, &twin)
+            let problem = CentralForce::<f32, DVector<f32>>::new(s.model.mu as f32);
+            measure(&s, &quadratic(problem, dvector_f32(&s.y0)))
         }
         AnyScene::NBody(s) => {
             let masses: Vec<f32> = s.model.masses().iter().map(|&m| m as f32).collect();
-            let twin = Twin {
-                problem: NBody::<f32, DVector<f32>>::new(s.model.g() as f32, &masses, s.model.dim()).unwrap(),
-                y0: dvector_f32(&s.y0),
-                splitting: registry::splitting_stepper_quadratic,
-                particle: None,
-            };
-            measure(&s, &twin)
+            let problem = NBody::<f32, DVector<f32>>::new(s.model.g() as f32, &masses, s.model.dim()).unwrap();
+            measure(&s, &quadratic(problem, dvector_f32(&s.y0)))
         }
         AnyScene::ChargedParticles(s) => {
-            let twin = Twin {
-                problem: Charged(s.model.0.converted::<f32, DVector<f32>>()),
-                y0: dvector_f32(&s.y0),
-                splitting: registry::splitting_stepper,
-                particle: Some(particle::<ChargedParticles<f32, DVector<f32>>>),
-            };
-            measure(&s, &twin)
+            let lorentz = s.model.0.converted::<f32, DVector<f32>>();
+            measure(&s, &charged(lorentz, dvector_f32(&s.y0)))
         }
         other => panic!("a model this test does not know: {}", other.model()),
     }

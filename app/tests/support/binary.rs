@@ -36,7 +36,16 @@ pub fn stdout(out: &Output) -> String {
     String::from_utf8_lossy(&out.stdout).into_owned()
 }
 
+/// The binary run in `dir` with `args`, to its end, asserted to succeed (`assert_ok`).
+#[track_caller]
+pub fn stormer_ok(dir: &Path, args: &[&str]) -> Output {
+    let out = stormer(dir, args);
+    assert_ok(&out);
+    out
+}
+
 /// Succeeds, with no panic.
+#[track_caller]
 pub fn assert_ok(out: &Output) {
     assert!(out.status.success(), "failed: {}", stderr(out));
     assert!(!stderr(out).contains("panicked"));
