@@ -226,6 +226,13 @@ def doc_comment(m):
     out += wrap(f"Reference: {md_escape(m['reference'])}.") + [""]
     out += wrap(f"Coefficients from {m['source_repo']} `{m['source_path']}`"
                 f" at {m['source_commit'][:7]}.")
+    return out + notes_and_closed_form(m)
+
+
+def notes_and_closed_form(m):
+    """The doc comment's last paragraphs, shared by every catalog: the entry's notes and its
+    closed form, when it has them."""
+    out = []
     if "notes" in m:
         out += [""] + wrap(f"Note: {md_escape(m['notes'])}")
     if "closed_form" in m:
@@ -332,7 +339,10 @@ DATA_HEADER = """\
 # Coefficients are TOML strings: integer, exact rational "p/q", or decimal copied
 # literally from the source; irrational closed forms are 40-digit decimals plus a
 # `closed_form` text.
+"""
 
+# What follows the header of every data copy: the catalog's schema, conventions and sources.
+DATA_TABLES = """\
 schema_version = {schema_version}
 
 [conventions]
@@ -388,11 +398,12 @@ def drop_pairs(text):
 
 
 def data_copy(header, text, catalog, methods, conventions, families):
-    """`header` filled in (schema version, `conventions`, the sources of `methods`), then the
-    verbatim text of each `[[method]]` block whose family matches the regex `families`."""
+    """`header`, the tables of DATA_TABLES filled in (schema version, `conventions`, the sources
+    of `methods`), then the verbatim text of each `[[method]]` block whose family matches the
+    regex `families`."""
     repos = {m["source_repo"] for m in methods}
     blocks = re.split(r"^(?=\[\[method\]\]$)", text, flags=re.M)[1:]
-    out = header.format(
+    out = (header + "\n" + DATA_TABLES).format(
         schema_version=catalog["schema_version"],
         conventions=conventions,
         sources="\n".join(f'"{r}" = "{c}"' for r, c in catalog["sources"].items() if r in repos),

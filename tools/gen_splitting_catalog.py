@@ -90,14 +90,7 @@ def doc_comment(m):
     out += [""] + g.wrap(f"Coefficients from {m['source_repo']} `{m['source_path']}`"
                          + (f" at {m['source_commit'][:7]}." if "source_commit" in m else "."))
     out += g.wrap(f"Precision: {g.md_escape(m['precision'])}.")
-    if "notes" in m:
-        out += [""] + g.wrap(f"Note: {g.md_escape(m['notes'])}")
-    if "closed_form" in m:
-        out += ["", "Closed form:", "", "```text"]
-        for part in m["closed_form"].split("; "):
-            out += textwrap.wrap(part, WIDTH - 8, subsequent_indent="    ", break_on_hyphens=False)
-        out += ["```"]
-    return out
+    return out + g.notes_and_closed_form(m)
 
 
 def declaration(m):
@@ -167,14 +160,6 @@ DATA_HEADER = """\
 # crate's tests cross-check the `splitting!` / `composition!` declarations in src/catalog/
 # against this file. Coefficients are TOML strings: integer, exact rational "p/q", or
 # decimal copied literally from the source.
-
-schema_version = {schema_version}
-
-[conventions]
-{conventions}
-[sources]  # repository -> commit the values were read at
-{sources}
-
 """
 
 

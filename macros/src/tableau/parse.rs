@@ -53,42 +53,28 @@ pub struct Input {
     pub tolerance: Option<Expr>,
 }
 
-/// `[e1, e2, ...]`: coefficient expressions.
-pub struct Array {
+/// `[x1, x2, ...]`: a bracketed list, with the span of the whole group.
+pub struct List<T> {
     /// The whole bracketed group.
     pub span: Span,
     /// The entries.
-    pub items: Vec<Expr>,
+    pub items: Vec<T>,
 }
 
-/// `[[...], [...], ...]`: the rows of `a`.
-pub struct Matrix {
-    /// The whole bracketed group.
-    pub span: Span,
-    /// The rows.
-    pub rows: Vec<Array>,
-}
+/// `[e1, e2, ...]`: coefficient expressions.
+pub type Array = List<Expr>;
 
-impl Parse for Array {
+/// `[[...], [...], ...]`: the rows of `a` (or of `dense`).
+pub type Matrix = List<Array>;
+
+impl<T: Parse> Parse for List<T> {
     fn parse(input: ParseStream) -> syn::Result<Self> {
         let content;
         let bracket = bracketed!(content in input);
-        let items = Punctuated::<Expr, Token![,]>::parse_terminated(&content)?;
-        Ok(Array {
+        let items = Punctuated::<T, Token![,]>::parse_terminated(&content)?;
+        Ok(List {
             span: bracket.span.join(),
             items: items.into_iter().collect(),
-        })
-    }
-}
-
-impl Parse for Matrix {
-    fn parse(input: ParseStream) -> syn::Result<Self> {
-        let content;
-        let bracket = bracketed!(content in input);
-        let rows = Punctuated::<Array, Token![,]>::parse_terminated(&content)?;
-        Ok(Matrix {
-            span: bracket.span.join(),
-            rows: rows.into_iter().collect(),
         })
     }
 }
@@ -142,48 +128,37 @@ impl Parse for Input {
     fn parse(input: ParseStream) -> syn::Result<Self> {
         let mut fields = Fields::default();
         let (header, mut errors) = declaration::parse(input, &KEYS, |key, value| fields.parse_value(key, value))?;
-        let Fields {
-            name,
-            order,
-            c,
-            a,
-            b,
-            b_hat,
-            embedded_order,
-            b_hat3,
-            dense,
-            dense_order,
-            tolerance,
-        } = fields;
         for (key, present) in [
-            ("name", name.is_some()),
-            ("order", order.is_some()),
-            ("a", a.is_some()),
-            ("b", b.is_some()),
+            ("name", fields.name.is_some()),
+            ("order", fields.order.is_some()),
+            ("a", fields.a.is_some()),
+            ("b", fields.b.is_some()),
         ] {
             if !present {
                 push(&mut errors, header.missing(key));
             }
         }
-        match (errors, name, order, a, b) {
-            (None, Some(name), Some(order), Some(a), Some(b)) => Ok(Input {
-                header,
-                name,
-                order,
-                c,
-                a,
-                b,
-                b_hat,
-                embedded_order,
-                b_hat3,
-                dense,
-                dense_order,
-                tolerance,
-            }),
-            (Some(e), ..) => Err(e),
-            // Unreachable: a missing key always records an error.
-            _ => Err(syn::Error::new(header.ident.span(), "incomplete tableau")),
+        if let Some(e) = errors {
+            return Err(e);
         }
+        let (Some(name), Some(order), Some(a), Some(b)) = (fields.name, fields.order, fields.a, fields.b) else {
+            // Unreachable: a missing key always records an error.
+            return Err(syn::Error::new(header.ident.span(), "incomplete tableau"));
+        };
+        Ok(Input {
+            header,
+            name,
+            order,
+            a,
+            b,
+            c: fields.c,
+            b_hat: fields.b_hat,
+            embedded_order: fields.embedded_order,
+            b_hat3: fields.b_hat3,
+            dense: fields.dense,
+            dense_order: fields.dense_order,
+            tolerance: fields.tolerance,
+        })
     }
 }
 
@@ -212,8 +187,8 @@ mod tests {
         assert_eq!(input.header.ident, "Heun");
         assert_eq!(input.name.value(), "heun");
         assert_eq!(input.order.value, 2);
-        assert_eq!(input.a.rows.len(), 2);
-        assert_eq!(input.a.rows[0].items.len(), 1);
+        assert_eq!(input.a.items.len(), 2);
+        assert_eq!(input.a.items[0].items.len(), 1);
         assert_eq!(input.b.items.len(), 2);
         assert!(input.c.is_none() && input.b_hat.is_none() && input.tolerance.is_some());
         assert_eq!(input.header.attrs.len(), 1);

@@ -101,7 +101,7 @@ fn target<'a>(input: &'a Input, err: &TableauError, s: usize) -> Target<'a> {
         }
     };
     let entry = |array: &'a Array, index: usize| array.items.get(index).map_or(Tokens(array.span), Coefficient);
-    let row = |i: usize| input.a.rows.get(i).map_or(input.a.span, |r| r.span);
+    let row = |i: usize| input.a.items.get(i).map_or(input.a.span, |r| r.span);
     // OrderTooHigh and ZeroOrder concern `order` or `embedded_order`: the one with that value.
     let order = |value: usize| match &input.embedded_order {
         Some(e) if input.order.value != value && e.value.value == value => Tokens(e.value.span),
@@ -130,7 +130,7 @@ fn target<'a>(input: &'a Input, err: &TableauError, s: usize) -> Target<'a> {
         TableauError::Shape { what, .. } => array(what).map_or(fallback, |a| Tokens(a.span)),
         TableauError::NonFinite { what: "a", index } => {
             let (i, j) = (index / s.max(1), index % s.max(1));
-            input.a.rows.get(i).map_or(Tokens(input.a.span), |r| entry(r, j))
+            input.a.items.get(i).map_or(Tokens(input.a.span), |r| entry(r, j))
         }
         TableauError::NonFinite { what, index } => array(what).map_or(fallback, |a| entry(a, *index)),
         TableauError::RowSum { row: i, .. } => match &input.c {
@@ -152,7 +152,7 @@ fn target<'a>(input: &'a Input, err: &TableauError, s: usize) -> Target<'a> {
 /// Evaluates and validates a parsed invocation.
 pub fn validate(input: Input) -> syn::Result<Method> {
     let mut ev = Evaluator::default();
-    let a: Vec<Vec<f64>> = input.a.rows.iter().map(|row| ev.array(row)).collect();
+    let a: Vec<Vec<f64>> = input.a.items.iter().map(|row| ev.array(row)).collect();
     let b = ev.array(&input.b);
     let c = input.c.as_ref().map(|c| ev.array(c));
     let b_hat = input.b_hat.as_ref().map(|k| ev.array(&k.value));
@@ -160,7 +160,7 @@ pub fn validate(input: Input) -> syn::Result<Method> {
     let dense = input
         .dense
         .as_ref()
-        .map(|d| d.rows.iter().map(|row| ev.array(row)).collect());
+        .map(|d| d.items.iter().map(|row| ev.array(row)).collect());
     let tolerance = input.tolerance.as_ref().and_then(|expr| ev.one(expr));
     if let Some(e) = ev.errors {
         return Err(e);
