@@ -11,6 +11,7 @@ mod families;
 pub mod flows;
 pub mod hamiltonian;
 pub mod input;
+pub mod kepler;
 pub mod magnetic;
 pub mod method;
 pub mod models;

@@ -59,11 +59,20 @@ const C3: [f64; 9] = [
 pub fn gyration_coefficients<T: Real>(x: T) -> [T; 3] {
     let x2 = x * x;
     if x.abs() < T::one() {
-        [series(&S1, x2), series(&C2, x2), series(&C3, x2)]
+        stumpff_series(x2)
     } else {
         let (s, versine) = sin_and_versine(x);
         [s / x, versine / x2, (x - s) / (x2 * x)]
     }
+}
+
+/// The Stumpff functions `(c1(z), c2(z), c3(z))` by their Taylor series (`c1(x^2) = sin x / x`,
+/// `c2(x^2) = (1 - cos x) / x^2`, `c3(x^2) = (x - sin x) / x^3`, for either sign of `z`),
+/// accurate to round-off for `|z| <= 1`: the coefficients of [`gyration_coefficients`], shared
+/// with the Kepler drift ([`crate::kepler::stumpff`]).
+#[inline(always)]
+pub(crate) fn stumpff_series<T: Real>(z: T) -> [T; 3] {
+    [series(&S1, z), series(&C2, z), series(&C3, z)]
 }
 
 /// `sum_k c_k y^k` by Horner's rule.

@@ -11,5 +11,6 @@
 mod gyration;
 mod lorentz;
 
+pub(crate) use gyration::stumpff_series;
 pub use gyration::{cross, gyration_coefficients, sin_and_versine, Gyration, GyrationCache};
 pub use lorentz::{Charged, Lorentz};
