@@ -70,7 +70,7 @@ fn method_case(which: usize, edits: &[Edit]) -> Result<(), TestCaseError> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 2000, failure_persistence: None, ..ProptestConfig::default() })]
+    #![proptest_config(mutate::config(mutate::CASES))]
 
     #[test]
     fn mutated_scene_files_give_errors_naming_a_line_or_field(which in any::<usize>(), e in edits()) {
@@ -84,7 +84,7 @@ proptest! {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 100_000, failure_persistence: None, ..ProptestConfig::default() })]
+    #![proptest_config(mutate::config(mutate::LONG_RUN))]
 
     #[test]
     #[ignore = "long run: 10^5 mutated files of each kind"]

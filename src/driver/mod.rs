@@ -8,6 +8,7 @@ mod adaptive;
 mod dense;
 mod event;
 mod record;
+mod run;
 
 use dense::SaveAt;
 pub use dense::{hermite, DENSE_ORDER};
@@ -276,11 +277,16 @@ impl<'a, T: Real, S: State<Scalar = T>> Driver<'a, T, S> {
         }
         stepper.reset();
         let base = stepper.counters();
+        let mut run = run::Run {
+            driver: self,
+            p,
+            stepper: &mut *stepper,
+            out,
+            stats: &mut stats,
+        };
         let result = match self.control {
-            StepControl::Fixed(h) => self.fixed_loop(p, stepper, t0, y0, t_end, h, out, &mut stats),
-            StepControl::Adaptive { tol, h0, h_max } => {
-                self.adaptive_loop(p, stepper, t0, y0, t_end, &tol, h0, h_max, out, &mut stats)
-            }
+            StepControl::Fixed(h) => run.fixed(t0, y0, t_end, h),
+            StepControl::Adaptive { tol, h0, h_max } => run.adaptive(t0, y0, t_end, &tol, h0, h_max),
         };
         let c = stepper.counters();
         stats.evaluations += c.evaluations - base.evaluations;
@@ -334,165 +340,5 @@ impl<'a, T: Real, S: State<Scalar = T>> Driver<'a, T, S> {
             )),
             _ => Ok(()),
         }
-    }
-
-    #[allow(clippy::too_many_arguments)]
-    fn fixed_loop<P, St, R>(
-        &self,
-        p: &P,
-        stepper: &mut St,
-        t0: T,
-        y0: &S,
-        t_end: T,
-        h: T,
-        out: &mut R,
-        stats: &mut Stats,
-    ) -> Result<Option<StopEvent<T, S>>, Error>
-    where
-        P: Problem<Scalar = T, State = S>,
-        St: Stepper<P> + ?Sized,
-        R: Recorder<T, S> + ?Sized,
-    {
-        let span = t_end - t0;
-        if !(h.is_finite() && h != T::zero()) {
-            return Err(Error::invalid(
-                "step size",
-                format!("must be finite and non-zero, got {}", to_f64(h)),
-            ));
-        }
-        let h = if span < T::zero() { -h.abs() } else { h.abs() };
-        // Steps of exactly h; a last, shorter one when h does not divide the span.
-        let ratio = to_f64(span / h);
-        let whole = ratio.round();
-        // `span / h` carries the scalar's rounding: in f32 a step of 1/61 over [0, 1] gives
-        // 61 within a few epsilon, which must not become 61 steps plus one of 6e-8
-        let tolerance = f64::max(1e-9, 16.0 * to_f64(T::default_epsilon()));
-        let exact = (ratio - whole).abs() <= tolerance * ratio.abs().max(1.0);
-        let n = if exact { whole } else { ratio.ceil() };
-        if n > self.max_steps as f64 {
-            return Err(Error::TooManySteps {
-                t: to_f64(t0),
-                steps: self.max_steps,
-                needed: Some(n),
-            });
-        }
-        let n = n as u64;
-        let mut y = y0.clone();
-        if self.stop.is_none() && self.save_at.is_none() && stepper.steps_in_place() {
-            return self.fixed_in_place(p, stepper, t0, &mut y, t_end, h, n, exact, out, stats);
-        }
-        let mut y_new = y0.clone();
-        let mut g_old = self.stop.as_ref().map(|g| g(t0, y0));
-        let mut save = self.save_at.as_deref().map(|times| SaveAt::new(times, t0, y0));
-        for i in 0..n {
-            let t = t0 + lit::<T>(i as f64) * h;
-            if self.cancelled(i) {
-                return Err(Error::Cancelled { t: to_f64(t), step: i });
-            }
-            let hi = if i + 1 == n && !exact { t_end - t } else { h };
-            stepper.step(p, t, hi, &y, &mut y_new)?;
-            if !y_new.is_finite() {
-                return Err(Error::NonFinite { t: to_f64(t), step: i });
-            }
-            if let Some(event) = self.locate(p, stepper, t, hi, &y, &mut y_new, &mut g_old)? {
-                return self.end_at(p, stepper, t, &y, event, save.as_mut(), out, stats);
-            }
-            let t_next = if i + 1 == n && !exact {
-                t_end
-            } else {
-                t0 + lit::<T>((i + 1) as f64) * h
-            };
-            if let Some(save) = save.as_mut() {
-                save.record_step(p, stepper, t, t_next, &y, &y_new, out, stats)?;
-            }
-            stepper.accept();
-            core::mem::swap(&mut y, &mut y_new);
-            stats.steps += 1;
-            if save.is_none() && ((i + 1) % self.every == 0 || i + 1 == n) {
-                out.record(t_next, &y, p.energy(t_next, &y))?;
-            }
-        }
-        Ok(None)
-    }
-
-    /// The end of a run at a located stop event inside the step from `(t, y)`: the output
-    /// times before it (with `save_at`), then the event as the last record.
-    #[allow(clippy::too_many_arguments)]
-    fn end_at<P, St, R>(
-        &self,
-        p: &P,
-        stepper: &mut St,
-        t: T,
-        y: &S,
-        event: StopEvent<T, S>,
-        save: Option<&mut SaveAt<'_, T, S>>,
-        out: &mut R,
-        stats: &mut Stats,
-    ) -> Result<Option<StopEvent<T, S>>, Error>
-    where
-        P: Problem<Scalar = T, State = S>,
-        St: Stepper<P> + ?Sized,
-        R: Recorder<T, S> + ?Sized,
-    {
-        let mut recorded = false;
-        if let Some(save) = save {
-            // the stepper's last step is the one that located the event: from `y` to it
-            save.record_step(p, stepper, t, event.t, y, &event.y, out, stats)?;
-            recorded = save.last_recorded() == Some(event.t);
-        }
-        stats.steps += 1;
-        stepper.accept();
-        if !recorded {
-            out.record(event.t, &event.y, p.energy(event.t, &event.y))?;
-        }
-        Ok(Some(event))
-    }
-
-    /// The fixed-step loop of a stepper that steps in place (no stop condition).
-    #[allow(clippy::too_many_arguments)]
-    fn fixed_in_place<P, St, R>(
-        &self,
-        p: &P,
-        stepper: &mut St,
-        t0: T,
-        y: &mut S,
-        t_end: T,
-        h: T,
-        n: u64,
-        exact: bool,
-        out: &mut R,
-        stats: &mut Stats,
-    ) -> Result<Option<StopEvent<T, S>>, Error>
-    where
-        P: Problem<Scalar = T, State = S>,
-        St: Stepper<P> + ?Sized,
-        R: Recorder<T, S> + ?Sized,
-    {
-        // a countdown, not `(i + 1) % every`: an integer division per step is measurable
-        let mut until_record = self.every;
-        for i in 0..n {
-            let t = t0 + lit::<T>(i as f64) * h;
-            if self.cancelled(i) {
-                return Err(Error::Cancelled { t: to_f64(t), step: i });
-            }
-            let last = i + 1 == n;
-            let hi = if last && !exact { t_end - t } else { h };
-            stepper.step_in_place(p, t, hi, y)?;
-            if !y.is_finite() {
-                return Err(Error::NonFinite { t: to_f64(t), step: i });
-            }
-            stats.steps += 1;
-            until_record -= 1;
-            if until_record == 0 || last {
-                until_record = self.every;
-                let t_next = if last && !exact {
-                    t_end
-                } else {
-                    t0 + lit::<T>((i + 1) as f64) * h
-                };
-                out.record(t_next, y, p.energy(t_next, y))?;
-            }
-        }
-        Ok(None)
     }
 }

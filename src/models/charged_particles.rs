@@ -223,13 +223,7 @@ impl<T: Real, S: State<Scalar = T>> ChargedParticles<T, S> {
 
     /// The same particles with names (one per particle; they name the CSV columns).
     pub fn with_names(mut self, names: Vec<String>) -> Result<Self, Error> {
-        if names.len() != self.masses.len() {
-            return Err(Error::invalid(
-                "names",
-                format!("{} names for {} particles", names.len(), self.masses.len()),
-            ));
-        }
-        self.names = names;
+        self.names = super::one_name_each(names, self.masses.len(), "particles")?;
         Ok(self)
     }
 

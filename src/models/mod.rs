@@ -30,3 +30,16 @@ pub use charged_particles::{ChargedParticles, MagneticField};
 pub use nbody::NBody;
 pub use nbody_shape::{AnyShape, Bodies, Shape};
 pub use orbit::{eccentric_anomaly, Orbit};
+
+/// `names` if there is one per member (`count` of them, called `what`: "bodies",
+/// "particles"), else an error saying how many of each there are.
+fn one_name_each(names: Vec<String>, count: usize, what: &str) -> Result<Vec<String>, crate::Error> {
+    if names.len() == count {
+        Ok(names)
+    } else {
+        Err(crate::Error::invalid(
+            "names",
+            format!("{} names for {count} {what}", names.len()),
+        ))
+    }
+}

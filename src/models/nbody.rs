@@ -127,13 +127,7 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> NBody<T, S, K> {
 
     /// The same bodies with names (one per body; they name the CSV columns of a scene).
     pub fn with_names(mut self, names: Vec<String>) -> Result<Self, Error> {
-        if names.len() != self.masses.len() {
-            return Err(Error::invalid(
-                "names",
-                format!("{} names for {} bodies", names.len(), self.masses.len()),
-            ));
-        }
-        self.names = names;
+        self.names = super::one_name_each(names, self.masses.len(), "bodies")?;
         Ok(self)
     }
 

@@ -6,7 +6,7 @@ use crate::hamiltonian::halves_mut;
 use crate::magnetic::{cross, Charged, Lorentz};
 #[allow(unused_imports)]
 use crate::real::ops::*;
-use crate::{lit, Error, MethodInfo, State};
+use crate::{lit, Error, MethodInfo, Real, State};
 
 /// How Boris turns the velocity over a step `h` (rotation vector `omega`, angle
 /// `|omega| h`).
@@ -179,7 +179,7 @@ impl<S: State> Boris<S> {
     }
 }
 
-impl<L: Lorentz> Stepper<Charged<L>> for Boris<L::State> {
+impl<T: Real, L: Lorentz<Scalar = T>> Stepper<Charged<L>> for Boris<L::State> {
     fn info(&self) -> MethodInfo {
         match self.rotation {
             BorisRotation::Cayley => ParticleMethod::Boris.info(),
@@ -187,18 +187,7 @@ impl<L: Lorentz> Stepper<Charged<L>> for Boris<L::State> {
         }
     }
 
-    fn error_order(&self) -> Option<usize> {
-        None
-    }
-
-    fn step(
-        &mut self,
-        p: &Charged<L>,
-        t: L::Scalar,
-        h: L::Scalar,
-        y: &L::State,
-        y_new: &mut L::State,
-    ) -> Result<(), Error> {
+    fn step(&mut self, p: &Charged<L>, t: T, h: T, y: &L::State, y_new: &mut L::State) -> Result<(), Error> {
         let cached = self.cached;
         self.cached = false;
         y_new.copy_from(y);
@@ -211,7 +200,7 @@ impl<L: Lorentz> Stepper<Charged<L>> for Boris<L::State> {
         true
     }
 
-    fn step_in_place(&mut self, p: &Charged<L>, t: L::Scalar, h: L::Scalar, y: &mut L::State) -> Result<(), Error> {
+    fn step_in_place(&mut self, p: &Charged<L>, t: T, h: T, y: &mut L::State) -> Result<(), Error> {
         let cached = self.cached;
         self.cached = false;
         self.advance(p, t, h, y, cached)?;

@@ -76,10 +76,6 @@ impl<P: Problem> Stepper<P> for Composed<P> {
         self.info.clone()
     }
 
-    fn error_order(&self) -> Option<usize> {
-        None
-    }
-
     fn step(&mut self, p: &P, t: P::Scalar, h: P::Scalar, y: &P::State, y_new: &mut P::State) -> Result<(), Error> {
         // each substep reads the state from `scratch` and writes `y_new`
         let mut time = t;

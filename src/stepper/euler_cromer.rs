@@ -4,7 +4,7 @@
 use super::{Counters, ParticleMethod, Stepper};
 use crate::hamiltonian::halves_mut;
 use crate::magnetic::{Charged, Lorentz};
-use crate::{Error, MethodInfo, State};
+use crate::{Error, MethodInfo, Real, State};
 
 /// Euler-Cromer (semi-implicit Euler of the users' E x B study, SCENES.md 6):
 ///
@@ -60,23 +60,12 @@ impl<S: State> EulerCromer<S> {
     }
 }
 
-impl<L: Lorentz> Stepper<Charged<L>> for EulerCromer<L::State> {
+impl<T: Real, L: Lorentz<Scalar = T>> Stepper<Charged<L>> for EulerCromer<L::State> {
     fn info(&self) -> MethodInfo {
         ParticleMethod::EulerCromer.info()
     }
 
-    fn error_order(&self) -> Option<usize> {
-        None
-    }
-
-    fn step(
-        &mut self,
-        p: &Charged<L>,
-        t: L::Scalar,
-        h: L::Scalar,
-        y: &L::State,
-        y_new: &mut L::State,
-    ) -> Result<(), Error> {
+    fn step(&mut self, p: &Charged<L>, t: T, h: T, y: &L::State, y_new: &mut L::State) -> Result<(), Error> {
         y_new.copy_from(y);
         let (q, v) = halves_mut(y_new.as_mut_slice());
         let (_, a) = halves_mut(self.work.as_mut_slice());

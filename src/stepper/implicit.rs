@@ -351,7 +351,7 @@ fn effective_tol<T: Real>(tol: f64) -> T {
     }
 }
 
-impl<S: State> ImplicitRk<S> {
+impl<T: Real, S: State<Scalar = T>> ImplicitRk<S> {
     /// A stepper for `tableau` with stage buffers shaped like `y0`.
     ///
     /// Coefficients are converted to the scalar type here, once. Any valid tableau works,
@@ -512,13 +512,13 @@ impl<S: State> ImplicitRk<S> {
     }
 
     /// Fixed-point sweeps `Z_i <- h sum_j a_ij F_j(Z)` until `stop` says so.
-    fn fixed_point<P: Problem<Scalar = S::Scalar, State = S>>(
+    fn fixed_point<P: Problem<Scalar = T, State = S>>(
         &mut self,
         p: &P,
-        t: S::Scalar,
-        h: S::Scalar,
+        t: T,
+        h: T,
         y: &S,
-        mut stop: Stop<S::Scalar>,
+        mut stop: Stop<T>,
     ) -> Result<(), Error> {
         self.explicit_stages(p, t, y, None);
         let mut residual = S::Scalar::zero();
@@ -583,14 +583,14 @@ impl<S: State> ImplicitRk<S> {
         result
     }
 
-    fn newton_iterations<P: Problem<Scalar = S::Scalar, State = S>>(
+    fn newton_iterations<P: Problem<Scalar = T, State = S>>(
         &mut self,
         newton: &mut Newton<S>,
         p: &P,
-        t: S::Scalar,
-        h: S::Scalar,
+        t: T,
+        h: T,
         y: &S,
-        mut stop: Stop<S::Scalar>,
+        mut stop: Stop<T>,
     ) -> Result<(), Error> {
         let mut residual = S::Scalar::zero();
         for iteration in 1..=self.options.max_iterations {

@@ -50,9 +50,11 @@ pub trait Stepper<P: Problem> {
     /// Name and table row of the method.
     fn info(&self) -> MethodInfo;
 
-    /// Order of the error estimate that drives step-size control, `None` if the method
-    /// has no estimate (fixed steps only).
-    fn error_order(&self) -> Option<usize>;
+    /// Order of the error estimate that drives step-size control, `None` (the default) if
+    /// the method has no estimate (fixed steps only).
+    fn error_order(&self) -> Option<usize> {
+        None
+    }
 
     /// One step of size `h` from `(t, y)` into `y_new`.
     fn step(&mut self, p: &P, t: P::Scalar, h: P::Scalar, y: &P::State, y_new: &mut P::State) -> Result<(), Error>;

@@ -309,10 +309,6 @@ where
         self.word.info()
     }
 
-    fn error_order(&self) -> Option<usize> {
-        None
-    }
-
     #[inline]
     fn step(&mut self, p: &P, t: P::Scalar, h: P::Scalar, y: &P::State, y_new: &mut P::State) -> Result<(), Error> {
         if let Some(word) = self.compensated.as_mut() {

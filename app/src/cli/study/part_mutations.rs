@@ -173,7 +173,7 @@ fn numbers_case(flag: usize, edits: &[Edit]) -> Result<(), TestCaseError> {
 use clap::Args as _;
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 2000, failure_persistence: None, ..ProptestConfig::default() })]
+    #![proptest_config(mutate::config(mutate::CASES))]
 
     #[test]
     fn mutated_shards_give_checked_parts_or_errors_naming_a_line_or_field(e in edits()) {
@@ -187,7 +187,7 @@ proptest! {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 100_000, failure_persistence: None, ..ProptestConfig::default() })]
+    #![proptest_config(mutate::config(mutate::LONG_RUN))]
 
     #[test]
     #[ignore = "long run: 10^5 mutated shards"]

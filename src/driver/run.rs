@@ -1,0 +1,271 @@
+//! One run in progress: the problem, the stepper, where the records go and the work done,
+//! with the fixed-step and adaptive loops as its methods, so that what every loop shares is
+//! named once.
+
+use super::adaptive::{initial_step, Controller};
+use super::{Driver, Recorder, SaveAt, Stats, StopEvent};
+#[allow(unused_imports)]
+use crate::real::ops::*;
+use crate::{lit, to_f64, Error, Problem, Real, State, Stepper, Tolerances};
+
+/// A run of `driver` on problem `p` with `stepper`, recording into `out`.
+pub(super) struct Run<'r, 'd, T: Real, S, P, St: ?Sized, R: ?Sized> {
+    pub driver: &'r Driver<'d, T, S>,
+    pub p: &'r P,
+    pub stepper: &'r mut St,
+    pub out: &'r mut R,
+    pub stats: &'r mut Stats,
+}
+
+impl<T, S, P, St, R> Run<'_, '_, T, S, P, St, R>
+where
+    T: Real,
+    S: State<Scalar = T>,
+    P: Problem<Scalar = T, State = S>,
+    St: Stepper<P> + ?Sized,
+    R: Recorder<T, S> + ?Sized,
+{
+    #[allow(clippy::too_many_arguments)]
+    pub(super) fn fixed(&mut self, t0: T, y0: &S, t_end: T, h: T) -> Result<Option<StopEvent<T, S>>, Error> {
+        let driver = self.driver;
+        let span = t_end - t0;
+        if !(h.is_finite() && h != T::zero()) {
+            return Err(Error::invalid(
+                "step size",
+                format!("must be finite and non-zero, got {}", to_f64(h)),
+            ));
+        }
+        let h = if span < T::zero() { -h.abs() } else { h.abs() };
+        // Steps of exactly h; a last, shorter one when h does not divide the span.
+        let ratio = to_f64(span / h);
+        let whole = ratio.round();
+        // `span / h` carries the scalar's rounding: in f32 a step of 1/61 over [0, 1] gives
+        // 61 within a few epsilon, which must not become 61 steps plus one of 6e-8
+        let tolerance = f64::max(1e-9, 16.0 * to_f64(T::default_epsilon()));
+        let exact = (ratio - whole).abs() <= tolerance * ratio.abs().max(1.0);
+        let n = if exact { whole } else { ratio.ceil() };
+        if n > driver.max_steps as f64 {
+            return Err(Error::TooManySteps {
+                t: to_f64(t0),
+                steps: driver.max_steps,
+                needed: Some(n),
+            });
+        }
+        let n = n as u64;
+        let mut y = y0.clone();
+        if driver.stop.is_none() && driver.save_at.is_none() && self.stepper.steps_in_place() {
+            return self.fixed_in_place(t0, &mut y, t_end, h, n, exact);
+        }
+        let mut y_new = y0.clone();
+        let mut g_old = driver.stop.as_ref().map(|g| g(t0, y0));
+        let mut save = driver.save_at.as_deref().map(|times| SaveAt::new(times, t0, y0));
+        for i in 0..n {
+            let t = t0 + lit::<T>(i as f64) * h;
+            if driver.cancelled(i) {
+                return Err(Error::Cancelled { t: to_f64(t), step: i });
+            }
+            let hi = if i + 1 == n && !exact { t_end - t } else { h };
+            self.stepper.step(self.p, t, hi, &y, &mut y_new)?;
+            if !y_new.is_finite() {
+                return Err(Error::NonFinite { t: to_f64(t), step: i });
+            }
+            if let Some(event) = driver.locate(self.p, &mut *self.stepper, t, hi, &y, &mut y_new, &mut g_old)? {
+                return self.end_at(t, &y, event, save.as_mut());
+            }
+            let t_next = if i + 1 == n && !exact {
+                t_end
+            } else {
+                t0 + lit::<T>((i + 1) as f64) * h
+            };
+            self.accept(save.as_mut(), t, t_next, &y, &y_new)?;
+            core::mem::swap(&mut y, &mut y_new);
+            if save.is_none() && ((i + 1) % driver.every == 0 || i + 1 == n) {
+                self.out.record(t_next, &y, self.p.energy(t_next, &y))?;
+            }
+        }
+        Ok(None)
+    }
+
+    /// Accepts the step `(t, y) -> (end, y_new)`: records the output times inside it (with
+    /// `save_at`, before the stepper forgets the step), then counts it. True when `end`
+    /// itself was one of the output times, and so is recorded.
+    #[inline]
+    pub(super) fn accept(
+        &mut self,
+        save: Option<&mut SaveAt<'_, T, S>>,
+        t: T,
+        end: T,
+        y: &S,
+        y_new: &S,
+    ) -> Result<bool, Error> {
+        let mut recorded = false;
+        if let Some(save) = save {
+            save.record_step(self.p, &*self.stepper, t, end, y, y_new, &mut *self.out, self.stats)?;
+            recorded = save.last_recorded() == Some(end);
+        }
+        self.stepper.accept();
+        self.stats.steps += 1;
+        Ok(recorded)
+    }
+
+    /// The end of a run at a located stop event inside the step from `(t, y)`: the output
+    /// times before it (with `save_at`), then the event as the last record.
+    pub(super) fn end_at(
+        &mut self,
+        t: T,
+        y: &S,
+        event: StopEvent<T, S>,
+        save: Option<&mut SaveAt<'_, T, S>>,
+    ) -> Result<Option<StopEvent<T, S>>, Error> {
+        // the stepper's last step is the one that located the event: from `y` to it
+        if !self.accept(save, t, event.t, y, &event.y)? {
+            self.out.record(event.t, &event.y, self.p.energy(event.t, &event.y))?;
+        }
+        Ok(Some(event))
+    }
+
+    /// The fixed-step loop of a stepper that steps in place (no stop condition).
+    #[allow(clippy::too_many_arguments)]
+    fn fixed_in_place(
+        &mut self,
+        t0: T,
+        y: &mut S,
+        t_end: T,
+        h: T,
+        n: u64,
+        exact: bool,
+    ) -> Result<Option<StopEvent<T, S>>, Error> {
+        let driver = self.driver;
+        // a countdown, not `(i + 1) % every`: an integer division per step is measurable
+        let mut until_record = driver.every;
+        for i in 0..n {
+            let t = t0 + lit::<T>(i as f64) * h;
+            if driver.cancelled(i) {
+                return Err(Error::Cancelled { t: to_f64(t), step: i });
+            }
+            let last = i + 1 == n;
+            let hi = if last && !exact { t_end - t } else { h };
+            self.stepper.step_in_place(self.p, t, hi, y)?;
+            if !y.is_finite() {
+                return Err(Error::NonFinite { t: to_f64(t), step: i });
+            }
+            self.stats.steps += 1;
+            until_record -= 1;
+            if until_record == 0 || last {
+                until_record = driver.every;
+                let t_next = if last && !exact {
+                    t_end
+                } else {
+                    t0 + lit::<T>((i + 1) as f64) * h
+                };
+                self.out.record(t_next, y, self.p.energy(t_next, y))?;
+            }
+        }
+        Ok(None)
+    }
+
+    /// The adaptive loop: each step's error norm ([`Stepper::error_norm`]) decides its
+    /// acceptance and the next step ([`Controller`]).
+    pub(super) fn adaptive(
+        &mut self,
+        t0: T,
+        y0: &S,
+        t_end: T,
+        tol: &Tolerances<T>,
+        h0: Option<T>,
+        h_max: Option<T>,
+    ) -> Result<Option<StopEvent<T, S>>, Error> {
+        let driver = self.driver;
+        let Some(q) = self.stepper.error_order() else {
+            return Err(Error::Unsupported {
+                name: self.stepper.info().name,
+                reason: "it has no embedded error estimate, which adaptive steps need; use fixed steps".into(),
+            });
+        };
+        let finite = tol.rtol.is_finite() && tol.atol.is_finite();
+        let valid = finite && tol.rtol >= T::zero() && tol.atol >= T::zero() && tol.rtol + tol.atol > T::zero();
+        if !valid {
+            return Err(Error::invalid(
+                "tolerances",
+                "rtol and atol must be finite, >= 0 and not both 0",
+            ));
+        }
+        let span = t_end - t0;
+        let dir = if span < T::zero() { -T::one() } else { T::one() };
+        let h_max = h_max.map_or(span.abs(), |h| h.abs());
+        let mut h = match h0 {
+            Some(h) if h.is_finite() && h != T::zero() => h.abs().min(h_max),
+            Some(h) => {
+                return Err(Error::invalid(
+                    "initial step",
+                    format!("must be finite and non-zero, got {}", to_f64(h)),
+                ))
+            }
+            None => initial_step(self.p, t0, y0, tol, self.stepper.info().order, h_max, dir, self.stats),
+        } * dir;
+        let mut controller = Controller::new(q, h_max);
+        let mut t = t0;
+        let mut y = y0.clone();
+        let mut y_new = y0.clone();
+        let mut g_old = driver.stop.as_ref().map(|g| g(t0, y0));
+        let mut since_record = 0;
+        let mut save = driver.save_at.as_deref().map(|times| SaveAt::new(times, t0, y0));
+        loop {
+            if (t - t_end) * dir >= T::zero() {
+                return Ok(None);
+            }
+            if self.stats.steps >= driver.max_steps {
+                return Err(Error::TooManySteps {
+                    t: to_f64(t),
+                    steps: self.stats.steps,
+                    needed: None,
+                });
+            }
+            if driver.cancelled(self.stats.steps + self.stats.rejected) {
+                return Err(Error::Cancelled {
+                    t: to_f64(t),
+                    step: self.stats.steps,
+                });
+            }
+            let last = (t + h - t_end) * dir >= T::zero();
+            if last {
+                h = t_end - t;
+            }
+            // A step too large for the implicit solver is rejected like a step too large for
+            // the tolerance, and retried smaller; the solver's error is reported only if
+            // the step then underflows.
+            let (err, solver_failure) = match self.stepper.step(self.p, t, h, &y, &mut y_new) {
+                Ok(()) => (self.stepper.error_norm(&y, &y_new, tol).unwrap_or(T::zero()), None),
+                Err(e @ Error::SolverDiverged { .. }) => (T::zero(), Some(e)),
+                Err(e) => return Err(e),
+            };
+            if solver_failure.is_none() && err <= T::one() && y_new.is_finite() {
+                if let Some(event) = driver.locate(self.p, &mut *self.stepper, t, h, &y, &mut y_new, &mut g_old)? {
+                    return self.end_at(t, &y, event, save.as_mut());
+                }
+                let t_next = if last { t_end } else { t + h };
+                self.accept(save.as_mut(), t, t_next, &y, &y_new)?;
+                core::mem::swap(&mut y, &mut y_new);
+                t = t_next;
+                since_record += 1;
+                if save.is_none() && (since_record == driver.every || last) {
+                    self.out.record(t, &y, self.p.energy(t, &y))?;
+                    since_record = 0;
+                }
+                h = controller.accepted(h, err);
+            } else {
+                self.stats.rejected += 1;
+                h = controller.rejected(h, Some(err).filter(|_| solver_failure.is_none()));
+            }
+            if h.abs() <= T::default_epsilon() * lit::<T>(10.0) * t.abs().max(T::one()) {
+                if let Some(e) = solver_failure {
+                    return Err(e);
+                }
+                return Err(Error::StepSizeTooSmall {
+                    t: to_f64(t),
+                    h: to_f64(h),
+                });
+            }
+        }
+    }
+}
