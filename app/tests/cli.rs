@@ -1584,6 +1584,35 @@ fn run_draws_its_pictures() {
     );
 }
 
+/// No two texts of a picture on one line (the same `x`, an axis' tick column, or the same
+/// `y`, its tick row) read the same: every tick label resolves its axis (issue 12: every
+/// y tick of the coulomb energy read `-0.577`).
+fn assert_ticks_distinct(src: &str, svg: &str) {
+    let mut lines: std::collections::HashMap<String, Vec<String>> = Default::default();
+    for text in svg.split("<text ").skip(1) {
+        let attr = |name: &str| text.split(&format!("{name}=\"")).nth(1)?.split('"').next();
+        let (Some(x), Some(y)) = (attr("x"), attr("y")) else {
+            continue;
+        };
+        let label = text
+            .split_once('>')
+            .map_or("", |(_, rest)| rest.split("</text>").next().unwrap_or(""));
+        for key in [format!("x{x}"), format!("y{y}")] {
+            lines.entry(key).or_default().push(label.trim().to_string());
+        }
+    }
+    for labels in lines.values() {
+        let mut sorted = labels.clone();
+        sorted.sort();
+        sorted.dedup();
+        assert_eq!(
+            sorted.len(),
+            labels.len(),
+            "{src}: tick labels repeat on one axis: {labels:?}"
+        );
+    }
+}
+
 /// `stormer tour`: the report, every picture it references, and verdicts that say what
 /// SCENES.md says.
 #[test]
@@ -1604,6 +1633,7 @@ fn tour_writes_the_report_with_verdicts() {
         let svg = std::fs::read_to_string(report.join(&src)).unwrap_or_else(|e| panic!("{src}: {e}"));
         assert!(svg.contains("<svg") && svg.len() > 1000, "{src} is not a drawn SVG");
         assert!(svg.matches("<text").count() >= 5, "{src}: title, axis labels, legend");
+        assert_ticks_distinct(&src, &svg);
         for key in ["alt", "data-x", "data-y"] {
             let text = attr(key).unwrap_or_default();
             assert!(

@@ -196,25 +196,25 @@ pub fn draw(path: &Path, chart: &Chart, series: &[Series]) -> anyhow::Result<()>
     match (chart.x_scale, chart.y_scale) {
         (Scale::Linear, Scale::Linear) => {
             let mut c = builder.build_cartesian_2d(xr.0..xr.1, yr.0..yr.1).map_err(plot_error)?;
-            finish(&mut c, chart, series, &kept)
+            finish(&mut c, chart, series, &kept, (xr, yr))
         }
         (Scale::Log, Scale::Linear) => {
             let mut c = builder
                 .build_cartesian_2d((xr.0..xr.1).log_scale(), yr.0..yr.1)
                 .map_err(plot_error)?;
-            finish(&mut c, chart, series, &kept)
+            finish(&mut c, chart, series, &kept, (xr, yr))
         }
         (Scale::Linear, Scale::Log) => {
             let mut c = builder
                 .build_cartesian_2d(xr.0..xr.1, (yr.0..yr.1).log_scale())
                 .map_err(plot_error)?;
-            finish(&mut c, chart, series, &kept)
+            finish(&mut c, chart, series, &kept, (xr, yr))
         }
         (Scale::Log, Scale::Log) => {
             let mut c = builder
                 .build_cartesian_2d((xr.0..xr.1).log_scale(), (yr.0..yr.1).log_scale())
                 .map_err(plot_error)?;
-            finish(&mut c, chart, series, &kept)
+            finish(&mut c, chart, series, &kept, (xr, yr))
         }
     }?;
     root.present().map_err(plot_error)?;
@@ -228,16 +228,18 @@ fn finish<'a, X, Y>(
     chart: &Chart,
     series: &[Series],
     kept: &[Vec<(f64, f64)>],
+    (xr, yr): ((f64, f64), (f64, f64)),
 ) -> anyhow::Result<()>
 where
     X: Ranged<ValueType = f64> + ValueFormatter<f64>,
     Y: Ranged<ValueType = f64> + ValueFormatter<f64>,
 {
+    let (x_tick, y_tick) = (Ticks::new(chart.x_scale, xr), Ticks::new(chart.y_scale, yr));
     c.configure_mesh()
         .x_desc(chart.x_label.as_str())
         .y_desc(chart.y_label.as_str())
-        .x_label_formatter(&|v| tick(*v))
-        .y_label_formatter(&|v| tick(*v))
+        .x_label_formatter(&|v| x_tick.label(*v))
+        .y_label_formatter(&|v| y_tick.label(*v))
         .light_line_style(WHITE.mix(0.0))
         .draw()
         .map_err(plot_error)?;
@@ -262,6 +264,50 @@ where
             .map_err(plot_error)?;
     }
     Ok(())
+}
+
+/// The tick labels of one axis: on a linear axis, as many digits as tell ticks a tenth of
+/// the range apart (`-0.57746`, `-0.57744`, not `-0.577` on every tick), and `0` for a
+/// value that is zero to the axis' resolution (not `-2.22e-16`); on a log axis, [`tick`].
+struct Ticks {
+    /// A tenth of the range of a linear axis; `None` on a log axis or an empty range.
+    step: Option<f64>,
+}
+
+impl Ticks {
+    fn new(scale: Scale, (lo, hi): (f64, f64)) -> Self {
+        let step = (hi - lo).abs() / 10.0;
+        Ticks {
+            step: (scale == Scale::Linear && step.is_finite() && step > 0.0).then_some(step),
+        }
+    }
+
+    fn label(&self, v: f64) -> String {
+        let Some(step) = self.step else {
+            return tick(v);
+        };
+        if v.abs() <= step * 1e-6 {
+            return "0".into();
+        }
+        // the digits that resolve `step` (ticks are multiples of at least `step`)
+        let decimals = (-step.log10().floor()).max(0.0) as usize;
+        let a = v.abs();
+        if (1e-3..1e5).contains(&a) && decimals <= 12 {
+            let plain = tick(v);
+            let needed = format!("{v:.decimals$}");
+            let needed = if needed.contains('.') {
+                needed.trim_end_matches('0').trim_end_matches('.').to_string()
+            } else {
+                needed
+            };
+            return if needed.len() > plain.len() { needed } else { plain };
+        }
+        let digits = ((a / step).log10().ceil().max(0.0) as usize + 1).clamp(2, 16);
+        let s = format!("{v:.digits$e}");
+        let (mantissa, exponent) = s.split_once('e').unwrap_or((&s, "0"));
+        let mantissa = mantissa.trim_end_matches('0').trim_end_matches('.');
+        format!("{mantissa}e{exponent}")
+    }
 }
 
 /// A tick label with at most three significant digits: `0.001`, `250`, `1e-5`, `2.5e6`
@@ -360,6 +406,23 @@ mod tests {
             }
         }
         std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn linear_ticks_resolve_their_axis_and_print_zero_as_zero() {
+        let narrow = Ticks::new(Scale::Linear, (-0.57746, -0.57734));
+        let labels: Vec<String> = [-0.57746, -0.57744, -0.57742]
+            .iter()
+            .map(|&v| narrow.label(v))
+            .collect();
+        assert_eq!(labels, ["-0.57746", "-0.57744", "-0.57742"]);
+        let unit = Ticks::new(Scale::Linear, (-1.0, 1.0));
+        assert_eq!(unit.label(-2.220446049250313e-16), "0");
+        assert_eq!(unit.label(0.2), "0.2");
+        assert_eq!(unit.label(-0.6000000000000001), "-0.6");
+        let huge = Ticks::new(Scale::Linear, (1e10, 1e10 + 1e4));
+        assert_eq!(huge.label(1e10 + 2e3), "1.0000002e10");
+        assert_eq!(Ticks::new(Scale::Log, (1e-3, 1.0)).label(0.01), "0.01");
     }
 
     #[test]
