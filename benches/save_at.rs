@@ -11,29 +11,16 @@
 
 #[path = "support/interleaved.rs"]
 mod interleaved;
+#[path = "../tests/support/problems.rs"]
+mod problems;
 
 use criterion::{criterion_group, Criterion};
+use problems::Kepler;
 use std::hint::black_box;
 use stormer::catalog::{Dop853, DormandPrince5};
-use stormer::{Driver, ExplicitMethod, ExplicitRk, Problem, Tolerances};
+use stormer::{Driver, ExplicitMethod, ExplicitRk, Tolerances};
 
-/// Kepler's problem with `mu = 1`, eccentricity 0.6 from pericentre (SCENES.md's kepler-e06).
-struct Kepler;
-
-impl Problem for Kepler {
-    type Scalar = f64;
-    type State = [f64; 4];
-    #[inline]
-    fn rhs(&self, _t: f64, y: &[f64; 4], dy: &mut [f64; 4]) {
-        let r2 = y[0] * y[0] + y[1] * y[1];
-        let r3 = r2 * r2.sqrt();
-        *dy = [y[2], y[3], -y[0] / r3, -y[1] / r3];
-    }
-    fn energy(&self, _t: f64, y: &[f64; 4]) -> Option<f64> {
-        Some(0.5 * (y[2] * y[2] + y[3] * y[3]) - 1.0 / (y[0] * y[0] + y[1] * y[1]).sqrt())
-    }
-}
-
+/// Pericentre of the e = 0.6 orbit.
 const Y0: [f64; 4] = [0.4, 0.0, 0.0, 2.0];
 const T_END: f64 = 10.0 * std::f64::consts::TAU;
 const TOL: f64 = 1e-10;

@@ -42,3 +42,22 @@ impl SecondOrder for Oscillator {
         a[0] = -q[0];
     }
 }
+
+/// Kepler's problem with `mu = 1` as a first-order system `(x, y, vx, vy)`: nonlinear and of
+/// more than one dimension (on a linear or a scalar problem some errors look a power smaller
+/// than they are). From `(1, 0, 0, 1)` the orbit is the unit circle; from `(0.4, 0, 0, 2)`
+/// the ellipse of eccentricity 0.6 (SCENES.md's kepler-e06).
+pub struct Kepler;
+impl Problem for Kepler {
+    type Scalar = f64;
+    type State = [f64; 4];
+    #[inline]
+    fn rhs(&self, _t: f64, y: &[f64; 4], dy: &mut [f64; 4]) {
+        let r2 = y[0] * y[0] + y[1] * y[1];
+        let r3 = r2 * r2.sqrt();
+        *dy = [y[2], y[3], -y[0] / r3, -y[1] / r3];
+    }
+    fn energy(&self, _t: f64, y: &[f64; 4]) -> Option<f64> {
+        Some(0.5 * (y[2] * y[2] + y[3] * y[3]) - 1.0 / (y[0] * y[0] + y[1] * y[1]).sqrt())
+    }
+}
