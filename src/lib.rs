@@ -22,7 +22,9 @@ mod state;
 pub mod stepper;
 pub mod verify;
 
-pub use driver::{hermite, Driver, Interrupted, Solution, Stats, StepControl, StopEvent, DENSE_ORDER};
+pub use driver::{
+    hermite, Crossing, Driver, EventHit, Interrupted, Solution, Stats, StepControl, StopEvent, DENSE_ORDER,
+};
 pub use error::Error;
 pub use families::{Families, SplittingSource};
 

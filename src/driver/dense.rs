@@ -1,5 +1,5 @@
-//! Output at chosen times ([`Driver::save_at`]): the states between steps, from the
-//! continuous extension of each step that contains an output time.
+//! Output at chosen times ([`Driver::save_at`]) and events ([`Driver::event`]): the states
+//! between steps, from the continuous extension of each step that contains one.
 //!
 //! The extension is the cubic Hermite interpolant through both ends of the step and the
 //! slopes `f` there (order 3: its error is `O(h^4)` per step whatever the method). The
@@ -7,39 +7,66 @@
 //! method's first stage, a FSAL method's last); the missing ones are evaluated, and only
 //! for steps that contain an output time, so a run without `save_at` pays nothing.
 
-use super::{Driver, Recorder, Stats};
+use super::events::{Event, EventHit};
+use super::{Driver, Recorder, Stats, StopEvent};
 #[allow(unused_imports)]
 use crate::real::ops::*;
 use crate::{lit, to_f64, Error, Problem, Real, State, Stepper};
 
+/// Iterations of the event root finder; each halves the bracket at worst.
+const MAX_ITERATIONS: usize = 100;
+
 /// The order of the driver's continuous extension (cubic Hermite).
 pub const DENSE_ORDER: usize = 3;
 
-/// The output times of a run and the slopes of the step being interpolated.
-pub(super) struct SaveAt<'d, T, S> {
+/// What the driver records inside the steps: the output times of [`Driver::save_at`] and
+/// the crossings of [`Driver::event`]s, from the continuous extension of each step (the
+/// method's own, or the cubic Hermite through the step's ends and slopes).
+pub(super) struct Between<'d, 'a, T, S> {
     times: &'d [T],
     /// The first output time not yet recorded.
     next: usize,
+    events: &'d [Event<'a, T, S>],
+    /// Each event function at the start of the current step.
+    g_old: Vec<T>,
     f0: S,
     f1: S,
     /// The interpolated state.
     at: S,
     /// The time at which `f1` was evaluated by the driver (reused as the next step's `f0`).
     f1_at: Option<T>,
+    /// Whether `f0` and `f1` are this step's.
+    ready: bool,
 }
 
-impl<'d, T: Real, S: State<Scalar = T>> SaveAt<'d, T, S> {
-    /// Output at `times` (checked by [`Driver::check_save_at`]), the run starting at `t0`:
-    /// a time equal to `t0` is the initial record's, counted as written.
-    pub(super) fn new(times: &'d [T], t0: T, y0: &S) -> Self {
-        SaveAt {
+/// What a step's inside held: the last output time recorded in it, and the terminal event
+/// that ends the run in it.
+pub(super) struct Inside<T, S> {
+    pub last_recorded: Option<T>,
+    pub stop: Option<StopEvent<T, S>>,
+}
+
+impl<'d, 'a, T: Real, S: State<Scalar = T>> Between<'d, 'a, T, S> {
+    /// Output at `times` (checked by [`Driver::check_save_at`]) and `events`, the run
+    /// starting at `(t0, y0)`: a time equal to `t0` is the initial record's, counted as
+    /// written.
+    pub(super) fn new(times: &'d [T], events: &'d [Event<'a, T, S>], t0: T, y0: &S) -> Self {
+        Between {
             times,
             next: usize::from(times.first() == Some(&t0)),
+            events,
+            g_old: events.iter().map(|e| (e.g)(t0, y0)).collect(),
             f0: y0.zeros_like(),
             f1: y0.zeros_like(),
             at: y0.zeros_like(),
             f1_at: None,
+            ready: false,
         }
+    }
+
+    /// The last output time recorded so far.
+    pub(super) fn last_time(&self) -> Option<T> {
+        self.next.checked_sub(1).and_then(|i| self.times.get(i).copied())
     }
 
     /// True when the run's initial record is one of the output times.
@@ -47,8 +74,10 @@ impl<'d, T: Real, S: State<Scalar = T>> SaveAt<'d, T, S> {
         times.first() == Some(&t0)
     }
 
-    /// Records every output time in `(t, end]` (in the run's direction), from the step
-    /// `(t, y) -> (end, y_new)` the stepper has just taken (not yet accepted).
+    /// Records what lies in `(t, end]` of the step `(t, y) -> (end, y_new)` the stepper has
+    /// just taken (not yet accepted), in time order: output times as records, non-terminal
+    /// event crossings through [`Recorder::event`], up to the first terminal crossing, which
+    /// is returned (and recorded as the last record by the caller).
     #[allow(clippy::too_many_arguments)]
     pub(super) fn record_step<P, St, R>(
         &mut self,
@@ -60,41 +89,138 @@ impl<'d, T: Real, S: State<Scalar = T>> SaveAt<'d, T, S> {
         y_new: &S,
         out: &mut R,
         stats: &mut Stats,
-    ) -> Result<(), Error>
+    ) -> Result<Inside<T, S>, Error>
     where
         P: Problem<Scalar = T, State = S>,
         St: Stepper<P> + ?Sized,
         R: Recorder<T, S> + ?Sized,
     {
+        self.ready = false;
         let h = end - t;
-        let inside = |s: T| if h > T::zero() { s <= end } else { s >= end };
-        let Some(&first) = self.times.get(self.next) else {
-            return Ok(());
-        };
-        if !inside(first) {
-            return Ok(());
-        }
-        let mut ready = false;
-        while let Some(&s) = self.times.get(self.next).filter(|&&s| inside(s)) {
-            if s == end {
-                out.record(s, y_new, p.energy(s, y_new))?;
-            } else if stepper.interpolate((s - t) / h, y, &mut self.at) {
-                // the method's own continuous extension
-                out.record(s, &self.at, p.energy(s, &self.at))?;
-            } else {
-                // the slopes only for a step with a time inside it
-                if !ready {
-                    self.slopes(p, stepper, t, end, y, y_new, stats);
-                    ready = true;
-                }
-                hermite((s - t) / h, h, y, y_new, &self.f0, &self.f1, &mut self.at);
-                out.record(s, &self.at, p.energy(s, &self.at))?;
+        let mut hits = Vec::new();
+        for (index, event) in self.events.iter().enumerate() {
+            let g1 = (event.g)(end, y_new);
+            if event.crossing.between(self.g_old[index], g1) {
+                let theta = self.root(p, stepper, index, t, end, y, y_new, g1, stats);
+                hits.push((theta, index));
             }
-            self.next += 1;
+            self.g_old[index] = g1;
         }
-        Ok(())
+        // a step with a crossing allocates its list; steps without one do not
+        hits.sort_by(|a, b| a.0.partial_cmp(&b.0).unwrap_or(core::cmp::Ordering::Equal));
+        let cut = hits.iter().position(|&(_, k)| self.events[k].terminal);
+        let limit = cut.map_or(T::one(), |i| hits[i].0);
+        let mut inside = Inside {
+            last_recorded: None,
+            stop: None,
+        };
+        let mut pending = hits.iter().take(cut.map_or(hits.len(), |i| i + 1)).peekable();
+        loop {
+            let time = self
+                .times
+                .get(self.next)
+                .map(|&s| (s, (s - t) / h))
+                .filter(|&(_, th)| th <= limit);
+            match (time, pending.peek().map(|&&hit| hit)) {
+                (None, None) => break,
+                (Some((s, th)), hit) if hit.map_or(true, |(te, _)| th <= te) => {
+                    self.state_at(p, stepper, th, t, end, y, y_new, stats);
+                    out.record(s, &self.at, p.energy(s, &self.at))?;
+                    inside.last_recorded = Some(s);
+                    self.next += 1;
+                }
+                (_, Some((th, index))) => {
+                    pending.next();
+                    self.state_at(p, stepper, th, t, end, y, y_new, stats);
+                    let hit = EventHit {
+                        index,
+                        t: if th == T::one() { end } else { t + th * h },
+                        y: self.at.clone(),
+                    };
+                    if self.events[index].terminal {
+                        inside.stop = Some(StopEvent { t: hit.t, y: hit.y });
+                        break;
+                    }
+                    out.event(&hit)?;
+                }
+                (Some(_), None) => unreachable!("an output time with no crossing left is taken above"),
+            }
+        }
+        Ok(inside)
     }
 
+    /// The fraction `theta` of the step where event `index` crosses zero: Illinois regula
+    /// falsi on the continuous extension, to 4 eps of the time.
+    #[allow(clippy::too_many_arguments)]
+    fn root<P, St>(
+        &mut self,
+        p: &P,
+        stepper: &St,
+        index: usize,
+        t: T,
+        end: T,
+        y: &S,
+        y_new: &S,
+        g1: T,
+        stats: &mut Stats,
+    ) -> T
+    where
+        P: Problem<Scalar = T, State = S>,
+        St: Stepper<P> + ?Sized,
+    {
+        let h = end - t;
+        let (mut lo, mut glo, mut hi, mut ghi) = (T::zero(), self.g_old[index], T::one(), g1);
+        if ghi == T::zero() {
+            return T::one();
+        }
+        let resolution = T::default_epsilon() * lit::<T>(4.0) * t.abs().max(end.abs()).max(T::one()) / h.abs();
+        let mut side = 0i8;
+        let mut theta = T::one();
+        for _ in 0..MAX_ITERATIONS {
+            theta = (lo * ghi - hi * glo) / (ghi - glo);
+            if !(theta > lo && theta < hi) {
+                theta = (lo + hi) * lit(0.5);
+            }
+            self.state_at(p, stepper, theta, t, end, y, y_new, stats);
+            let g = (self.events[index].g)(t + theta * h, &self.at);
+            if g == T::zero() || hi - lo <= resolution {
+                break;
+            }
+            if (g > T::zero()) == (glo > T::zero()) {
+                (lo, glo) = (theta, g);
+                if side == -1 {
+                    ghi *= lit(0.5);
+                }
+                side = -1;
+            } else {
+                (hi, ghi) = (theta, g);
+                if side == 1 {
+                    glo *= lit(0.5);
+                }
+                side = 1;
+            }
+        }
+        theta
+    }
+
+    /// `self.at = u(theta)`: the method's own continuous extension, else the cubic Hermite
+    /// (its slopes found once per step).
+    #[allow(clippy::too_many_arguments)]
+    fn state_at<P, St>(&mut self, p: &P, stepper: &St, theta: T, t: T, end: T, y: &S, y_new: &S, stats: &mut Stats)
+    where
+        P: Problem<Scalar = T, State = S>,
+        St: Stepper<P> + ?Sized,
+    {
+        if theta == T::one() {
+            self.at.copy_from(y_new);
+        } else if !stepper.interpolate(theta, y, &mut self.at) {
+            if !self.ready {
+                self.slopes(p, stepper, t, end, y, y_new, stats);
+                self.ready = true;
+            }
+            hermite(theta, end - t, y, y_new, &self.f0, &self.f1, &mut self.at);
+        }
+    }
     /// `f0 = f(t, y)` and `f1 = f(end, y_new)`: the stepper's where it has them, the
     /// previous step's end slope where this step starts there, else evaluated.
     #[allow(clippy::too_many_arguments)]
@@ -123,11 +249,6 @@ impl<'d, T: Real, S: State<Scalar = T>> SaveAt<'d, T, S> {
                 self.f1_at = Some(end);
             }
         }
-    }
-
-    /// The last output time recorded.
-    pub(super) fn last_recorded(&self) -> Option<T> {
-        self.next.checked_sub(1).map(|i| self.times[i])
     }
 }
 

@@ -1,11 +1,17 @@
 //! What a run produces: records, statistics, and how it ended.
 
+use super::EventHit;
 use crate::Error;
 
 /// Receives the records of a run as they are made.
 pub trait Recorder<T, S> {
     /// One record: time, state and the energy when the problem defines one.
     fn record(&mut self, t: T, y: &S, energy: Option<T>) -> Result<(), Error>;
+
+    /// A crossing of a non-terminal event ([`crate::Driver::event`]); ignored by default.
+    fn event(&mut self, _hit: &EventHit<T, S>) -> Result<(), Error> {
+        Ok(())
+    }
 }
 
 /// Counts of the work a run did.
@@ -43,8 +49,10 @@ pub struct Solution<T, S> {
     pub energy: Vec<T>,
     /// Work done.
     pub stats: Stats,
-    /// Set when a stop condition ended the run.
+    /// Set when a stop condition or a terminal event ended the run.
     pub stopped: Option<StopEvent<T, S>>,
+    /// The crossings of the non-terminal events, in time order.
+    pub events: Vec<EventHit<T, S>>,
 }
 
 impl<T, S> Default for Solution<T, S> {
@@ -55,6 +63,7 @@ impl<T, S> Default for Solution<T, S> {
             energy: Vec::new(),
             stats: Stats::default(),
             stopped: None,
+            events: Vec::new(),
         }
     }
 }
@@ -66,6 +75,11 @@ impl<T: Copy, S: Clone> Recorder<T, S> for Solution<T, S> {
         if let Some(e) = energy {
             self.energy.push(e);
         }
+        Ok(())
+    }
+
+    fn event(&mut self, hit: &EventHit<T, S>) -> Result<(), Error> {
+        self.events.push(hit.clone());
         Ok(())
     }
 }

@@ -3,7 +3,8 @@
 //! named once.
 
 use super::adaptive::{initial_step, Controller};
-use super::{Driver, Recorder, SaveAt, Stats, StopEvent};
+use super::dense::Inside;
+use super::{Between, Driver, Recorder, Stats, StopEvent};
 #[allow(unused_imports)]
 use crate::real::ops::*;
 use crate::{lit, to_f64, Error, Problem, Real, State, Stepper, Tolerances};
@@ -53,12 +54,16 @@ where
         }
         let n = n as u64;
         let mut y = y0.clone();
-        if driver.stop.is_none() && driver.save_at.is_none() && self.stepper.steps_in_place() {
+        if driver.stop.is_none()
+            && driver.save_at.is_none()
+            && driver.events.is_empty()
+            && self.stepper.steps_in_place()
+        {
             return self.fixed_in_place(t0, &mut y, t_end, h, n, exact);
         }
         let mut y_new = y0.clone();
         let mut g_old = driver.stop.as_ref().map(|g| g(t0, y0));
-        let mut save = driver.save_at.as_deref().map(|times| SaveAt::new(times, t0, y0));
+        let mut save = driver.between(t0, y0);
         for i in 0..n {
             let t = t0 + lit::<T>(i as f64) * h;
             if driver.cancelled(i) {
@@ -77,48 +82,66 @@ where
             } else {
                 t0 + lit::<T>((i + 1) as f64) * h
             };
-            self.accept(save.as_mut(), t, t_next, &y, &y_new)?;
+            if let Some(stop) = self.accept(save.as_mut(), t, t_next, &y, &y_new)? {
+                return Ok(Some(stop));
+            }
             core::mem::swap(&mut y, &mut y_new);
-            if save.is_none() && ((i + 1) % driver.every == 0 || i + 1 == n) {
+            if driver.save_at.is_none() && ((i + 1) % driver.every == 0 || i + 1 == n) {
                 self.out.record(t_next, &y, self.p.energy(t_next, &y))?;
             }
         }
         Ok(None)
     }
 
-    /// Accepts the step `(t, y) -> (end, y_new)`: records the output times inside it (with
-    /// `save_at`, before the stepper forgets the step), then counts it. True when `end`
-    /// itself was one of the output times, and so is recorded.
+    /// Accepts the step `(t, y) -> (end, y_new)`: records what lies inside it (output
+    /// times and events, before the stepper forgets the step), then counts it. A terminal
+    /// event inside ends the run: it is recorded last and returned.
     #[inline]
     pub(super) fn accept(
         &mut self,
-        save: Option<&mut SaveAt<'_, T, S>>,
+        between: Option<&mut Between<'_, '_, T, S>>,
         t: T,
         end: T,
         y: &S,
         y_new: &S,
-    ) -> Result<bool, Error> {
-        let mut recorded = false;
-        if let Some(save) = save {
-            save.record_step(self.p, &*self.stepper, t, end, y, y_new, &mut *self.out, self.stats)?;
-            recorded = save.last_recorded() == Some(end);
-        }
+    ) -> Result<Option<StopEvent<T, S>>, Error> {
+        let inside = match between {
+            Some(b) => Some(b.record_step(self.p, &*self.stepper, t, end, y, y_new, &mut *self.out, self.stats)?),
+            None => None,
+        };
         self.stepper.accept();
         self.stats.steps += 1;
-        Ok(recorded)
+        match inside {
+            Some(Inside {
+                last_recorded,
+                stop: Some(stop),
+            }) => {
+                if last_recorded != Some(stop.t) {
+                    self.out.record(stop.t, &stop.y, self.p.energy(stop.t, &stop.y))?;
+                }
+                Ok(Some(stop))
+            }
+            _ => Ok(None),
+        }
     }
 
-    /// The end of a run at a located stop event inside the step from `(t, y)`: the output
-    /// times before it (with `save_at`), then the event as the last record.
+    /// The end of a run at a stop condition located inside the step from `(t, y)`: what
+    /// lies before it (output times, events), then the stop as the last record.
     pub(super) fn end_at(
         &mut self,
         t: T,
         y: &S,
         event: StopEvent<T, S>,
-        save: Option<&mut SaveAt<'_, T, S>>,
+        mut between: Option<&mut Between<'_, '_, T, S>>,
     ) -> Result<Option<StopEvent<T, S>>, Error> {
-        // the stepper's last step is the one that located the event: from `y` to it
-        if !self.accept(save, t, event.t, y, &event.y)? {
+        // the stepper's last step is the one that located the stop: from `y` to it
+        let last = between.as_deref().and_then(Between::last_time);
+        if let Some(earlier) = self.accept(between.as_deref_mut(), t, event.t, y, &event.y)? {
+            return Ok(Some(earlier));
+        }
+        let recorded = between.as_deref().and_then(Between::last_time);
+        let saved_at_stop = recorded != last && recorded == Some(event.t);
+        if !saved_at_stop {
             self.out.record(event.t, &event.y, self.p.energy(event.t, &event.y))?;
         }
         Ok(Some(event))
@@ -209,7 +232,7 @@ where
         let mut y_new = y0.clone();
         let mut g_old = driver.stop.as_ref().map(|g| g(t0, y0));
         let mut since_record = 0;
-        let mut save = driver.save_at.as_deref().map(|times| SaveAt::new(times, t0, y0));
+        let mut save = driver.between(t0, y0);
         loop {
             if (t - t_end) * dir >= T::zero() {
                 return Ok(None);
@@ -244,11 +267,13 @@ where
                     return self.end_at(t, &y, event, save.as_mut());
                 }
                 let t_next = if last { t_end } else { t + h };
-                self.accept(save.as_mut(), t, t_next, &y, &y_new)?;
+                if let Some(stop) = self.accept(save.as_mut(), t, t_next, &y, &y_new)? {
+                    return Ok(Some(stop));
+                }
                 core::mem::swap(&mut y, &mut y_new);
                 t = t_next;
                 since_record += 1;
-                if save.is_none() && (since_record == driver.every || last) {
+                if driver.save_at.is_none() && (since_record == driver.every || last) {
                     self.out.record(t, &y, self.p.energy(t, &y))?;
                     since_record = 0;
                 }
