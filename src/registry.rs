@@ -331,6 +331,8 @@ pub fn theta(alpha: f64) -> Result<Tableau, Error> {
         tolerance: None,
         dense: None,
         dense_order: None,
+        dense_c: None,
+        dense_a: None,
     };
     Tableau::new(format!("theta({alpha})"), &spec)
 }

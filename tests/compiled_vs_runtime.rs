@@ -92,16 +92,16 @@ fn bits(y: &[f64]) -> Vec<u64> {
 }
 
 /// Every coefficient of a method, as bits: `a`, `b`, `c`, `b_hat`, `b_hat3` and the dense
-/// output's of a tableau; `drift`, `kick`, `gamma` of a splitting or composition.
+/// output's (its polynomials and added stages) of a tableau; `drift`, `kick`, `gamma` of a splitting or composition.
 fn coefficients(method: &Method) -> Vec<u64> {
     let arrays: Vec<Vec<f64>> = match (method.tableau(), method.splitting_source()) {
         (Some(tableau), _) => {
             let t = tableau.expect("a valid tableau");
             let (b_hat, b_hat3) = (t.b_hat().unwrap_or_default(), t.b_hat3().unwrap_or_default());
             let dense = t.dense().unwrap_or_default().concat();
-            let mut arrays: Vec<Vec<f64>> = [t.a(), t.b(), t.c(), b_hat, b_hat3].map(<[f64]>::to_vec).into();
-            arrays.push(dense);
-            arrays
+            [t.a(), t.b(), t.c(), b_hat, b_hat3, &dense, t.dense_c(), t.dense_a()]
+                .map(<[f64]>::to_vec)
+                .into()
         }
         (None, Some(SplittingSource::Compiled(d))) => [d.drift, d.kick, d.gamma.unwrap_or_default()]
             .map(<[f64]>::to_vec)

@@ -242,6 +242,8 @@ fn with_weights(name: &str, b: Vec<f64>, order: usize, tolerance: Option<f64>) -
             tolerance,
             dense: None,
             dense_order: None,
+            dense_c: None,
+            dense_a: None,
         },
     )
     .unwrap()

@@ -10,7 +10,7 @@
 mod problems;
 
 use problems::{Decay, Fall, Kepler, Oscillator};
-use stormer::catalog::{Dop853, DormandPrince5, Rk4};
+use stormer::catalog::{Dop853, DormandPrince5, Rk4, Verner9};
 use stormer::ExplicitMethod;
 use stormer::{registry, Driver, Error, ExplicitRk, Solution, Tolerances, DENSE_ORDER};
 
@@ -106,12 +106,47 @@ fn a_methods_own_dense_output_is_as_accurate_between_steps_as_at_them() {
     assert!(e_mid <= 3.0 * e_steps, "between steps {e_mid:e}, at steps {e_steps:e}");
 }
 
-/// The limit of the driver's order-3 interpolant, stated: DOP853 (no own dense output yet)
-/// at 1e-11 takes steps long enough that the cubic's error between them exceeds the
-/// method's at them by far.
+/// DOP853's own 7th-order extension (three stages added after the step) keeps its accuracy
+/// between its long steps at 1e-11, where the cubic was 10^5 times worse; declared of
+/// order 8 it fails its continuous conditions.
+#[test]
+fn dop853_dense_output_is_as_accurate_between_steps_and_of_order_seven() {
+    let (steps, mid) = at_steps_and_midpoints::<Dop853>(1e-11, 6.3);
+    let (e_steps, e_mid) = (oscillator_error(&steps.t, &steps.y), oscillator_error(&mid.t, &mid.y));
+    assert!(e_mid <= 3.0 * e_steps, "between steps {e_mid:e}, at steps {e_steps:e}");
+    let tableau = stormer::Tableau::from_data(&<Dop853 as stormer::ButcherMethod>::DATA).unwrap();
+    assert_eq!(tableau.info().dense_order, Some(7));
+    let data = <Dop853 as stormer::ButcherMethod>::DATA;
+    let dense = data.dense.unwrap();
+    let (s, e) = (data.stages, dense.c.len());
+    let spec = stormer::order::TableauSpec {
+        a: data.a.chunks(s).map(<[f64]>::to_vec).collect(),
+        b: data.b.to_vec(),
+        c: Some(data.c.to_vec()),
+        order: 8,
+        dense: Some(dense.d.chunks(dense.powers).map(<[f64]>::to_vec).collect()),
+        dense_order: Some(8),
+        dense_c: Some(dense.c.to_vec()),
+        dense_a: Some(
+            dense
+                .a
+                .chunks(s + e)
+                .enumerate()
+                .map(|(k, r)| r[..s + k].to_vec())
+                .collect(),
+        ),
+        ..Default::default()
+    };
+    let e = stormer::order::validate(&spec).unwrap_err().to_string();
+    assert!(e.starts_with("dense output: order 8 condition"), "{e}");
+}
+
+/// The limit of the driver's order-3 interpolant, stated: Verner's 9th-order pair (no own
+/// dense output declared) at 1e-11 takes steps long enough that the cubic's error between
+/// them exceeds the method's at them by far.
 #[test]
 fn a_cubic_interpolant_limits_a_high_order_adaptive_method_between_steps() {
-    let (steps, mid) = at_steps_and_midpoints::<Dop853>(1e-11, 6.3);
+    let (steps, mid) = at_steps_and_midpoints::<Verner9>(1e-11, 6.3);
     let (e_steps, e_mid) = (oscillator_error(&steps.t, &steps.y), oscillator_error(&mid.t, &mid.y));
     assert!(e_mid > 10.0 * e_steps, "between steps {e_mid:e}, at steps {e_steps:e}");
 }
@@ -143,10 +178,10 @@ fn the_interpolant_has_its_stated_order() {
     let y0 = [1.0, 0.0];
     let inside_error = |h: f64| {
         let times: Vec<f64> = (0..20).map(|i| (i as f64 + 0.5) * h).collect();
-        let mut dop853 = ExplicitRk::<Dop853, _>::new(&y0);
+        let mut verner9 = ExplicitRk::<Verner9, _>::new(&y0);
         let run = Driver::fixed(h)
             .save_at(times)
-            .run(&Oscillator, &mut dop853, 0.0, &y0, 20.0 * h)
+            .run(&Oscillator, &mut verner9, 0.0, &y0, 20.0 * h)
             .unwrap();
         oscillator_error(&run.t, &run.y)
     };

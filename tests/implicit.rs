@@ -685,6 +685,8 @@ fn lobatto_iiib4_with_the_catalog_pair_put_back_grows_its_step_without_limit() {
         tolerance: None,
         dense: None,
         dense_order: None,
+        dense_c: None,
+        dense_a: None,
     };
     let put_back = Tableau::new("lobatto_iiib4-catalog-pair", &spec).unwrap();
     let p = Oscillator::<f64>(PhantomData);

@@ -284,6 +284,11 @@ def declaration(m):
         out += ["        dense: ["]
         out += [line for row in m["dense"] for line in array("", lit(row), 12)]
         out += ["        ],", f"        dense_order: {m['dense_order']},"]
+    if "dense_c" in m:
+        out += array("dense_c: ", lit(m["dense_c"]), 8)
+        out += ["        dense_a: ["]
+        out += [line for row in m["dense_a"] for line in array("", lit(row), 12)]
+        out += ["        ],"]
     return out + ["    }", "}"]
 
 

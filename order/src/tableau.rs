@@ -35,6 +35,12 @@ pub struct TableauSpec {
     pub dense: Option<Vec<Vec<f64>>>,
     /// The declared order of the dense output (required exactly when `dense` is given).
     pub dense_order: Option<usize>,
+    /// Nodes of the stages the dense output adds after the step (DOP853's three); `dense`
+    /// then has a row for each of them after the method's.
+    pub dense_c: Option<Vec<f64>>,
+    /// Their rows of the stage matrix: row `k` over the method's stages and the `k` added
+    /// before it.
+    pub dense_a: Option<Vec<Vec<f64>>>,
 }
 
 /// Properties derived from the coefficients (never declared).
@@ -76,6 +82,10 @@ pub struct ValidTableau {
     pub dense: Option<Vec<Vec<f64>>>,
     /// Verified order of the dense output.
     pub dense_order: Option<usize>,
+    /// The dense output's added stages: their nodes and their rows, `e x (s + e)` row-major.
+    pub dense_c: Vec<f64>,
+    /// See `dense_c`.
+    pub dense_a: Vec<f64>,
     /// Derived properties.
     pub flags: Flags,
     /// Every condition checked, all holding: those of `b`, then `b_hat`, then `b_hat3`.
@@ -226,7 +236,9 @@ impl fmt::Display for TableauError {
             TableauError::MissingEmbeddedOrder => f.write_str("b_hat is given without embedded_order"),
             TableauError::EmbeddedOrderWithoutWeights => f.write_str("embedded_order is given without b_hat"),
             TableauError::ZeroOrder => f.write_str("an order must be at least 1"),
-            TableauError::DenseWithoutOrder => f.write_str("dense and dense_order go together: give both or neither"),
+            TableauError::DenseWithoutOrder => {
+                f.write_str("dense and dense_order go together (and dense_c, dense_a need them): give both or neither")
+            }
             TableauError::DenseEnd { stage, at_one, b } => write!(
                 f,
                 "the dense output does not end at the step: b_{}(1) = {at_one} but b_{} = {b}",
@@ -270,7 +282,7 @@ pub fn validate(spec: &TableauSpec) -> Result<ValidTableau, TableauError> {
     }
     match (&spec.dense, spec.dense_order) {
         (Some(_), Some(q)) => check_order(q)?,
-        (None, None) => {}
+        (None, None) if spec.dense_c.is_none() && spec.dense_a.is_none() => {}
         _ => return Err(TableauError::DenseWithoutOrder),
     }
     let tol = match spec.tolerance {
@@ -316,9 +328,14 @@ pub fn validate(spec: &TableauSpec) -> Result<ValidTableau, TableauError> {
     if let Some(b_hat3) = &spec.b_hat3 {
         conditions.extend(checked_conditions(&a, b_hat3, "b_hat3", 3, tol)?);
     }
-    if let (Some(dense), Some(q)) = (&spec.dense, spec.dense_order) {
-        conditions.extend(checked_dense(&a, &spec.b, dense, q, tol)?);
-    }
+    let (dense_c, dense_a) = match (&spec.dense, spec.dense_order) {
+        (Some(dense), Some(q)) => {
+            let added = added_stages(&a, s, spec, tol)?;
+            conditions.extend(checked_dense(&added.extended, &spec.b, dense, q, tol)?);
+            (added.c, added.a)
+        }
+        _ => (Vec::new(), Vec::new()),
+    };
 
     let flags = derive_flags(&a, &spec.b, &c, tol);
     Ok(ValidTableau {
@@ -332,6 +349,8 @@ pub fn validate(spec: &TableauSpec) -> Result<ValidTableau, TableauError> {
         embedded_order: spec.embedded_order,
         dense: spec.dense.clone(),
         dense_order: spec.dense_order,
+        dense_c,
+        dense_a,
         flags,
         conditions,
     })
@@ -405,8 +424,63 @@ fn checked_conditions(
     }
 }
 
-/// The dense output's shape (one row per stage, every row as long), finiteness, its end
-/// `b(1) = b`, and its continuous conditions up to `order`, or the first failure.
+/// The stages a dense output adds after the step.
+struct AddedStages {
+    /// Their nodes.
+    c: Vec<f64>,
+    /// Their rows, `e x (s + e)` row-major.
+    a: Vec<f64>,
+    /// The stage matrix extended by them, `(s + e) x (s + e)`.
+    extended: Vec<f64>,
+}
+
+/// The stages a dense output adds after the step, checked: shapes, finite, row sums equal
+/// to their nodes.
+fn added_stages(a: &[f64], s: usize, spec: &TableauSpec, tol: f64) -> Result<AddedStages, TableauError> {
+    let c = spec.dense_c.clone().unwrap_or_default();
+    let rows = spec.dense_a.clone().unwrap_or_default();
+    let e = c.len();
+    if rows.len() != e {
+        return Err(TableauError::Shape {
+            what: "dense_a",
+            index: None,
+            expected: e,
+            found: rows.len(),
+        });
+    }
+    let n = s + e;
+    let mut extended = vec![0.0; n * n];
+    for i in 0..s {
+        extended[i * n..i * n + s].copy_from_slice(&a[i * s..(i + 1) * s]);
+    }
+    let mut added = vec![0.0; e * n];
+    for (k, (row, &ck)) in rows.iter().zip(&c).enumerate() {
+        if row.len() > s + k {
+            return Err(TableauError::Shape {
+                what: "dense_a",
+                index: Some(k),
+                expected: s + k,
+                found: row.len(),
+            });
+        }
+        check_finite("dense_a", row)?;
+        added[k * n..k * n + row.len()].copy_from_slice(row);
+        extended[(s + k) * n..(s + k) * n + row.len()].copy_from_slice(row);
+        let (sum, scale) = (row.iter().sum::<f64>(), row.iter().map(|x| x.abs()).sum::<f64>());
+        if !ck.is_finite() || !close(ck, sum, scale, tol) {
+            return Err(TableauError::RowSum {
+                row: s + k,
+                c: ck,
+                row_sum: sum,
+            });
+        }
+    }
+    Ok(AddedStages { c, a: added, extended })
+}
+
+/// The dense output's shape (one row per stage, the added ones included, every row as
+/// long), finiteness, its end `b(1) = b` (0 for an added stage), and its continuous
+/// conditions up to `order` over the extended stage matrix `a`, or the first failure.
 fn checked_dense(
     a: &[f64],
     b: &[f64],
@@ -414,7 +488,7 @@ fn checked_dense(
     order: usize,
     tol: f64,
 ) -> Result<Vec<Condition>, TableauError> {
-    let s = b.len();
+    let s = (a.len() as f64).sqrt().round() as usize;
     let m = dense.first().map_or(0, Vec::len);
     if dense.len() != s {
         return Err(TableauError::Shape {
@@ -434,7 +508,8 @@ fn checked_dense(
     }
     let flat: Vec<f64> = dense.iter().flatten().copied().collect();
     check_finite("dense", &flat)?;
-    for (stage, (row, &bi)) in dense.iter().zip(b).enumerate() {
+    for (stage, row) in dense.iter().enumerate() {
+        let bi = b.get(stage).copied().unwrap_or(0.0);
         let at_one: f64 = row.iter().sum();
         let scale: f64 = row.iter().map(|d| d.abs()).sum();
         if !close(at_one, bi, scale, tol) {

@@ -82,7 +82,7 @@ impl<'d, 'a, T: Real, S: State<Scalar = T>> Between<'d, 'a, T, S> {
     pub(super) fn record_step<P, St, R>(
         &mut self,
         p: &P,
-        stepper: &St,
+        stepper: &mut St,
         t: T,
         end: T,
         y: &S,
@@ -155,7 +155,7 @@ impl<'d, 'a, T: Real, S: State<Scalar = T>> Between<'d, 'a, T, S> {
     fn root<P, St>(
         &mut self,
         p: &P,
-        stepper: &St,
+        stepper: &mut St,
         index: usize,
         t: T,
         end: T,
@@ -206,14 +206,14 @@ impl<'d, 'a, T: Real, S: State<Scalar = T>> Between<'d, 'a, T, S> {
     /// `self.at = u(theta)`: the method's own continuous extension, else the cubic Hermite
     /// (its slopes found once per step).
     #[allow(clippy::too_many_arguments)]
-    fn state_at<P, St>(&mut self, p: &P, stepper: &St, theta: T, t: T, end: T, y: &S, y_new: &S, stats: &mut Stats)
+    fn state_at<P, St>(&mut self, p: &P, stepper: &mut St, theta: T, t: T, end: T, y: &S, y_new: &S, stats: &mut Stats)
     where
         P: Problem<Scalar = T, State = S>,
         St: Stepper<P> + ?Sized,
     {
         if theta == T::one() {
             self.at.copy_from(y_new);
-        } else if !stepper.interpolate(theta, y, &mut self.at) {
+        } else if !stepper.interpolate(p, t, theta, y, &mut self.at) {
             if !self.ready {
                 self.slopes(p, stepper, t, end, y, y_new, stats);
                 self.ready = true;

@@ -106,7 +106,7 @@ where
         y_new: &S,
     ) -> Result<Option<StopEvent<T, S>>, Error> {
         let inside = match between {
-            Some(b) => Some(b.record_step(self.p, &*self.stepper, t, end, y, y_new, &mut *self.out, self.stats)?),
+            Some(b) => Some(b.record_step(self.p, &mut *self.stepper, t, end, y, y_new, &mut *self.out, self.stats)?),
             None => None,
         };
         self.stepper.accept();

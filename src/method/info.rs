@@ -42,8 +42,12 @@ pub struct DenseData {
     pub order: usize,
     /// The highest power of theta, `m`.
     pub powers: usize,
-    /// The coefficients, `s x m` row-major: stage `i`'s at `i * m ..`.
+    /// The coefficients, `(s + e) x m` row-major: stage `i`'s at `i * m ..`.
     pub d: &'static [f64],
+    /// Nodes of the `e` stages the dense output adds after the step (none for most).
+    pub c: &'static [f64],
+    /// Their rows of the stage matrix, `e x (s + e)` row-major.
+    pub a: &'static [f64],
 }
 
 /// One row of the method table (`stormer methods`).

@@ -72,6 +72,13 @@ impl Tableau {
                 .dense
                 .map(|d| d.d.chunks(d.powers.max(1)).map(<[f64]>::to_vec).collect()),
             dense_order: data.dense.map(|d| d.order),
+            dense_c: data.dense.map(|d| d.c.to_vec()).filter(|c| !c.is_empty()),
+            dense_a: data.dense.filter(|d| !d.c.is_empty()).map(|d| {
+                d.a.chunks(s + d.c.len())
+                    .enumerate()
+                    .map(|(k, row)| row[..s + k].to_vec())
+                    .collect()
+            }),
         };
         Tableau::new(data.name, &spec)
     }
@@ -141,6 +148,14 @@ impl Tableau {
     pub fn dense(&self) -> Option<&[Vec<f64>]> {
         self.valid.dense.as_deref()
     }
+    /// Nodes of the stages the dense output adds after the step (empty for most).
+    pub fn dense_c(&self) -> &[f64] {
+        &self.valid.dense_c
+    }
+    /// Their rows of the stage matrix, `e x (s + e)` row-major.
+    pub fn dense_a(&self) -> &[f64] {
+        &self.valid.dense_a
+    }
     /// Every order condition that was checked, with its residual.
     pub fn conditions(&self) -> &[Condition] {
         &self.valid.conditions
@@ -166,6 +181,8 @@ impl Tableau {
             tolerance: self.tolerance,
             dense: None,
             dense_order: None,
+            dense_c: None,
+            dense_a: None,
         };
         Some(Tableau::new(format!("{} (embedded)", self.name), &spec))
     }
@@ -209,6 +226,8 @@ struct MethodFile {
     b_hat3: Option<Vec<Coefficient>>,
     dense: Option<Vec<Vec<Coefficient>>>,
     dense_order: Option<usize>,
+    dense_c: Option<Vec<Coefficient>>,
+    dense_a: Option<Vec<Vec<Coefficient>>>,
     tolerance: Option<f64>,
     explicit: Option<bool>,
     fsal: Option<bool>,
@@ -277,6 +296,21 @@ impl MethodFile {
                 .transpose()
                 .map_err(fail)?,
             dense_order: self.dense_order,
+            dense_c: self
+                .dense_c
+                .as_deref()
+                .map(|c| vector(c, "dense_c"))
+                .transpose()
+                .map_err(fail)?,
+            dense_a: self
+                .dense_a
+                .as_deref()
+                .map(|rows| {
+                    let row = |(i, r): (usize, &Vec<Coefficient>)| vector(r, &format!("dense_a[{}]", i + 1));
+                    rows.iter().enumerate().map(row).collect::<Result<Vec<_>, _>>()
+                })
+                .transpose()
+                .map_err(fail)?,
         };
         let tableau = Tableau::new(self.name.clone(), &spec).map_err(|e| match e {
             Error::InvalidMethod { reason, .. } => fail(reason),

@@ -31,8 +31,11 @@ pub trait ExplicitStages<S: State>: Clone + core::fmt::Debug {
     fn error3(&self, h: S::Scalar, k: &[S], err: &mut S);
     /// The number of powers `m` of the method's own dense output, `None` without one.
     fn dense_powers(&self) -> Option<usize>;
-    /// The dense output's coefficient of theta^(power + 1) in `b_stage(theta)`.
-    fn dense_coefficient(&self, stage: usize, power: usize) -> f64;
+    /// The dense output's coefficients of theta^1 .. theta^m in `b_stage(theta)`.
+    fn dense_row(&self, stage: usize) -> &[f64];
+    /// The stages the dense output adds after the step: their nodes, and their rows
+    /// `e x (s + e)` row-major (both empty for most methods).
+    fn dense_added(&self) -> (&[f64], &[f64]);
 }
 
 /// The stages `tableau!` generated for `M`, with its coefficients converted to the
@@ -78,8 +81,12 @@ impl<M: ExplicitMethod, S: State> ExplicitStages<S> for Unrolled<M, S> {
         M::DATA.dense.map(|d| d.powers)
     }
 
-    fn dense_coefficient(&self, stage: usize, power: usize) -> f64 {
-        M::DATA.dense.map_or(0.0, |d| d.d[stage * d.powers + power])
+    fn dense_row(&self, stage: usize) -> &[f64] {
+        M::DATA.dense.map_or(&[], |d| &d.d[stage * d.powers..(stage + 1) * d.powers])
+    }
+
+    fn dense_added(&self) -> (&[f64], &[f64]) {
+        M::DATA.dense.map_or((&[], &[]), |d| (d.c, d.a))
     }
 }
 
@@ -104,7 +111,18 @@ pub struct ExplicitStepper<C, S: State> {
     /// its register allocation (1.21x the hand-written loop instead of 0.98x, bisected to
     /// the commit that added it; docs/benchmarks.md).
     compensated: Option<Box<CompensatedCombination<S>>>,
+    /// The stages a dense output adds after a step (DOP853's), made at the first output
+    /// time inside a step. Boxed and created then: a run without output pays nothing.
+    added: Option<Box<AddedStages<S>>>,
     counters: Counters,
+}
+
+/// The dense output's added stages of the last step, and the step `(t, h)` they are of.
+#[derive(Debug, Clone)]
+struct AddedStages<S: State> {
+    k: Vec<S>,
+    stage: S,
+    of_step: Option<(S::Scalar, S::Scalar)>,
 }
 
 /// Stepper for an explicit method `M` declared with [`crate::tableau!`], on states `S`.
@@ -141,6 +159,38 @@ impl<M: ExplicitMethod, S: State> ExplicitStepper<Unrolled<M, S>, S> {
 }
 
 impl<C: ExplicitStages<S>, S: State> ExplicitStepper<C, S> {
+    /// The stages the dense output adds to the step `(t, y)` of size `last_h` just taken:
+    /// `Y = y + h sum_j a_kj K_j` over the step's stages and the added ones before, `K_k =
+    /// f(t + c_k h, Y)`; once per step.
+    fn add_stages<P: Problem<Scalar = S::Scalar, State = S>>(&mut self, p: &P, t: S::Scalar, y: &S) {
+        let (c, a) = self.stages.dense_added();
+        if c.is_empty() {
+            return;
+        }
+        let h = self.last_h;
+        let added = self.added.get_or_insert_with(|| {
+            Box::new(AddedStages {
+                k: vec![y.zeros_like(); c.len()],
+                stage: y.zeros_like(),
+                of_step: None,
+            })
+        });
+        if added.of_step == Some((t, h)) {
+            return;
+        }
+        let (s, n) = (self.k.len(), self.k.len() + c.len());
+        for (e, &ce) in c.iter().enumerate() {
+            added.stage.copy_from(y);
+            for (j, &aj) in a[e * n..(e + 1) * n].iter().enumerate().filter(|(_, &aj)| aj != 0.0) {
+                let kj = if j < s { &self.k[j] } else { &added.k[j - s] };
+                added.stage.axpy(h * lit::<S::Scalar>(aj), kj);
+            }
+            p.rhs(t + lit::<S::Scalar>(ce) * h, &added.stage, &mut added.k[e]);
+        }
+        self.counters.evaluations += c.len() as u64;
+        added.of_step = Some((t, h));
+    }
+
     /// A stepper over `stages`, with buffers shaped like `y0`.
     pub(crate) fn with_stages(stages: C, y0: &S) -> Self {
         let info = stages.info();
@@ -158,6 +208,7 @@ impl<C: ExplicitStages<S>, S: State> ExplicitStepper<C, S> {
             k0_valid: false,
             last_h: num_traits::Zero::zero(),
             compensated: None,
+            added: None,
             counters: Counters::default(),
             stages,
         }
@@ -220,19 +271,24 @@ where
         [self.k.first(), self.k.last().filter(|_| self.fsal)]
     }
 
-    /// `y + h sum_i b_i(theta) k_i` with the method's own `b_i(theta)`.
-    fn interpolate(&self, theta: P::Scalar, y: &P::State, out: &mut P::State) -> bool {
-        let Some(powers) = self.stages.dense_powers() else {
+    /// `y + h sum_i b_i(theta) k_i` with the method's own `b_i(theta)`, over its stages and
+    /// the ones its dense output adds (made once per step).
+    fn interpolate(&mut self, p: &P, t: P::Scalar, theta: P::Scalar, y: &P::State, out: &mut P::State) -> bool {
+        if self.stages.dense_powers().is_none() {
             return false;
-        };
+        }
+        self.add_stages(p, t, y);
         out.copy_from(y);
-        for (i, k) in self.k.iter().enumerate() {
-            let (mut weight, mut power) = (P::Scalar::zero(), P::Scalar::one());
-            for m in 0..powers {
-                power *= theta;
-                weight += lit::<P::Scalar>(self.stages.dense_coefficient(i, m)) * power;
+        let added = self.added.as_ref().map_or(&[][..], |a| &a.k[..]);
+        let s = self.k.len();
+        for i in 0..s + added.len() {
+            let row = self.stages.dense_row(i);
+            if row.iter().all(|&d| d == 0.0) {
+                continue;
             }
-            out.axpy(self.last_h * weight, k);
+            // b_i(theta) = theta (d_1 + theta (d_2 + ...)), Horner
+            let weight = row.iter().rev().fold(P::Scalar::zero(), |w, &d| (w + lit::<P::Scalar>(d)) * theta);
+            out.axpy(self.last_h * weight, if i < s { &self.k[i] } else { &added[i - s] });
         }
         true
     }
@@ -252,6 +308,9 @@ where
 
     fn reset(&mut self) {
         self.k0_valid = false;
+        if let Some(added) = self.added.as_mut() {
+            added.of_step = None;
+        }
         if let Some(sum) = self.compensated.as_mut() {
             sum.reset();
         }

@@ -78,10 +78,11 @@ pub trait Stepper<P: Problem> {
     }
 
     /// The method's own continuous extension of the last step (before
-    /// [`Stepper::accept`]): `out = y(t + theta h)` from the step's start `y`, of order
-    /// `info().dense_order`; false, with `out` untouched, for a method without one (the
-    /// driver then interpolates itself, [`crate::hermite`]).
-    fn interpolate(&self, _theta: P::Scalar, _y: &P::State, _out: &mut P::State) -> bool {
+    /// [`Stepper::accept`]), from `(t, y)`: `out = y(t + theta h)`, of order
+    /// `info().dense_order` (the stages it adds after the step, DOP853's, made once per
+    /// step); false, with `out` untouched, for a method without one (the driver then
+    /// interpolates itself, [`crate::hermite`]).
+    fn interpolate(&mut self, _p: &P, _t: P::Scalar, _theta: P::Scalar, _y: &P::State, _out: &mut P::State) -> bool {
         false
     }
 
@@ -165,8 +166,8 @@ impl<P: Problem, St: Stepper<P> + ?Sized> Stepper<P> for Box<St> {
     fn end_slopes(&self) -> [Option<&P::State>; 2] {
         (**self).end_slopes()
     }
-    fn interpolate(&self, theta: P::Scalar, y: &P::State, out: &mut P::State) -> bool {
-        (**self).interpolate(theta, y, out)
+    fn interpolate(&mut self, p: &P, t: P::Scalar, theta: P::Scalar, y: &P::State, out: &mut P::State) -> bool {
+        (**self).interpolate(p, t, theta, y, out)
     }
     fn steps_in_place(&self) -> bool {
         (**self).steps_in_place()

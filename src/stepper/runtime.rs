@@ -92,8 +92,12 @@ impl<S: State> ExplicitStages<S> for RuntimeStages<S> {
         self.tableau.dense().map(|d| d.first().map_or(0, Vec::len))
     }
 
-    fn dense_coefficient(&self, stage: usize, power: usize) -> f64 {
-        self.tableau.dense().map_or(0.0, |d| d[stage][power])
+    fn dense_row(&self, stage: usize) -> &[f64] {
+        self.tableau.dense().map_or(&[], |d| &d[stage])
+    }
+
+    fn dense_added(&self) -> (&[f64], &[f64]) {
+        (self.tableau.dense_c(), self.tableau.dense_a())
     }
 
     fn weights(&self) -> &[f64] {

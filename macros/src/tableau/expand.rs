@@ -282,7 +282,10 @@ pub fn expand(method: &Method) -> TokenStream {
             let q = Literal::usize_unsuffixed(q);
             let m = Literal::usize_unsuffixed(rows.first().map_or(0, Vec::len));
             let d = floats(&rows.concat());
-            quote!(::stormer::__private::Some(::stormer::__private::DenseData { order: #q, powers: #m, d: #d }))
+            let (c, a) = (floats(&t.dense_c), floats(&t.dense_a));
+            quote!(::stormer::__private::Some(::stormer::__private::DenseData {
+                order: #q, powers: #m, d: #d, c: #c, a: #a,
+            }))
         }
         _ => quote!(::stormer::__private::None),
     };

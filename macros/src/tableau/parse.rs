@@ -11,7 +11,7 @@ use syn::{bracketed, Expr, Ident, LitStr, Token};
 use crate::declaration::{self, parse_order, push, Header, Keyed, Spanned};
 
 /// The keys a tableau accepts, in the order the documentation lists them.
-pub const KEYS: [&str; 11] = [
+pub const KEYS: [&str; 13] = [
     "name",
     "order",
     "c",
@@ -22,6 +22,8 @@ pub const KEYS: [&str; 11] = [
     "b_hat3",
     "dense",
     "dense_order",
+    "dense_c",
+    "dense_a",
     "tolerance",
 ];
 
@@ -49,6 +51,10 @@ pub struct Input {
     pub dense: Option<Matrix>,
     /// `dense_order: 4`, optional.
     pub dense_order: Option<Keyed<Spanned<usize>>>,
+    /// `dense_c: [...]`, optional: nodes of the stages the dense output adds.
+    pub dense_c: Option<Array>,
+    /// `dense_a: [[...], ...]`, optional: their rows.
+    pub dense_a: Option<Matrix>,
     /// `tolerance: 1e-10`, optional.
     pub tolerance: Option<Expr>,
 }
@@ -92,6 +98,8 @@ struct Fields {
     b_hat3: Option<Array>,
     dense: Option<Matrix>,
     dense_order: Option<Keyed<Spanned<usize>>>,
+    dense_c: Option<Array>,
+    dense_a: Option<Matrix>,
     tolerance: Option<Expr>,
 }
 
@@ -118,6 +126,8 @@ impl Fields {
                 let value = parse_order(input, &key)?;
                 self.dense_order = Some(Keyed { key, value });
             }
+            "dense_c" => self.dense_c = Some(input.parse()?),
+            "dense_a" => self.dense_a = Some(input.parse()?),
             _ => self.tolerance = Some(input.parse()?),
         }
         Ok(())
@@ -157,6 +167,8 @@ impl Parse for Input {
             b_hat3: fields.b_hat3,
             dense: fields.dense,
             dense_order: fields.dense_order,
+            dense_c: fields.dense_c,
+            dense_a: fields.dense_a,
             tolerance: fields.tolerance,
         })
     }

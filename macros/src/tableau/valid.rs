@@ -122,6 +122,10 @@ fn target<'a>(input: &'a Input, err: &TableauError, s: usize) -> Target<'a> {
         | TableauError::OrderCondition { weights: "dense", .. } => {
             input.dense.as_ref().map_or(fallback, |d| Tokens(d.span))
         }
+        TableauError::Shape { what: "dense_a", .. } | TableauError::NonFinite { what: "dense_a", .. } => {
+            input.dense_a.as_ref().map_or(fallback, |d| Tokens(d.span))
+        }
+        TableauError::RowSum { row: i, .. } if *i >= s => input.dense_c.as_ref().map_or(fallback, |c| entry(c, i - s)),
         TableauError::DenseWithoutOrder => match (&input.dense, &input.dense_order) {
             (Some(d), None) => Tokens(d.span),
             (_, Some(k)) => Tokens(k.key.span()),
@@ -161,6 +165,11 @@ pub fn validate(input: Input) -> syn::Result<Method> {
         .dense
         .as_ref()
         .map(|d| d.items.iter().map(|row| ev.array(row)).collect());
+    let dense_c = input.dense_c.as_ref().map(|c| ev.array(c));
+    let dense_a = input
+        .dense_a
+        .as_ref()
+        .map(|d| d.items.iter().map(|row| ev.array(row)).collect());
     let tolerance = input.tolerance.as_ref().and_then(|expr| ev.one(expr));
     if let Some(e) = ev.errors {
         return Err(e);
@@ -178,6 +187,8 @@ pub fn validate(input: Input) -> syn::Result<Method> {
         tolerance,
         dense,
         dense_order: input.dense_order.as_ref().map(|k| k.value.value),
+        dense_c,
+        dense_a,
     };
     match stormer_order::validate(&spec) {
         Ok(tableau) => Ok(Method {
