@@ -82,7 +82,9 @@ impl<M: ExplicitMethod, S: State> ExplicitStages<S> for Unrolled<M, S> {
     }
 
     fn dense_row(&self, stage: usize) -> &[f64] {
-        M::DATA.dense.map_or(&[], |d| &d.d[stage * d.powers..(stage + 1) * d.powers])
+        M::DATA
+            .dense
+            .map_or(&[], |d| &d.d[stage * d.powers..(stage + 1) * d.powers])
     }
 
     fn dense_added(&self) -> (&[f64], &[f64]) {
@@ -287,7 +289,10 @@ where
                 continue;
             }
             // b_i(theta) = theta (d_1 + theta (d_2 + ...)), Horner
-            let weight = row.iter().rev().fold(P::Scalar::zero(), |w, &d| (w + lit::<P::Scalar>(d)) * theta);
+            let weight = row
+                .iter()
+                .rev()
+                .fold(P::Scalar::zero(), |w, &d| (w + lit::<P::Scalar>(d)) * theta);
             out.axpy(self.last_h * weight, if i < s { &self.k[i] } else { &added[i - s] });
         }
         true
