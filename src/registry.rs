@@ -325,14 +325,7 @@ pub fn theta(alpha: f64) -> Result<Tableau, Error> {
         b: vec![alpha, 1.0 - alpha],
         c: Some(vec![0.0, 1.0]),
         order,
-        b_hat: None,
-        embedded_order: None,
-        b_hat3: None,
-        tolerance: None,
-        dense: None,
-        dense_order: None,
-        dense_c: None,
-        dense_a: None,
+        ..Default::default()
     };
     Tableau::new(format!("theta({alpha})"), &spec)
 }

@@ -108,12 +108,7 @@ fn lobatto_iiib4_has_no_embedded_pair_since_the_catalogs_estimate_vanishes_on_li
         order: 4,
         b_hat: Some(b_hat.to_vec()),
         embedded_order: Some(2),
-        b_hat3: None,
-        tolerance: None,
-        dense: None,
-        dense_order: None,
-        dense_c: None,
-        dense_a: None,
+        ..Default::default()
     };
     assert!(Tableau::new("lobatto_iiib4-catalog-pair", &spec).is_ok());
     // the algebra: d = b - b_hat = 2/3 (1, -2, 1), sum d = 0, d^T A = a_1 - 2 a_2 + a_3 = 0

@@ -240,10 +240,7 @@ fn with_weights(name: &str, b: Vec<f64>, order: usize, tolerance: Option<f64>) -
             embedded_order: None,
             b_hat3: None,
             tolerance,
-            dense: None,
-            dense_order: None,
-            dense_c: None,
-            dense_a: None,
+            ..Default::default()
         },
     )
     .unwrap()

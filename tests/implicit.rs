@@ -681,12 +681,7 @@ fn lobatto_iiib4_with_the_catalog_pair_put_back_grows_its_step_without_limit() {
         order: 4,
         b_hat: Some(vec![-0.5, 2.0, -0.5]), // the catalog's (OrdinaryDiffEq's LobattoIIIB4)
         embedded_order: Some(2),
-        b_hat3: None,
-        tolerance: None,
-        dense: None,
-        dense_order: None,
-        dense_c: None,
-        dense_a: None,
+        ..Default::default()
     };
     let put_back = Tableau::new("lobatto_iiib4-catalog-pair", &spec).unwrap();
     let p = Oscillator::<f64>(PhantomData);

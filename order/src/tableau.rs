@@ -367,14 +367,7 @@ fn check_order(order: usize) -> Result<(), TableauError> {
 }
 
 fn check_shapes(spec: &TableauSpec, s: usize) -> Result<(), TableauError> {
-    if spec.a.len() != s {
-        return Err(TableauError::Shape {
-            what: "a",
-            index: None,
-            expected: s,
-            found: spec.a.len(),
-        });
-    }
+    expect_len("a", s, spec.a.len())?;
     if let Some((row, r)) = spec.a.iter().enumerate().find(|(_, r)| r.len() > s) {
         return Err(TableauError::Shape {
             what: "a",
@@ -384,16 +377,8 @@ fn check_shapes(spec: &TableauSpec, s: usize) -> Result<(), TableauError> {
         });
     }
     for (what, v) in [("c", &spec.c), ("b_hat", &spec.b_hat), ("b_hat3", &spec.b_hat3)] {
-        match v {
-            Some(v) if v.len() != s => {
-                return Err(TableauError::Shape {
-                    what,
-                    index: None,
-                    expected: s,
-                    found: v.len(),
-                })
-            }
-            _ => {}
+        if let Some(v) = v {
+            expect_len(what, s, v.len())?;
         }
     }
     Ok(())
@@ -424,6 +409,20 @@ fn checked_conditions(
     }
 }
 
+/// `found` entries where `expected` are needed is a [`TableauError::Shape`] of `what`.
+fn expect_len(what: &'static str, expected: usize, found: usize) -> Result<(), TableauError> {
+    if found == expected {
+        Ok(())
+    } else {
+        Err(TableauError::Shape {
+            what,
+            index: None,
+            expected,
+            found,
+        })
+    }
+}
+
 /// The stages a dense output adds after the step.
 struct AddedStages {
     /// Their nodes.
@@ -440,14 +439,7 @@ fn added_stages(a: &[f64], s: usize, spec: &TableauSpec, tol: f64) -> Result<Add
     let c = spec.dense_c.clone().unwrap_or_default();
     let rows = spec.dense_a.clone().unwrap_or_default();
     let e = c.len();
-    if rows.len() != e {
-        return Err(TableauError::Shape {
-            what: "dense_a",
-            index: None,
-            expected: e,
-            found: rows.len(),
-        });
-    }
+    expect_len("dense_a", e, rows.len())?;
     let n = s + e;
     let mut extended = vec![0.0; n * n];
     for i in 0..s {
@@ -490,14 +482,7 @@ fn checked_dense(
 ) -> Result<Vec<Condition>, TableauError> {
     let s = (a.len() as f64).sqrt().round() as usize;
     let m = dense.first().map_or(0, Vec::len);
-    if dense.len() != s {
-        return Err(TableauError::Shape {
-            what: "dense",
-            index: None,
-            expected: s,
-            found: dense.len(),
-        });
-    }
+    expect_len("dense", s, dense.len())?;
     if let Some((row, r)) = dense.iter().enumerate().find(|(_, r)| r.len() != m || m == 0) {
         return Err(TableauError::Shape {
             what: "dense",

@@ -179,10 +179,7 @@ impl Tableau {
             embedded_order: None,
             b_hat3: None,
             tolerance: self.tolerance,
-            dense: None,
-            dense_order: None,
-            dense_c: None,
-            dense_a: None,
+            ..Default::default()
         };
         Some(Tableau::new(format!("{} (embedded)", self.name), &spec))
     }
@@ -244,6 +241,14 @@ fn coefficient(c: &Coefficient, field: &str) -> Result<f64, String> {
     }
 }
 
+/// Rows of coefficients, each named `field[i]` in errors.
+fn matrix(rows: &[Vec<Coefficient>], field: &str) -> Result<Vec<Vec<f64>>, String> {
+    rows.iter()
+        .enumerate()
+        .map(|(i, row)| vector(row, &format!("{field}[{}]", i + 1)))
+        .collect()
+}
+
 pub(super) fn vector(v: &[Coefficient], field: &str) -> Result<Vec<f64>, String> {
     v.iter()
         .enumerate()
@@ -260,15 +265,8 @@ impl MethodFile {
         if let Some(f) = self.family.as_deref().filter(|f| *f != "butcher") {
             return Err(fail(format!("family = \"{f}\" is not a Butcher tableau")));
         }
-        let a = self
-            .a
-            .iter()
-            .enumerate()
-            .map(|(i, row)| vector(row, &format!("a[{}]", i + 1)))
-            .collect::<Result<Vec<_>, _>>()
-            .map_err(fail)?;
         let spec = TableauSpec {
-            a,
+            a: matrix(&self.a, "a").map_err(fail)?,
             b: vector(&self.b, "b").map_err(fail)?,
             c: self.c.as_deref().map(|c| vector(c, "c")).transpose().map_err(fail)?,
             order: self.order,
@@ -289,10 +287,7 @@ impl MethodFile {
             dense: self
                 .dense
                 .as_deref()
-                .map(|rows| {
-                    let row = |(i, r): (usize, &Vec<Coefficient>)| vector(r, &format!("dense[{}]", i + 1));
-                    rows.iter().enumerate().map(row).collect::<Result<Vec<_>, _>>()
-                })
+                .map(|d| matrix(d, "dense"))
                 .transpose()
                 .map_err(fail)?,
             dense_order: self.dense_order,
@@ -305,10 +300,7 @@ impl MethodFile {
             dense_a: self
                 .dense_a
                 .as_deref()
-                .map(|rows| {
-                    let row = |(i, r): (usize, &Vec<Coefficient>)| vector(r, &format!("dense_a[{}]", i + 1));
-                    rows.iter().enumerate().map(row).collect::<Result<Vec<_>, _>>()
-                })
+                .map(|d| matrix(d, "dense_a"))
                 .transpose()
                 .map_err(fail)?,
         };
