@@ -7,7 +7,7 @@
 
 use std::sync::atomic::AtomicBool;
 use stormer::driver::{Recorder, StopEvent};
-use stormer::{Driver, Error, ImplicitOptions, Method, State, Stats, StepControl, Stepper, Tolerances};
+use stormer::{Crossing, Driver, Error, ImplicitOptions, Method, State, Stats, StepControl, Stepper, Tolerances};
 use stormer_app::scenes::{Scene, Setup};
 
 /// How the steps are chosen.
@@ -199,7 +199,13 @@ impl<'s, S: Scene> SceneRun<'s, S> {
         }
         if let Some(stop) = self.setup.model.stop() {
             let model = &self.setup.model;
-            driver = driver.stop_when(move |t, y| (stop.g)(model, t, y));
+            let g = move |t, y: &S::State| (stop.g)(model, t, y);
+            driver = if self.stepper.info().dense_order.is_some() {
+                // on the method's own continuous extension: no step taken again
+                driver.event(g, Crossing::Either, true)
+            } else {
+                driver.stop_when(g)
+            };
         }
         if self.compensated {
             driver = driver.compensated();
