@@ -53,7 +53,7 @@ impl<'d, 'a, T: Real, S: State<Scalar = T>> Between<'d, 'a, T, S> {
     pub(super) fn new(times: &'d [T], events: &'d [Event<'a, T, S>], t0: T, y0: &S) -> Self {
         Between {
             times,
-            next: usize::from(times.first() == Some(&t0)),
+            next: usize::from(Self::records_start(times, t0)),
             events,
             g_old: events.iter().map(|e| (e.g)(t0, y0)).collect(),
             f0: y0.zeros_like(),
@@ -62,11 +62,6 @@ impl<'d, 'a, T: Real, S: State<Scalar = T>> Between<'d, 'a, T, S> {
             f1_at: None,
             ready: false,
         }
-    }
-
-    /// The last output time recorded so far.
-    pub(super) fn last_time(&self) -> Option<T> {
-        self.next.checked_sub(1).and_then(|i| self.times.get(i).copied())
     }
 
     /// True when the run's initial record is one of the output times.

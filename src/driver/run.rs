@@ -105,46 +105,57 @@ where
         y: &S,
         y_new: &S,
     ) -> Result<Option<StopEvent<T, S>>, Error> {
-        let inside = match between {
-            Some(b) => Some(b.record_step(self.p, &mut *self.stepper, t, end, y, y_new, &mut *self.out, self.stats)?),
-            None => None,
-        };
-        self.stepper.accept();
-        self.stats.steps += 1;
-        match inside {
-            Some(Inside {
-                last_recorded,
-                stop: Some(stop),
-            }) => {
-                if last_recorded != Some(stop.t) {
-                    self.out.record(stop.t, &stop.y, self.p.energy(stop.t, &stop.y))?;
-                }
-                Ok(Some(stop))
-            }
-            _ => Ok(None),
+        let inside = self.take(between, t, end, y, y_new)?;
+        match inside.stop {
+            Some(stop) => self.stop_at(stop, inside.last_recorded).map(Some),
+            None => Ok(None),
         }
     }
 
     /// The end of a run at a stop condition located inside the step from `(t, y)`: what
-    /// lies before it (output times, events), then the stop as the last record.
+    /// lies before it (output times, events; a terminal event before it ends the run
+    /// there), then the stop as the last record.
     pub(super) fn end_at(
         &mut self,
         t: T,
         y: &S,
         event: StopEvent<T, S>,
-        mut between: Option<&mut Between<'_, '_, T, S>>,
+        between: Option<&mut Between<'_, '_, T, S>>,
     ) -> Result<Option<StopEvent<T, S>>, Error> {
         // the stepper's last step is the one that located the stop: from `y` to it
-        let last = between.as_deref().and_then(Between::last_time);
-        if let Some(earlier) = self.accept(between.as_deref_mut(), t, event.t, y, &event.y)? {
-            return Ok(Some(earlier));
+        let inside = self.take(between, t, event.t, y, &event.y)?;
+        self.stop_at(inside.stop.unwrap_or(event), inside.last_recorded)
+            .map(Some)
+    }
+
+    /// Records what lies inside the step `(t, y) -> (end, y_new)`, accepts and counts it.
+    #[inline]
+    fn take(
+        &mut self,
+        between: Option<&mut Between<'_, '_, T, S>>,
+        t: T,
+        end: T,
+        y: &S,
+        y_new: &S,
+    ) -> Result<Inside<T, S>, Error> {
+        let inside = match between {
+            Some(b) => b.record_step(self.p, &mut *self.stepper, t, end, y, y_new, &mut *self.out, self.stats)?,
+            None => Inside {
+                last_recorded: None,
+                stop: None,
+            },
+        };
+        self.stepper.accept();
+        self.stats.steps += 1;
+        Ok(inside)
+    }
+
+    /// The run ends at `stop`: its last record, unless an output time just recorded it.
+    fn stop_at(&mut self, stop: StopEvent<T, S>, last_recorded: Option<T>) -> Result<StopEvent<T, S>, Error> {
+        if last_recorded != Some(stop.t) {
+            self.out.record(stop.t, &stop.y, self.p.energy(stop.t, &stop.y))?;
         }
-        let recorded = between.as_deref().and_then(Between::last_time);
-        let saved_at_stop = recorded != last && recorded == Some(event.t);
-        if !saved_at_stop {
-            self.out.record(event.t, &event.y, self.p.energy(event.t, &event.y))?;
-        }
-        Ok(Some(event))
+        Ok(stop)
     }
 
     /// The fixed-step loop of a stepper that steps in place (no stop condition).
