@@ -67,10 +67,21 @@ pub trait State: Clone + core::fmt::Debug {
     #[inline]
     fn is_finite(&self) -> bool {
         // x * 0 is 0 for a finite x and NaN otherwise, and NaN survives the sum: no branch
-        // per component (the driver checks every step)
+        // per component (the driver checks every step); four independent sums, so that
+        // the check is not one long chain of dependent additions
         let zero = Self::Scalar::zero();
-        let sum = self.as_slice().iter().fold(zero, |sum, &x| sum + x * zero);
-        sum.is_finite()
+        let x = self.as_slice();
+        let mut sums = [zero; 4];
+        let mut quads = x.chunks_exact(4);
+        for quad in &mut quads {
+            for (sum, &x) in sums.iter_mut().zip(quad) {
+                *sum += x * zero;
+            }
+        }
+        for (sum, &x) in sums.iter_mut().zip(quads.remainder()) {
+            *sum += x * zero;
+        }
+        ((sums[0] + sums[1]) + (sums[2] + sums[3])).is_finite()
     }
 }
 

@@ -76,14 +76,28 @@ fn every_nth_step_is_recorded_and_always_the_last() {
 
 #[test]
 fn the_in_place_loop_and_the_loop_with_a_stop_condition_agree_to_the_bit() {
-    // no stop condition: the in-place loop; a condition that never fires: the other one
-    let plain = decay(Driver::fixed(0.01), 0.0, 3.0).unwrap();
-    let watched = decay(Driver::fixed(0.01).stop_when(|_t, _y: &[f64; 1]| 1.0), 0.0, 3.0).unwrap();
-    assert_eq!(
-        plain.y.last().unwrap()[0].to_bits(),
-        watched.y.last().unwrap()[0].to_bits()
-    );
-    assert_eq!(plain.t, watched.t);
+    // no stop condition: the in-place loop (steps in runs between records and cancel
+    // checks); a condition that never fires: the other one. Spans with and without a
+    // shorter last step, records every step, every few, and across the runs' boundaries
+    for (h, t_end, every) in [
+        (0.01, 3.0, 1),
+        (0.001, 3.0, 7),
+        (0.0007, 3.0, 1000),
+        (0.0007, 3.0, 5000),
+        (0.3, 1.0, 2),
+    ] {
+        let plain = decay(Driver::fixed(h).every(every), 0.0, t_end).unwrap();
+        let watched = decay(
+            Driver::fixed(h).every(every).stop_when(|_t, _y: &[f64; 1]| 1.0),
+            0.0,
+            t_end,
+        )
+        .unwrap();
+        let bits = |s: &Solution<f64, [f64; 1]>| s.y.iter().map(|y| y[0].to_bits()).collect::<Vec<_>>();
+        assert_eq!(bits(&plain), bits(&watched), "h {h}, every {every}");
+        assert_eq!(plain.t, watched.t, "h {h}, every {every}");
+        assert_eq!(plain.stats.steps, watched.stats.steps, "h {h}, every {every}");
+    }
 }
 
 #[test]
