@@ -23,7 +23,7 @@ pub mod stepper;
 pub mod verify;
 
 pub use driver::{
-    hermite, Crossing, Driver, EventHit, Interrupted, Solution, Stats, StepControl, StopEvent, DENSE_ORDER,
+    hermite, hermite5, hermite_order, Crossing, Driver, EventHit, Interrupted, Solution, Stats, StepControl, StopEvent,
 };
 pub use error::Error;
 pub use families::{Families, SplittingSource};

@@ -10,9 +10,9 @@
 mod problems;
 
 use problems::{Decay, Fall, Kepler, Oscillator};
-use stormer::catalog::{Dop853, DormandPrince5, Rk4, Verner9};
+use stormer::catalog::{Dop853, DormandPrince5, Kutta3, Rk4, Verner9};
 use stormer::ExplicitMethod;
-use stormer::{registry, Driver, Error, ExplicitRk, Solution, Tolerances, DENSE_ORDER};
+use stormer::{hermite_order, registry, Driver, Error, ExplicitRk, Solution, Tolerances};
 
 /// `n + 1` times from `a` to `b`.
 fn grid(a: f64, b: f64, n: usize) -> Vec<f64> {
@@ -141,13 +141,14 @@ fn dop853_dense_output_is_as_accurate_between_steps_and_of_order_seven() {
     assert!(e.starts_with("dense output: order 8 condition"), "{e}");
 }
 
-/// The limit of the driver's order-3 interpolant, stated: Verner's 9th-order pair (no own
-/// dense output declared) at 1e-11 takes steps long enough that the cubic's error between
+/// The limit of the driver's order-5 interpolant, stated: Verner's 9th-order pair (no own
+/// dense output declared) at 1e-11 takes steps long enough that the quintic's error between
 /// them exceeds the method's at them by far.
 #[test]
-fn a_cubic_interpolant_limits_a_high_order_adaptive_method_between_steps() {
+fn the_driver_interpolant_limits_a_high_order_adaptive_method_between_steps() {
     let (steps, mid) = at_steps_and_midpoints::<Verner9>(1e-11, 6.3);
     let (e_steps, e_mid) = (oscillator_error(&steps.t, &steps.y), oscillator_error(&mid.t, &mid.y));
+    eprintln!("verner9 at 1e-11: between steps {e_mid:e}, at steps {e_steps:e}");
     assert!(e_mid > 10.0 * e_steps, "between steps {e_mid:e}, at steps {e_steps:e}");
 }
 
@@ -173,28 +174,46 @@ fn dormand_prince_dense_output_keeps_the_accuracy_of_the_steps_on_an_orbit() {
     assert!(inside <= 3.0 * at_steps, "inside {inside:e}, at steps {at_steps:e}");
 }
 
+/// The driver's interpolant of `M` at steps `h` on the oscillator: its largest error at
+/// the midpoints of 20 steps.
+fn midpoint_error<M: ExplicitMethod>(h: f64) -> f64 {
+    let y0 = [1.0, 0.0];
+    let times: Vec<f64> = (0..20).map(|i| (i as f64 + 0.5) * h).collect();
+    let mut stepper = ExplicitRk::<M, _>::new(&y0);
+    let run = Driver::fixed(h)
+        .save_at(times)
+        .run(&Oscillator, &mut stepper, 0.0, &y0, 20.0 * h)
+        .unwrap();
+    oscillator_error(&run.t, &run.y)
+}
+
+/// The cubic (Kutta's third-order method) and the quintic (Verner's 9th order) have their
+/// stated orders: the error between steps falls by `2^(order + 1)` when the step halves.
 #[test]
 fn the_interpolant_has_its_stated_order() {
-    let y0 = [1.0, 0.0];
-    let inside_error = |h: f64| {
-        let times: Vec<f64> = (0..20).map(|i| (i as f64 + 0.5) * h).collect();
-        let mut verner9 = ExplicitRk::<Verner9, _>::new(&y0);
-        let run = Driver::fixed(h)
-            .save_at(times)
-            .run(&Oscillator, &mut verner9, 0.0, &y0, 20.0 * h)
-            .unwrap();
-        oscillator_error(&run.t, &run.y)
-    };
-    let ratio = inside_error(0.2) / inside_error(0.1);
-    let expected = 2f64.powi(DENSE_ORDER as i32 + 1);
-    assert!(
-        (ratio / expected - 1.0).abs() < 0.15,
-        "ratio {ratio}, expected {expected}"
-    );
+    for (ratio, order) in [
+        (
+            midpoint_error::<Kutta3>(0.2) / midpoint_error::<Kutta3>(0.1),
+            hermite_order(3),
+        ),
+        (
+            midpoint_error::<Verner9>(0.2) / midpoint_error::<Verner9>(0.1),
+            hermite_order(9),
+        ),
+    ] {
+        let expected = 2f64.powi(order as i32 + 1);
+        assert!(
+            (ratio / expected - 1.0).abs() < 0.15,
+            "ratio {ratio}, expected {expected}"
+        );
+    }
+    assert_eq!((hermite_order(3), hermite_order(4)), (3, 5));
 }
 
 /// The slopes of a FSAL method are its stages: output at every midpoint costs Dormand-Prince
-/// 5 no evaluation; RK4 (not FSAL) pays one per step that holds an output time.
+/// 5 no evaluation; RK4 (not FSAL, order 4: the quintic) pays five per step that holds an
+/// output time when the step before held none (the end's slope, the second derivatives at
+/// both ends, two evaluations each).
 #[test]
 fn output_costs_no_evaluation_where_the_method_has_the_slopes() {
     let y0 = [1.0, 0.0];
@@ -207,7 +226,7 @@ fn output_costs_no_evaluation_where_the_method_has_the_slopes() {
         .save_at(one_in_two)
         .run(&Oscillator, &mut rk4, 0.0, &y0, 10.0)
         .unwrap();
-    assert_eq!(dense.stats.evaluations, plain.stats.evaluations + 50);
+    assert_eq!(dense.stats.evaluations, plain.stats.evaluations + 5 * 50);
 }
 
 /// A splitting steps through `step` (not in place) when output times are asked, with the

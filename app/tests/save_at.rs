@@ -3,7 +3,7 @@
 
 #[path = "support/binary.rs"]
 mod binary;
-use binary::{assert_error, assert_ok, stormer, workdir};
+use binary::{assert_error, assert_ok, stderr, stormer, stormer_ok, workdir};
 
 /// The time column of a run's CSV.
 fn times(csv: &str) -> Vec<f64> {
@@ -56,6 +56,42 @@ fn the_csv_holds_exactly_the_asked_times() {
     assert_ok(&stormer(&dir, &args));
     let csv = std::fs::read_to_string(dir.join("b.csv")).unwrap();
     assert_eq!(times(&csv), [-0.25, -0.5, -1.0]);
+}
+
+/// The run's "max error vs exact" (Kepler's equation) over its records.
+fn max_error(dir: &std::path::Path, args: &[&str]) -> f64 {
+    let out = stderr(&stormer_ok(dir, args));
+    let after = out
+        .split("max error vs exact ")
+        .nth(1)
+        .expect("an error against the exact solution");
+    after.split(',').next().unwrap().parse().unwrap()
+}
+
+/// Issue #11's acceptance on kepler-e06 over one period: DOP853 at 1e-11 within 1e-8 of
+/// the exact solution at every asked time; RK4 and the fourth-order `blanes_moan_srkn6b` at
+/// steps of 0.01 (the driver's quintic between their steps): the error at the steps'
+/// midpoints at most 3x the error at the steps.
+#[test]
+fn interpolated_times_are_as_accurate_as_the_steps() {
+    let dir = workdir("save-at", "accuracy");
+    let run = |method: &str, steps: &[&str], times: &str| {
+        let mut args = vec!["run", "kepler-e06", "--method", method, "--t-end", "6.28"];
+        args.extend(steps);
+        args.extend(["--save-at", times, "--out", "k.csv"]);
+        max_error(&dir, &args)
+    };
+    let tight = ["--rtol", "1e-11", "--atol", "1e-11"];
+    let dop853 = run("dop853", &tight, "0:0.01:6.28");
+    assert!(dop853 <= 1e-8, "dop853: {dop853:e}");
+    for method in ["rk4", "blanes_moan_srkn6b"] {
+        let at_steps = run(method, &["--dt", "0.01"], "0:0.01:6.28");
+        let between = run(method, &["--dt", "0.01"], "0.005:0.01:6.275");
+        assert!(
+            between <= 3.0 * at_steps,
+            "{method}: between {between:e}, at steps {at_steps:e}"
+        );
+    }
 }
 
 #[test]

@@ -1,11 +1,16 @@
 //! Output at chosen times ([`Driver::save_at`]) and events ([`Driver::event`]): the states
 //! between steps, from the continuous extension of each step that contains one.
 //!
-//! The extension is the cubic Hermite interpolant through both ends of the step and the
-//! slopes `f` there (order 3: its error is `O(h^4)` per step whatever the method). The
-//! slopes come from the stepper where it has them ([`Stepper::end_slopes`]: a Runge-Kutta
-//! method's first stage, a FSAL method's last); the missing ones are evaluated, and only
-//! for steps that contain an output time, so a run without `save_at` pays nothing.
+//! Where the method has no continuous extension of its own, the driver's is the Hermite
+//! interpolant through both ends of the step ([`hermite_order`]): for a method of order 3
+//! or less the cubic through the values and slopes `f` (order 3, error `O(h^4)` per step);
+//! for a higher order the quintic that adds the second derivatives `y'' = f_t + f_y f`
+//! (order 5, error `O(h^6)`), so that a fourth- or sixth-order method keeps its accuracy
+//! between its steps. The slopes come from the stepper where it has them
+//! ([`Stepper::end_slopes`]: a Runge-Kutta method's first stage, a FSAL method's last);
+//! the missing ones are evaluated, the second derivatives by a central difference along
+//! the solution (two evaluations each), and only for steps that contain an output time or
+//! an event, so a run without them pays nothing.
 
 use super::events::{Event, EventHit};
 use super::{Driver, Recorder, Stats, StopEvent};
@@ -16,8 +21,17 @@ use crate::{lit, to_f64, Error, Problem, Real, State, Stepper};
 /// Iterations of the event root finder; each halves the bracket at worst.
 const MAX_ITERATIONS: usize = 100;
 
-/// The order of the driver's continuous extension (cubic Hermite).
-pub const DENSE_ORDER: usize = 3;
+/// The order of the driver's continuous extension for a method of order `method_order`
+/// without its own: 3 (cubic Hermite) up to order 3, else 5 (quintic Hermite: a fourth-order
+/// splitting's error constant is small enough that the cubic's `h^4` error between its
+/// steps is ten times its own at them).
+pub const fn hermite_order(method_order: usize) -> usize {
+    if method_order <= 3 {
+        3
+    } else {
+        5
+    }
+}
 
 /// What the driver records inside the steps: the output times of [`Driver::save_at`] and
 /// the crossings of [`Driver::event`]s, from the continuous extension of each step (the
@@ -31,10 +45,16 @@ pub(super) struct Between<'d, 'a, T, S> {
     g_old: Vec<T>,
     f0: S,
     f1: S,
+    /// The second derivatives at both ends, for the quintic; `None` for the cubic.
+    second: Option<[S; 2]>,
+    /// Scratch for the central differences.
+    probe: [S; 2],
     /// The interpolated state.
     at: S,
     /// The time at which `f1` was evaluated by the driver (reused as the next step's `f0`).
     f1_at: Option<T>,
+    /// The time at which the second derivative `second[1]` was evaluated.
+    d1_at: Option<T>,
     /// Whether `f0` and `f1` are this step's.
     ready: bool,
 }
@@ -48,10 +68,12 @@ pub(super) struct Inside<T, S> {
 
 impl<'d, 'a, T: Real, S: State<Scalar = T>> Between<'d, 'a, T, S> {
     /// Output at `times` (checked by [`Driver::check_save_at`]) and `events`, the run
-    /// starting at `(t0, y0)`: a time equal to `t0` is the initial record's, counted as
-    /// written.
-    pub(super) fn new(times: &'d [T], events: &'d [Event<'a, T, S>], t0: T, y0: &S) -> Self {
+    /// starting at `(t0, y0)` with a method of order `order`: a time equal to `t0` is the
+    /// initial record's, counted as written.
+    pub(super) fn new(times: &'d [T], events: &'d [Event<'a, T, S>], t0: T, y0: &S, order: usize) -> Self {
         Between {
+            second: (hermite_order(order) == 5).then(|| [y0.zeros_like(), y0.zeros_like()]),
+            probe: [y0.zeros_like(), y0.zeros_like()],
             times,
             next: usize::from(Self::records_start(times, t0)),
             events,
@@ -60,6 +82,7 @@ impl<'d, 'a, T: Real, S: State<Scalar = T>> Between<'d, 'a, T, S> {
             f1: y0.zeros_like(),
             at: y0.zeros_like(),
             f1_at: None,
+            d1_at: None,
             ready: false,
         }
     }
@@ -213,7 +236,10 @@ impl<'d, 'a, T: Real, S: State<Scalar = T>> Between<'d, 'a, T, S> {
                 self.slopes(p, stepper, t, end, y, y_new, stats);
                 self.ready = true;
             }
-            hermite(theta, end - t, y, y_new, &self.f0, &self.f1, &mut self.at);
+            match &self.second {
+                Some([d0, d1]) => hermite5(theta, end - t, [y, y_new], [&self.f0, &self.f1], [d0, d1], &mut self.at),
+                None => hermite(theta, end - t, y, y_new, &self.f0, &self.f1, &mut self.at),
+            }
         }
     }
     /// `f0 = f(t, y)` and `f1 = f(end, y_new)`: the stepper's where it has them, the
@@ -244,7 +270,47 @@ impl<'d, 'a, T: Real, S: State<Scalar = T>> Between<'d, 'a, T, S> {
                 self.f1_at = Some(end);
             }
         }
+        if let Some([d0, d1]) = self.second.as_mut() {
+            // the start's is the previous step's end's when the step starts there
+            if self.d1_at == Some(t) {
+                core::mem::swap(d0, d1);
+            } else {
+                second_derivative(p, t, y, &self.f0, end - t, &mut self.probe, d0, stats);
+            }
+            second_derivative(p, end, y_new, &self.f1, end - t, &mut self.probe, d1, stats);
+            self.d1_at = Some(end);
+        }
     }
+}
+
+/// `d = y''(t) = f_t + f_y f` at `(t, y)` with `f = f(t, y)`: the central difference of
+/// `f` along the solution's tangent, `(f(t + e, y + e f) - f(t - e, y - e f)) / 2e`, with
+/// `e = eps^(1/3) |h|` (its truncation and rounding errors balanced at the step's scale),
+/// two evaluations; `scratch` holds the shifted state and the second difference term.
+#[allow(clippy::too_many_arguments)]
+fn second_derivative<T: Real, S: State<Scalar = T>, P: Problem<Scalar = T, State = S>>(
+    p: &P,
+    t: T,
+    y: &S,
+    f: &S,
+    h: T,
+    scratch: &mut [S; 2],
+    d: &mut S,
+    stats: &mut Stats,
+) {
+    let e = T::default_epsilon().cbrt() * h.abs();
+    let [probe, minus] = scratch;
+    probe.copy_from(y);
+    probe.axpy(e, f);
+    p.rhs(t + e, probe, d);
+    probe.copy_from(y);
+    probe.axpy(-e, f);
+    p.rhs(t - e, probe, minus);
+    let scale = (e + e).recip();
+    for (d, &m) in d.as_mut_slice().iter_mut().zip(minus.as_slice()) {
+        *d = (*d - m) * scale;
+    }
+    stats.evaluations += 2;
 }
 
 /// `out = u(theta)`, the cubic Hermite interpolant of the step `(y, f0) -> (y_new, f1)` of
@@ -263,6 +329,29 @@ pub fn hermite<T: Real, S: State<Scalar = T>>(theta: T, h: T, y: &S, y_new: &S, 
     for (o, ((&y0, &y1), (&g0, &g1))) in out.as_mut_slice().iter_mut().zip(slices) {
         let d = y1 - y0;
         *o = y0 + theta * d + w * (one - two * theta) * d + a0 * g0 + a1 * g1;
+    }
+}
+
+/// `out = u(theta)`, the quintic Hermite interpolant of the step of size `h` through the
+/// values `y`, slopes `f` and second derivatives `d` at both ends (error `O(h^6)`).
+pub fn hermite5<T: Real, S: State<Scalar = T>>(theta: T, h: T, y: [&S; 2], f: [&S; 2], d: [&S; 2], out: &mut S) {
+    let one = T::one();
+    let (t2, t3) = (theta * theta, theta * theta * theta);
+    let s = one - theta;
+    let (s2, s3) = (s * s, s * s * s);
+    // the weights of y1 - y0, h f0, h f1, h^2 d0, h^2 d1 (Bernstein-like factored forms)
+    let w_y = t3 * (lit::<T>(10.0) - lit::<T>(15.0) * theta + lit::<T>(6.0) * t2);
+    let w_f0 = theta * s3 * (one + lit::<T>(3.0) * theta) * h;
+    let w_f1 = -t3 * s * (lit::<T>(4.0) - lit::<T>(3.0) * theta) * h;
+    let w_d0 = lit::<T>(0.5) * t2 * s3 * h * h;
+    let w_d1 = lit::<T>(0.5) * t3 * s2 * h * h;
+    let values = y[0].as_slice().iter().zip(y[1].as_slice());
+    let slopes = f[0].as_slice().iter().zip(f[1].as_slice());
+    let seconds = d[0].as_slice().iter().zip(d[1].as_slice());
+    for (o, (((&y0, &y1), (&f0, &f1)), (&d0, &d1))) in
+        out.as_mut_slice().iter_mut().zip(values.zip(slopes).zip(seconds))
+    {
+        *o = y0 + w_y * (y1 - y0) + w_f0 * f0 + w_f1 * f1 + w_d0 * d0 + w_d1 * d1;
     }
 }
 

@@ -12,7 +12,7 @@ mod record;
 mod run;
 
 use dense::Between;
-pub use dense::{hermite, DENSE_ORDER};
+pub use dense::{hermite, hermite5, hermite_order};
 pub use events::{Crossing, Event, EventHit};
 pub use record::{Interrupted, Recorder, Solution, Stats, StopEvent};
 
@@ -117,7 +117,7 @@ impl<'a, T: Real, S: State<Scalar = T>> Driver<'a, T, S> {
     }
 
     /// Record the state at exactly these times (and nowhere else), interpolated inside the
-    /// steps by the continuous extension ([`hermite`], order [`DENSE_ORDER`]); replaces the
+    /// steps by the continuous extension ([`hermite`] or [`hermite5`], order [`hermite_order`]); replaces the
     /// records every N steps. The times must be finite, inside the span and strictly
     /// ordered in the run's direction (checked when the run starts). A time that falls on
     /// a step's end records that state as computed; a stop condition still ends the run,
@@ -241,9 +241,11 @@ impl<'a, T: Real, S: State<Scalar = T>> Driver<'a, T, S> {
     }
 
     /// What the run records inside its steps, when it records anything there.
-    fn between(&self, t0: T, y0: &S) -> Option<Between<'_, 'a, T, S>> {
+    /// `order` is the method's, which sets the order of the driver's interpolant.
+    fn between(&self, t0: T, y0: &S, order: usize) -> Option<Between<'_, 'a, T, S>> {
         let times = self.save_at.as_deref();
-        (times.is_some() || !self.events.is_empty()).then(|| Between::new(times.unwrap_or(&[]), &self.events, t0, y0))
+        (times.is_some() || !self.events.is_empty())
+            .then(|| Between::new(times.unwrap_or(&[]), &self.events, t0, y0, order))
     }
 
     /// True when the cancel flag is set, read only at every [`CANCEL_EVERY`]-th step.

@@ -69,7 +69,7 @@ fn json(m: &MethodInfo) -> Row<'_> {
         fsal: m.flags.fsal,
         symplectic: m.flags.symplectic,
         symmetric: m.flags.symmetric,
-        dense_order: m.dense_order.unwrap_or(stormer::DENSE_ORDER),
+        dense_order: m.dense_order.unwrap_or(stormer::hermite_order(m.order)),
         aliases: aliases_of(&m.name).collect(),
     }
 }
