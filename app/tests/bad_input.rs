@@ -74,6 +74,54 @@ fn the_binary_refuses_every_bad_file_without_panicking() {
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
+/// Bad values of the output flags: one clear line each, exit 1 (2 for flags clap refuses
+/// together), no output created.
+#[test]
+fn the_binary_refuses_bad_output_flags_without_panicking() {
+    let dir = std::env::temp_dir().join(format!("stormer-bad-flags-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    for (args, code, must) in [
+        (
+            &["run", "henon-heiles", "--section", "q = 0"][..],
+            1,
+            "--section: unknown column 'q'; this scene's columns are x, y, px, py (in 'q = 0')",
+        ),
+        (
+            &["run", "henon-heiles", "--section", "x = 0, px >= zero"],
+            1,
+            "'= zero' is not a finite number",
+        ),
+        (
+            &["run", "kepler", "--save-at", "5:-1:10"],
+            1,
+            "the step -1 does not lead from 5 to 10",
+        ),
+        (
+            &["run", "kepler", "--save-at", "0:1:10", "--every", "3"],
+            2,
+            "'--save-at <TIMES>' cannot be used with '--every <N>'",
+        ),
+    ] {
+        let out = Command::new(env!("CARGO_BIN_EXE_stormer"))
+            .args(args)
+            .current_dir(&dir)
+            .output()
+            .unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(code), "{args:?}: exit code\n{stderr}");
+        assert!(!stderr.contains("panicked"), "{args:?}: {stderr}");
+        assert!(
+            stderr.starts_with("error: ") && stderr.contains(must),
+            "{args:?}: {stderr}"
+        );
+        if code == 1 {
+            assert_eq!(stderr.trim().lines().count(), 1, "{args:?}: not one line:\n{stderr}");
+        }
+    }
+    assert!(!dir.join("out").exists(), "no output for a refused run");
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(256))]
 

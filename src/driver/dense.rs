@@ -168,7 +168,9 @@ impl<'d, 'a, T: Real, S: State<Scalar = T>> Between<'d, 'a, T, S> {
     }
 
     /// The fraction `theta` of the step where event `index` crosses zero: Illinois regula
-    /// falsi on the continuous extension, to 4 eps of the time.
+    /// falsi on the continuous extension, to 4 eps of the step (finer than the time's own
+    /// rounding late in a run: the state at the crossing is evaluated at the fraction, so a
+    /// section `x = 0` holds `|x|` at the rounding of `x`, not of `t`).
     #[allow(clippy::too_many_arguments)]
     fn root<P, St>(
         &mut self,
@@ -191,7 +193,7 @@ impl<'d, 'a, T: Real, S: State<Scalar = T>> Between<'d, 'a, T, S> {
         if ghi == T::zero() {
             return T::one();
         }
-        let resolution = T::default_epsilon() * lit::<T>(4.0) * t.abs().max(end.abs()).max(T::one()) / h.abs();
+        let resolution = T::default_epsilon() * lit::<T>(4.0);
         let mut side = 0i8;
         let mut theta = T::one();
         for _ in 0..MAX_ITERATIONS {

@@ -146,7 +146,7 @@ impl<'a, T: Real, S: State<Scalar = T>> Driver<'a, T, S> {
 
     /// Watch `g(t, y)`: each `crossing` of zero inside a step is located on the step's
     /// continuous extension (the method's own dense output, else the cubic Hermite; Illinois
-    /// regula falsi to 4 eps in time, no step taken again) and recorded in time order with
+    /// regula falsi to 4 eps of the step, no step taken again) and recorded in time order with
     /// the output records, as an [`EventHit`] (index = the order the events were added;
     /// [`Solution::events`]); a `terminal` event ends the run at its first crossing, which
     /// becomes the last record and [`Solution::stopped`]. Several events in one step come

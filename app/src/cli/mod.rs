@@ -12,6 +12,7 @@ mod run;
 mod sample;
 mod save_at;
 mod scene;
+mod section;
 mod study;
 mod tour;
 mod verify;

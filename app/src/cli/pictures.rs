@@ -20,7 +20,7 @@ pub struct Pictures {
 }
 
 impl Pictures {
-    fn draw(&mut self, path: PathBuf, chart: &Chart, series: &[Series]) {
+    pub(super) fn draw(&mut self, path: PathBuf, chart: &Chart, series: &[Series]) {
         if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
             let _ = std::fs::create_dir_all(dir);
         }

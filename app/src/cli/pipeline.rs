@@ -5,9 +5,12 @@
 //! exact solution, the last state). `run`, `compare`, `scan` (their jobs and reference)
 //! and `tour` all run scenes through [`SceneRun`], so they stop and measure alike.
 
+use super::section::Section;
 use std::sync::atomic::AtomicBool;
 use stormer::driver::{Recorder, StopEvent};
-use stormer::{Crossing, Driver, Error, ImplicitOptions, Method, State, Stats, StepControl, Stepper, Tolerances};
+use stormer::{
+    Crossing, Driver, Error, EventHit, ImplicitOptions, Method, State, Stats, StepControl, Stepper, Tolerances,
+};
 use stormer_app::scenes::{Scene, Setup};
 
 /// How the steps are chosen.
@@ -36,6 +39,8 @@ pub struct Options {
     pub every: Option<u64>,
     /// Records at exactly these times instead (interpolated between steps).
     pub save_at: Option<Vec<f64>>,
+    /// A Poincare section: its crossings go to the recorder's [`Recorder::event`].
+    pub section: Option<Section>,
     /// The step limit (the driver's default when `None`).
     pub max_steps: Option<u64>,
     /// How implicit methods solve their stage equations.
@@ -54,6 +59,7 @@ impl Default for Options {
             t_end: None,
             every: None,
             save_at: None,
+            section: None,
             max_steps: None,
             implicit: ImplicitOptions::fixed_point(),
             compensated: false,
@@ -73,6 +79,7 @@ pub struct SceneRun<'s, S: Scene> {
     t_end: f64,
     every: u64,
     save_at: Option<Vec<f64>>,
+    section: Option<Section>,
     max_steps: Option<u64>,
     compensated: bool,
     cancel: Option<&'static AtomicBool>,
@@ -160,6 +167,7 @@ impl<'s, S: Scene> SceneRun<'s, S> {
             t_end: options.t_end.unwrap_or(setup.run.t_end),
             every: options.every.unwrap_or(setup.run.every),
             save_at: options.save_at.clone(),
+            section: options.section.clone(),
             max_steps: options.max_steps,
             compensated: options.compensated,
             cancel: options.cancel,
@@ -206,6 +214,10 @@ impl<'s, S: Scene> SceneRun<'s, S> {
             } else {
                 driver.stop_when(g)
             };
+        }
+        if let Some(section) = &self.section {
+            let g = section.g();
+            driver = driver.event(move |t, y: &S::State| g(t, y.as_slice()), Crossing::Either, false);
         }
         if self.compensated {
             driver = driver.compensated();
@@ -319,6 +331,10 @@ impl<S: Scene, R: Recorder<f64, S::State> + ?Sized> Recorder<f64, S::State> for 
         track.last_t = Some(t);
         track.records += 1;
         Ok(())
+    }
+
+    fn event(&mut self, hit: &EventHit<f64, S::State>) -> Result<(), Error> {
+        self.out.event(hit)
     }
 }
 

@@ -15,6 +15,8 @@ pub struct Series {
     pub points: Vec<(f64, f64)>,
     /// Draw markers at the points (for short series such as convergence scans).
     pub markers: bool,
+    /// Join the points by a line (not for a Poincare section's scattered points).
+    pub joined: bool,
 }
 
 impl Series {
@@ -24,6 +26,7 @@ impl Series {
             label: label.into(),
             points,
             markers: false,
+            joined: true,
         }
     }
 
@@ -33,6 +36,17 @@ impl Series {
             label: label.into(),
             points,
             markers: true,
+            joined: true,
+        }
+    }
+
+    /// Points alone, a small dot each (a Poincare section).
+    pub fn dots(label: impl Into<String>, points: Vec<(f64, f64)>) -> Self {
+        Series {
+            label: label.into(),
+            points,
+            markers: false,
+            joined: false,
         }
     }
 }
@@ -246,10 +260,17 @@ where
     for (i, (s, points)) in series.iter().zip(kept).enumerate() {
         let color = PALETTE[i % PALETTE.len()];
         let style = ShapeStyle::from(&color).stroke_width(2);
-        c.draw_series(LineSeries::new(points.iter().copied(), style))
-            .map_err(plot_error)?
-            .label(s.label.as_str())
-            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], style));
+        if s.joined {
+            c.draw_series(LineSeries::new(points.iter().copied(), style))
+                .map_err(plot_error)?
+                .label(s.label.as_str())
+                .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], style));
+        } else {
+            c.draw_series(points.iter().map(|&p| Circle::new(p, 1, color.filled())))
+                .map_err(plot_error)?
+                .label(s.label.as_str())
+                .legend(move |(x, y)| Circle::new((x + 10, y), 3, color.filled()));
+        }
         if s.markers {
             c.draw_series(points.iter().map(|&p| Circle::new(p, 3, color.filled())))
                 .map_err(plot_error)?;

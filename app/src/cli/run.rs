@@ -3,6 +3,7 @@
 use super::choice;
 use super::output::{file_safe, CsvRecorder};
 use super::pipeline::{Options, SceneRun, Steps, Track};
+use super::section::{Section, WithSection};
 use anyhow::anyhow;
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -28,10 +29,16 @@ pub struct RunArgs {
     /// [default: the scene's].
     #[arg(long, value_name = "N")]
     pub every: Option<u64>,
-    /// Write records at exactly these times instead, interpolated between steps (cubic
-    /// Hermite, order 3): START:STEP:END or a comma list.
+    /// Write records at exactly these times instead, interpolated between steps (the
+    /// method's own continuous extension, else Hermite: `stormer methods`, column dense):
+    /// START:STEP:END or a comma list.
     #[arg(long, value_name = "TIMES", conflicts_with = "every", allow_hyphen_values = true)]
     pub save_at: Option<String>,
+    /// A Poincare section: the states where a column of the CSV crosses a value, optionally
+    /// only on one side of another column ("x = 0, px > 0"), located between steps and
+    /// written to SCENE-METHOD-section.csv beside the run's CSV, and drawn.
+    #[arg(long, value_name = "EXPR", allow_hyphen_values = true)]
+    pub section: Option<String>,
     /// Give up beyond this many steps [default: 100000000]; a fixed-step run that would
     /// need more is refused before it starts.
     #[arg(long, value_name = "N")]
@@ -157,6 +164,7 @@ impl Runner<'_> {
             t_end: args.t_end,
             every: args.every,
             save_at,
+            section: None,
             max_steps: args.max_steps,
             implicit,
             compensated: args.compensated,
@@ -172,7 +180,13 @@ impl SceneVisitor for Runner<'_> {
         let args = self.args;
         let method_name = args.method.as_deref().unwrap_or(&setup.run.method);
         let method = choice::resolve(method_name, args.alpha)?;
-        let options = self.options()?;
+        let mut options = self.options()?;
+        let section = args
+            .section
+            .as_deref()
+            .map(|text| Section::parse(text, &setup.model.components(&setup.y0)))
+            .transpose()?;
+        options.section = section.clone();
         let mut run = SceneRun::new(&setup, &method, &options)?;
         let default_path =
             PathBuf::from("out").join(format!("{}-{}.csv", file_safe(&setup.name), file_safe(method.name())));
@@ -186,7 +200,28 @@ impl SceneVisitor for Runner<'_> {
         run.check_span().map_err(flag_hint)?;
         let mut csv = CsvRecorder::create(&path, &setup)?;
         csv.progress = Some(super::progress::Progress::new(run.t0(), run.t_end()));
-        let outcome = run.run_into(&mut csv);
+        // the section and the pictures go beside the CSV when it is a regular file; for
+        // stdout, a pipe or a device, beside the default output
+        let beside_csv = std::fs::metadata(&path).is_ok_and(|m| m.is_file());
+        let stem = if beside_csv { &path } else { &default_path }.with_extension("");
+        let (outcome, mut crossings) = match &section {
+            Some(section) => {
+                let section_path = PathBuf::from(format!("{}-section.csv", stem.display()));
+                super::output::refuse_overwriting(&section_path, &inputs)?;
+                let mut with = WithSection {
+                    run: &mut csv,
+                    crossings: CsvRecorder::create(&section_path, &setup)?,
+                    section,
+                    setup: &setup,
+                    count: 0,
+                };
+                let outcome = run.run_into(&mut with);
+                (outcome, Some((with.crossings, with.count)))
+            }
+            None => (run.run_into(&mut csv), None),
+        };
+        // kept whatever happened to the run
+        let section_flushed = crossings.as_mut().map_or(Ok(()), |(c, _)| c.flush());
         if let Some(progress) = &mut csv.progress {
             progress.finish();
         }
@@ -228,6 +263,7 @@ impl SceneVisitor for Runner<'_> {
             return Err(anyhow!("{e}{hint}; stopped after {} steps{kept}", stats.steps));
         }
         flushed?;
+        section_flushed?;
         let summary = summary(
             &format!("{} on {}", method.name(), setup.name),
             stats,
@@ -246,11 +282,18 @@ impl SceneVisitor for Runner<'_> {
                 track.e0.unwrap_or(f64::NAN)
             );
         }
-        // beside the CSV when it is a regular file; for stdout, a pipe or a device, beside
-        // the default output
-        let beside_csv = std::fs::metadata(&path).is_ok_and(|m| m.is_file());
-        let stem = if beside_csv { &path } else { &default_path }.with_extension("");
-        let pictures = super::pictures::draw_run(&csv.sample, &stem, &setup.name, method.name());
+        let mut pictures = super::pictures::draw_run(&csv.sample, &stem, &setup.name, method.name());
+        if let (Some((c, count)), Some(section)) = (&crossings, &section) {
+            let _ = writeln!(
+                std::io::stderr(),
+                "section {}: {count} crossings in {}",
+                section.text,
+                c.destination()
+            );
+            let title = format!("{}, {}: section {}", setup.name, method.name(), section.text);
+            let picture = PathBuf::from(format!("{}-section.svg", stem.display()));
+            super::section::draw(c, section, picture, &title, &mut pictures);
+        }
         for warning in &pictures.skipped {
             let _ = writeln!(std::io::stderr(), "warning: {warning}");
         }

@@ -3,7 +3,7 @@
 
 use super::file::{model_name, parse_as, Source};
 use super::{AnyScene, ChargedScene, DampedOscillator, Harmonic, Pendulum, Scene, MODELS};
-use super::{RestrictedThreeBody, SpinningBall};
+use super::{HenonHeiles, RestrictedThreeBody, SpinningBall};
 use nalgebra::DVector;
 use std::path::Path;
 use stormer::magnetic::Charged;
@@ -72,6 +72,10 @@ pub const BUILTIN: &[BuiltinScene] = &[
     BuiltinScene {
         name: "free-kick",
         text: include_str!("../../../scenes/free-kick.toml"),
+    },
+    BuiltinScene {
+        name: "henon-heiles",
+        text: include_str!("../../../scenes/henon-heiles.toml"),
     },
 ];
 
@@ -173,6 +177,7 @@ pub fn parse(text: &str, origin: &str, name: &str) -> Result<AnyScene, Error> {
         ChargedScene::MODEL => AnyScene::ChargedParticles(parse_as(&src, name)?),
         Charged::<RestrictedThreeBody>::MODEL => AnyScene::RestrictedThreeBody(parse_as(&src, name)?),
         SpinningBall::MODEL => AnyScene::SpinningBall(parse_as(&src, name)?),
+        HenonHeiles::MODEL => AnyScene::HenonHeiles(parse_as(&src, name)?),
         other => {
             return Err(src.error_at(
                 model.span(),
@@ -203,6 +208,7 @@ mod tests {
             ("magnetic-bottle", "charged-particles"),
             ("arenstorf", "restricted-3-body"),
             ("free-kick", "spinning-ball"),
+            ("henon-heiles", "henon-heiles"),
         ];
         assert_eq!(BUILTIN.len(), models.len());
         for (s, (name, model)) in BUILTIN.iter().zip(models) {

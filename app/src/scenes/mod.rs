@@ -49,6 +49,7 @@ mod damped;
 mod file;
 mod free_kick;
 mod harmonic;
+mod henon_heiles;
 mod nbody_file;
 mod pendulum;
 
@@ -60,6 +61,7 @@ pub use damped::{DampedOscillator, DampedParameters};
 pub use file::{Number, RunSettings, Source};
 pub use free_kick::{KickInitial, SpinningBall, SpinningBallParameters};
 pub use harmonic::{Harmonic, HarmonicParameters, OscillatorInitial};
+pub use henon_heiles::{HenonHeiles, HenonHeilesInitial, HenonHeilesParameters, DEFAULT_ENERGY};
 pub use nbody_file::{BodyEntry, GravityParameters};
 pub use pendulum::{NoParameters, Pendulum, PendulumInitial, PENDULUM_PERIOD_45_DEGREES};
 
@@ -203,6 +205,8 @@ pub enum AnyScene {
     RestrictedThreeBody(Setup<Charged<RestrictedThreeBody>>),
     /// `model = "spinning-ball"`: gravity, drag and the Magnus force (the `free-kick` scene).
     SpinningBall(Setup<SpinningBall>),
+    /// `model = "henon-heiles"`: the Henon-Heiles system.
+    HenonHeiles(Setup<HenonHeiles>),
 }
 
 /// The model names a scene file can give, in the order of [`AnyScene`].
@@ -215,6 +219,7 @@ pub const MODELS: &[&str] = &[
     ChargedScene::MODEL,
     Charged::<RestrictedThreeBody>::MODEL,
     SpinningBall::MODEL,
+    HenonHeiles::MODEL,
 ];
 
 /// `$body` with `$s` bound to the setup of whichever model `$scene` holds.
@@ -229,6 +234,7 @@ macro_rules! each {
             AnyScene::ChargedParticles($s) => $body,
             AnyScene::RestrictedThreeBody($s) => $body,
             AnyScene::SpinningBall($s) => $body,
+            AnyScene::HenonHeiles($s) => $body,
         }
     };
 }

@@ -2,8 +2,8 @@
 //!
 //! The scenes are read into `f64` models (a [`Scene`] is a `Problem<Scalar = f64>`). Three
 //! models are generic over the scalar (central force, N-body, charged particles) and run
-//! in `f32` as they are; the other five (harmonic, damped oscillator, pendulum, restricted
-//! three-body, spinning ball) are `f64`-only, so this file writes their equations once
+//! in `f32` as they are; the other six (harmonic, damped oscillator, pendulum, restricted
+//! three-body, spinning ball, Henon-Heiles) are `f64`-only, so this file writes their equations once
 //! more, generic over [`Real`], and runs that twin in `f32`.
 //!
 //! Each run is compared with the crate's own `f64` run of the same method at the same
@@ -194,7 +194,7 @@ fn reference_scale(y: &[f64]) -> f64 {
 
 // ---------------------------------------------------------------------------------------
 // Twins of the f64-only models, generic over the scalar: the same formulas as
-// src/scenes/{harmonic,pendulum,damped,arenstorf,free_kick}.rs. A wrong twin shows at once
+// src/scenes/{harmonic,pendulum,damped,arenstorf,free_kick,henon_heiles}.rs. A wrong twin shows at once
 // as a deviation far above round-off from the crate's f64 model.
 
 /// `x'' = -w0^2 x`.
@@ -222,6 +222,23 @@ impl<T: Real> SecondOrder for PendulumTwin<T> {
     }
     fn energy(&self, _t: T, q: &[T], v: &[T]) -> Option<T> {
         Some(lit::<T>(0.5) * v[0] * v[0] - q[0].cos())
+    }
+}
+
+/// Henon-Heiles: `x'' = -x - 2 x y`, `y'' = -y - x^2 + y^2`.
+struct HenonHeilesTwin<T>(core::marker::PhantomData<T>);
+impl<T: Real> SecondOrder for HenonHeilesTwin<T> {
+    type Scalar = T;
+    type State = [T; 4];
+    fn acceleration(&self, _t: T, q: &[T], a: &mut [T]) {
+        let (x, y) = (q[0], q[1]);
+        a[0] = -x - lit::<T>(2.0) * x * y;
+        a[1] = -y - x * x + y * y;
+    }
+    fn energy(&self, _t: T, q: &[T], p: &[T]) -> Option<T> {
+        let (x, y) = (q[0], q[1]);
+        let half = lit::<T>(0.5);
+        Some(half * (p[0] * p[0] + p[1] * p[1]) + half * (x * x + y * y) + x * x * y - y * y * y / lit::<T>(3.0))
     }
 }
 
@@ -344,6 +361,10 @@ fn scene(name: &str) -> Measured {
             measure(&s, &quadratic(HarmonicTwin { w0_squared }, to_f32(&s.y0)))
         }
         AnyScene::Pendulum(s) => measure(&s, &quadratic(PendulumTwin(core::marker::PhantomData), to_f32(&s.y0))),
+        AnyScene::HenonHeiles(s) => measure(
+            &s,
+            &quadratic(HenonHeilesTwin(core::marker::PhantomData), to_f32(&s.y0)),
+        ),
         AnyScene::DampedOscillator(s) => {
             let problem = DampedTwin {
                 w0_squared: (s.model.w0 * s.model.w0) as f32,
@@ -401,6 +422,7 @@ const FIXED_BOUNDS: &[(&str, f64, f64)] = &[
     ("magnetic-bottle", 25.0, 200.0),     // [7.1 dop853, 70.7 verner6]
     ("arenstorf", 2500.0, 3000.0),        // [843 sofroniou_spaletta6_s13, 1068 verner6]
     ("free-kick", 35.0, 900.0),           // [11.2 dop853, 287 verner6]
+    ("henon-heiles", 60.0, 2000.0),       // [18.3 dop853, 644 verner6]
 ];
 
 /// The bound on an adaptive f32 run's error over the f64 run's at the same tolerance
