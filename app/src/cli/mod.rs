@@ -2,6 +2,7 @@
 
 mod choice;
 mod interrupt;
+mod legend;
 mod methods;
 mod output;
 mod pictures;

@@ -1,7 +1,9 @@
 //! SVG line charts (plotters): trajectories, energy errors, convergence and
 //! work-precision diagrams. One function draws every kind; the caller chooses the axes.
 
+use super::legend::{Legend, Place, Rect};
 use plotters::coord::ranged1d::ValueFormatter;
+use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::path::Path;
 
@@ -90,8 +92,17 @@ impl Chart {
     }
 }
 
+/// The picture's size in pixels (the width a page scales it from).
 const WIDTH: u32 = 800;
 const HEIGHT: u32 = 560;
+/// Text heights in pixels of the picture: readable when a page shows it 400 px wide.
+const TITLE_PX: f64 = 21.0;
+const AXIS_PX: f64 = 18.0;
+const TICK_PX: f64 = 16.0;
+/// Plotters draws a font of size `s` at `s / 1.24` pixels.
+const FONT_SCALE: f64 = 1.24;
+/// Room below the plotting area for the x tick labels and the axis label.
+const X_AREA_PX: u32 = 64;
 const PALETTE: [RGBColor; 8] = [
     RGBColor(31, 119, 180),
     RGBColor(214, 39, 40),
@@ -153,9 +164,8 @@ fn range(values: impl Iterator<Item = f64>, scale: Scale) -> (f64, f64) {
 }
 
 /// Widens the shorter range of a linear-linear chart so both axes have the same units per
-/// pixel of the plotting area (approximately: the label areas are fixed).
-fn equalize(x: (f64, f64), y: (f64, f64)) -> ((f64, f64), (f64, f64)) {
-    let (pw, ph) = (f64::from(WIDTH - 90), f64::from(HEIGHT - 100));
+/// pixel of a plotting area `pw` by `ph` pixels.
+fn equalize(x: (f64, f64), y: (f64, f64), (pw, ph): (f64, f64)) -> ((f64, f64), (f64, f64)) {
     let (sx, sy) = ((x.1 - x.0) / pw, (y.1 - y.0) / ph);
     if sx > sy {
         let mid = 0.5 * (y.0 + y.1);
@@ -166,6 +176,87 @@ fn equalize(x: (f64, f64), y: (f64, f64)) -> ((f64, f64), (f64, f64)) {
         let half = 0.5 * sy * pw;
         ((mid - half, mid + half), y)
     }
+}
+
+/// The width of the widest tick label plotters may draw on an axis (about ten ticks at
+/// multiples of a round step on a linear axis, the decades on a log axis), in characters.
+fn widest_tick(scale: Scale, (lo, hi): (f64, f64)) -> usize {
+    let labels = Ticks::new(scale, (lo, hi));
+    let values: Vec<f64> = match scale {
+        Scale::Linear => {
+            let raw = (hi - lo) / 10.0;
+            let unit = 10f64.powf(raw.log10().floor());
+            let step = [1.0, 2.0, 5.0, 10.0]
+                .iter()
+                .map(|m| m * unit)
+                .find(|s| *s >= raw)
+                .unwrap_or(raw);
+            let first = (lo / step).ceil();
+            (0..12)
+                .map(|k| (first + f64::from(k)) * step)
+                .take_while(|v| *v <= hi)
+                .collect()
+        }
+        Scale::Log => {
+            let (a, b) = (lo.log10().floor() as i32, hi.log10().ceil() as i32);
+            (a..=b).take(50).map(|k| 10f64.powi(k)).collect()
+        }
+    };
+    values
+        .iter()
+        .map(|&v| labels.label(v).chars().count())
+        .max()
+        .unwrap_or(4)
+}
+
+/// The pixel rectangle `(left, top, right, bottom)` of the plotting area that `builder`
+/// settings give on a `WIDTH` x `HEIGHT` picture, measured on a picture drawn in memory.
+fn plot_area(chart: &Chart, y_area: u32) -> anyhow::Result<Rect> {
+    let mut scratch = String::new();
+    let root = SVGBackend::with_string(&mut scratch, (WIDTH, HEIGHT)).into_drawing_area();
+    let c = builder(&root, chart, y_area)
+        .build_cartesian_2d(0f64..1f64, 0f64..1f64)
+        .map_err(plot_error)?;
+    let (xs, ys) = c.plotting_area().get_pixel_range();
+    Ok((
+        f64::from(xs.start),
+        f64::from(ys.start),
+        f64::from(xs.end),
+        f64::from(ys.end),
+    ))
+}
+
+/// The chart's frame: caption, margins and the room for the axes' labels.
+fn builder<'a, 'b, DB: DrawingBackend>(
+    root: &'a DrawingArea<DB, Shift>,
+    chart: &'b Chart,
+    y_area: u32,
+) -> ChartBuilder<'a, 'b, DB> {
+    let mut b = ChartBuilder::on(root);
+    b.caption(&chart.title, ("sans-serif", TITLE_PX * FONT_SCALE))
+        .margin(12)
+        .margin_right(28)
+        .x_label_area_size(X_AREA_PX)
+        .y_label_area_size(y_area);
+    b
+}
+
+/// Maps data points to pixels of the plotting area `area` of a chart on ranges `xr`, `yr`.
+fn to_pixels(points: &[(f64, f64)], chart: &Chart, (xr, yr): ((f64, f64), (f64, f64)), area: Rect) -> Vec<(f64, f64)> {
+    let fraction = |scale: Scale, (lo, hi): (f64, f64), v: f64| match scale {
+        Scale::Linear => (v - lo) / (hi - lo),
+        Scale::Log => (v.log10() - lo.log10()) / (hi.log10() - lo.log10()),
+    };
+    let (l, t, r, b) = area;
+    points
+        .iter()
+        .map(|&(x, y)| {
+            (
+                l + (r - l) * fraction(chart.x_scale, xr, x),
+                b - (b - t) * fraction(chart.y_scale, yr, y),
+            )
+        })
+        .collect()
 }
 
 /// Draws `series` on `chart` into the SVG file `path`.
@@ -182,17 +273,34 @@ pub fn draw(path: &Path, chart: &Chart, series: &[Series]) -> anyhow::Result<()>
         .collect();
     let mut xr = range(kept.iter().flatten().map(|p| p.0), chart.x_scale);
     let mut yr = range(kept.iter().flatten().map(|p| p.1), chart.y_scale);
+    // room for the widest y tick label and the axis label beside it
+    let y_area = ((0.6 * TICK_PX * widest_tick(chart.y_scale, yr) as f64) + AXIS_PX + 30.0).clamp(70.0, 220.0) as u32;
+    let area = plot_area(chart, y_area)?;
     if chart.equal_aspect && chart.x_scale == Scale::Linear && chart.y_scale == Scale::Linear {
-        (xr, yr) = equalize(xr, yr);
+        (xr, yr) = equalize(xr, yr, (area.2 - area.0, area.3 - area.1));
     }
-    let root = SVGBackend::new(path, (WIDTH, HEIGHT)).into_drawing_area();
+    let labelled = series.len() > 1 || series.first().is_some_and(|s| !s.label.is_empty());
+    let legend = labelled.then(|| {
+        Legend::new(
+            series
+                .iter()
+                .enumerate()
+                .map(|(i, s)| (s.label.clone(), PALETTE[i % PALETTE.len()]))
+                .collect(),
+        )
+    });
+    let place = legend.as_ref().map(|legend| {
+        let lines: Vec<Vec<(f64, f64)>> = kept.iter().map(|p| to_pixels(p, chart, (xr, yr), area)).collect();
+        legend.place(area, &lines, f64::from(WIDTH))
+    });
+    let strip = match &place {
+        Some(Place::Below(rows)) => Legend::strip_height(rows),
+        _ => 0,
+    };
+    let root = SVGBackend::new(path, (WIDTH, HEIGHT + strip)).into_drawing_area();
     root.fill(&WHITE).map_err(plot_error)?;
-    let mut builder = ChartBuilder::on(&root);
-    builder
-        .caption(&chart.title, ("sans-serif", 20))
-        .margin(12)
-        .x_label_area_size(45)
-        .y_label_area_size(75);
+    let (top, below) = root.split_vertically(HEIGHT);
+    let mut builder = builder(&top, chart, y_area);
     match (chart.x_scale, chart.y_scale) {
         (Scale::Linear, Scale::Linear) => {
             let mut c = builder.build_cartesian_2d(xr.0..xr.1, yr.0..yr.1).map_err(plot_error)?;
@@ -217,6 +325,9 @@ pub fn draw(path: &Path, chart: &Chart, series: &[Series]) -> anyhow::Result<()>
             finish(&mut c, chart, series, &kept, (xr, yr))
         }
     }?;
+    if let (Some(legend), Some(place)) = (&legend, &place) {
+        legend.draw(place, &top, &below)?;
+    }
     root.present().map_err(plot_error)?;
     Ok(())
 }
@@ -238,8 +349,13 @@ where
     c.configure_mesh()
         .x_desc(chart.x_label.as_str())
         .y_desc(chart.y_label.as_str())
+        .x_labels(8)
+        .y_labels(8)
         .x_label_formatter(&|v| x_tick.label(*v))
         .y_label_formatter(&|v| y_tick.label(*v))
+        .label_style(("sans-serif", TICK_PX * FONT_SCALE))
+        .axis_desc_style(("sans-serif", AXIS_PX * FONT_SCALE))
+        .bold_line_style(RGBColor(225, 225, 225))
         .light_line_style(WHITE.mix(0.0))
         .draw()
         .map_err(plot_error)?;
@@ -247,21 +363,11 @@ where
         let color = PALETTE[i % PALETTE.len()];
         let style = ShapeStyle::from(&color).stroke_width(2);
         c.draw_series(LineSeries::new(points.iter().copied(), style))
-            .map_err(plot_error)?
-            .label(s.label.as_str())
-            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], style));
+            .map_err(plot_error)?;
         if s.markers {
             c.draw_series(points.iter().map(|&p| Circle::new(p, 3, color.filled())))
                 .map_err(plot_error)?;
         }
-    }
-    if series.len() > 1 || series.first().is_some_and(|s| !s.label.is_empty()) {
-        c.configure_series_labels()
-            .background_style(WHITE.mix(0.85))
-            .border_style(BLACK)
-            .position(SeriesLabelPosition::UpperRight)
-            .draw()
-            .map_err(plot_error)?;
     }
     Ok(())
 }
@@ -333,7 +439,7 @@ fn tick(v: f64) -> String {
     }
 }
 
-fn plot_error<E: std::fmt::Display>(e: E) -> anyhow::Error {
+pub(super) fn plot_error<E: std::fmt::Display>(e: E) -> anyhow::Error {
     anyhow::anyhow!("cannot draw the chart: {e}")
 }
 
