@@ -15,6 +15,7 @@ mod save_at;
 mod scene;
 mod study;
 mod tour;
+mod tour_page;
 mod verify;
 mod verify_checks;
 mod verify_splitting;

@@ -250,7 +250,7 @@ impl SceneVisitor for Runner<'_> {
         // the default output
         let beside_csv = std::fs::metadata(&path).is_ok_and(|m| m.is_file());
         let stem = if beside_csv { &path } else { &default_path }.with_extension("");
-        let pictures = super::pictures::draw_run(&csv.sample, &stem, &setup.name, method.name());
+        let pictures = super::pictures::draw_run(&csv.sample, &stem, (&setup.name, &setup.units), method.name());
         for warning in &pictures.skipped {
             let _ = writeln!(std::io::stderr(), "warning: {warning}");
         }
