@@ -349,8 +349,8 @@ where
     c.configure_mesh()
         .x_desc(chart.x_label.as_str())
         .y_desc(chart.y_label.as_str())
-        .x_labels(8)
-        .y_labels(8)
+        .x_labels(label_count(chart.x_scale, xr))
+        .y_labels(label_count(chart.y_scale, yr))
         .x_label_formatter(&|v| x_tick.label(*v))
         .y_label_formatter(&|v| y_tick.label(*v))
         .label_style(("sans-serif", TICK_PX * FONT_SCALE))
@@ -372,12 +372,27 @@ where
     Ok(())
 }
 
+/// How many tick labels plotters may put on an axis: 8, or on a log axis of less than two
+/// decades 12, which makes it label 2, 3, ... 9 times the decade too (else it labels the
+/// decades alone: one tick, or none).
+fn label_count(scale: Scale, (lo, hi): (f64, f64)) -> usize {
+    if scale == Scale::Log && (hi / lo).log10() < 2.0 {
+        12
+    } else {
+        8
+    }
+}
+
 /// The tick labels of one axis: on a linear axis, as many digits as tell ticks a tenth of
 /// the range apart (`-0.57746`, `-0.57744`, not `-0.577` on every tick), and `0` for a
 /// value that is zero to the axis' resolution (not `-2.22e-16`); on a log axis, [`tick`].
 struct Ticks {
     /// A tenth of the range of a linear axis; `None` on a log axis or an empty range.
     step: Option<f64>,
+    /// A log axis of less than two decades, ticked at every multiple of its decades
+    /// ([`label_count`]): only 1, 2 and 5 times a decade are labelled, so that the labels
+    /// do not run into each other.
+    dense_log: bool,
 }
 
 impl Ticks {
@@ -385,12 +400,19 @@ impl Ticks {
         let step = (hi - lo).abs() / 10.0;
         Ticks {
             step: (scale == Scale::Linear && step.is_finite() && step > 0.0).then_some(step),
+            dense_log: label_count(scale, (lo, hi)) > 8,
         }
     }
 
     fn label(&self, v: f64) -> String {
         let Some(step) = self.step else {
-            return tick(v);
+            let mantissa = v / 10f64.powf(v.log10().floor());
+            let round = [1.0, 2.0, 5.0, 10.0].iter().any(|m| (mantissa - m).abs() < 1e-6 * m);
+            return if self.dense_log && !round {
+                String::new()
+            } else {
+                tick(v)
+            };
         };
         if v.abs() <= step * 1e-6 {
             return "0".into();
@@ -529,6 +551,14 @@ mod tests {
         let huge = Ticks::new(Scale::Linear, (1e10, 1e10 + 1e4));
         assert_eq!(huge.label(1e10 + 2e3), "1.0000002e10");
         assert_eq!(Ticks::new(Scale::Log, (1e-3, 1.0)).label(0.01), "0.01");
+        // a log axis of less than two decades labels 1, 2 and 5 times its decades only
+        let short = Ticks::new(Scale::Log, (300.0, 8000.0));
+        let labels: Vec<String> = [1000.0, 2000.0, 3000.0, 5000.0, 6000.000000000001]
+            .iter()
+            .map(|&v| short.label(v))
+            .collect();
+        assert_eq!(labels, ["1000", "2000", "", "5000", ""]);
+        assert_eq!(Ticks::new(Scale::Log, (1.0, 1e4)).label(3000.0), "3000");
     }
 
     #[test]

@@ -208,8 +208,13 @@ fn sim_alpha(
         .with_context(|| format!("tour: {method} on {scene}"))
 }
 
+/// A chart of positions in a plane at equal scales, the axes `x` and `y` in `units`.
+fn plane(title: &str, units: &Units, (x, y): (&str, &str)) -> Chart {
+    Chart::new(title, units.position(x), units.position(y)).equal_aspect()
+}
+
 /// Draws a picture into `out` and describes it.
-fn picture(out: &Path, file: &str, chart: &Chart, series: &[Series], caption: &str) -> anyhow::Result<Picture> {
+fn picture(out: &Path, file: &str, chart: &Chart, series: &[Series]) -> anyhow::Result<Picture> {
     draw(&out.join(file), chart, series)?;
     Ok(Picture {
         file: file.to_string(),
@@ -217,8 +222,63 @@ fn picture(out: &Path, file: &str, chart: &Chart, series: &[Series], caption: &s
         x_label: chart.x_label.clone(),
         y_label: chart.y_label.clone(),
         legend: series.iter().map(|s| s.label.clone()).collect(),
-        caption: caption.to_string(),
+        caption: caption(file).to_string(),
     })
+}
+
+/// What a picture of the tour shows and what to look at, by its file name.
+fn caption(file: &str) -> &'static str {
+    match file {
+        "pendulum-energy.svg" => {
+            "The relative energy error on a log scale. Look at the trend: explicit Euler's error \
+            grows with time (it gains energy at every step), Stormer-Verlet's oscillates at a \
+            level that does not grow."
+        }
+        "pendulum-theta.svg" => {
+            "The angle: Stormer-Verlet swings between -pi/4 and pi/4 as the pendulum does; \
+            explicit Euler's swings widen as its energy grows."
+        }
+        "kepler-energy.svg" => {
+            "The relative energy error on a log scale. RK4's is smaller over this span but grows \
+            steadily; velocity Verlet's is larger but comes back at every orbit (the spikes are \
+            the close approaches) and does not grow."
+        }
+        "kepler-orbit.svg" => {
+            "The light body's orbit, equal scales on both axes: the 43 revolutions lie on one \
+            ellipse for both methods; a band instead of a line would show the orbit turning or \
+            shrinking."
+        }
+        "solar-energy.svg" => {
+            "The relative error of the Hamiltonian on a log scale, four methods. Explicit Euler's \
+            climbs; the three symplectic methods stay in a band, each one lower than the last \
+            (order 1, 2, 4)."
+        }
+        "coulomb-xy.svg" => {
+            "The particle's path seen along the field (equal scales): it falls towards the \
+            centre, and the field turns it into loops around it."
+        }
+        "exb-error.svg" => {
+            "The distance to the exact solution on a log scale, six schemes: lower is better. \
+            The first-order schemes' errors grow fastest; the gap between the lines is the \
+            difference of accuracy at the same step."
+        }
+        "exb-xy.svg" => {
+            "The orbits seen from the guiding centre, moving with the exact drift velocity vd = \
+            E x B / |B|^2 (equal scales): the exact orbit is one circle. A scheme whose orbit \
+            spirals out or in, or leaves the circle, gains or loses gyration energy or drifts \
+            at the wrong speed."
+        }
+        "free-kick-flight.svg" => {
+            "The ball's path in the vertical plane at both steps (equal scales): the two curves \
+            lie on each other, so dt = 0.1 is already fine for RK4; the flight ends where the \
+            ball lands."
+        }
+        "coulomb-energy.svg" => {
+            "The relative energy error on a log scale: it oscillates, dipping at each close \
+            pass, without a trend over t = 100."
+        }
+        _ => work_precision_caption(file),
+    }
 }
 
 fn sci(x: f64) -> String {
@@ -237,38 +297,19 @@ fn drift_word(t: &Trace) -> &'static str {
 fn pendulum(out: &Path) -> anyhow::Result<Section> {
     let runs = [("explicit Euler", "euler"), ("Stormer-Verlet", "stormer_verlet_dkd")];
     let traces = sims("pendulum", &runs, 0.01, 60.0, 10)?;
-    let units = &traces[0].1.units;
-    let chart = Chart::new(
-        "pendulum, h = 0.01: energy error against time",
-        units.t(),
-        "|E - E0| / |E0|",
-    );
-    let energy = relative_energy_picture(
-        out,
-        "pendulum-energy.svg",
-        chart,
-        &traces,
-        "The relative energy error on a log scale. Look at the trend: explicit Euler's error \
-         grows with time (it gains energy at every step), Stormer-Verlet's oscillates at a \
-         level that does not grow.",
-    )?;
     let theta: Vec<Series> = traces
         .iter()
         .map(|(l, t)| Series::line(*l, t.rows.iter().map(|r| r.0).zip(t.column("theta")).collect()))
         .collect();
+    let units = &traces[0].1.units;
     let chart = Chart::new(
         "pendulum, h = 0.01: angle against time",
         units.t(),
         Units::label("theta", units.angle.as_ref()),
     );
-    let angle = picture(
-        out,
-        "pendulum-theta.svg",
-        &chart,
-        &theta,
-        "The angle: Stormer-Verlet swings between -pi/4 and pi/4 as the pendulum does; \
-         explicit Euler's swings widen as its energy grows.",
-    )?;
+    let angle = picture(out, "pendulum-theta.svg", &chart, &theta)?;
+    let title = ("pendulum, h = 0.01: energy error against time", 'E');
+    let energy = relative_energy_picture(out, "pendulum-energy.svg", title, &traces)?;
     let (euler, verlet) = (&traces[0].1, &traces[1].1);
     let euler_end = euler.energy_error().last().map_or(f64::NAN, |p| p.1);
     let upward = if euler_end > 0.0 { "upward" } else { "downward" };
@@ -325,19 +366,21 @@ fn max_rel(t: &Trace) -> f64 {
     t.max_abs_de() / t.e0().abs()
 }
 
-/// The picture of each run's `|E - E0| / |E0|` against time, on a log scale.
+/// The picture `file`, titled `title`, of each run's relative energy error `|E - E0| / |E0|`
+/// against time on a log scale (`H` instead of `E` for a Hamiltonian called so).
 fn relative_energy_picture(
     out: &Path,
     file: &str,
-    chart: Chart,
+    (title, e): (&str, char),
     traces: &[(&str, Trace)],
-    caption: &str,
 ) -> anyhow::Result<Picture> {
     let series: Vec<Series> = traces
         .iter()
         .map(|(l, t)| Series::line(*l, t.relative_energy_error()))
         .collect();
-    picture(out, file, &chart.scales(Scale::Linear, Scale::Log), &series, caption)
+    let time = traces.first().map_or_else(|| "t".into(), |t| t.1.units.t());
+    let chart = Chart::new(title, time, format!("|{e} - {e}0| / |{e}0|")).scales(Scale::Linear, Scale::Log);
+    picture(out, file, &chart, &series)
 }
 
 /// Kepler: RK4 against velocity Verlet at h = 0.01 over 100 years (about 43 orbits).
@@ -345,20 +388,8 @@ fn kepler(out: &Path) -> anyhow::Result<Section> {
     let runs = [("RK4", "rk4"), ("velocity Verlet", "velocity_verlet_kdk")];
     let traces = sims("kepler", &runs, 0.01, 100.0, 8)?;
     let units = &traces[0].1.units;
-    let chart = Chart::new(
-        "Kepler, h = 0.01 yr: energy error against time",
-        units.t(),
-        "|E - E0| / |E0|",
-    );
-    let energy = relative_energy_picture(
-        out,
-        "kepler-energy.svg",
-        chart,
-        &traces,
-        "The relative energy error on a log scale. RK4's is smaller over this span but grows \
-         steadily; velocity Verlet's is larger but comes back at every orbit (the spikes are \
-         the close approaches) and does not grow.",
-    )?;
+    let title = ("Kepler, h = 0.01 yr: energy error against time", 'E');
+    let energy = relative_energy_picture(out, "kepler-energy.svg", title, &traces)?;
     // the light body's orbit (the second body's x and y, whatever the components are called)
     let orbit: Vec<Series> = traces
         .iter()
@@ -373,21 +404,8 @@ fn kepler(out: &Path) -> anyhow::Result<Section> {
             Series::line(*l, t.column(&body).into_iter().zip(t.column(&ybody)).collect())
         })
         .collect();
-    let chart = Chart::new(
-        "Kepler, h = 0.01 yr: orbit of the light body",
-        units.position("x"),
-        units.position("y"),
-    )
-    .equal_aspect();
-    let orbits = picture(
-        out,
-        "kepler-orbit.svg",
-        &chart,
-        &orbit,
-        "The light body's orbit, equal scales on both axes: the 43 revolutions lie on one \
-         ellipse for both methods; a band instead of a line would show the orbit turning or \
-         shrinking.",
-    )?;
+    let chart = plane("Kepler, h = 0.01 yr: orbit of the light body", units, ("x", "y"));
+    let orbits = picture(out, "kepler-orbit.svg", &chart, &orbit)?;
     let (rk4, verlet) = (&traces[0].1, &traces[1].1);
     let verdict = format!(
         "RK4's energy {} (max |dE/E0| = {}, last quarter {:.1}x the first); velocity Verlet's {} (max |dE/E0| = {}).",
@@ -415,20 +433,8 @@ fn solar(out: &Path) -> anyhow::Result<Section> {
         ("triple jump (order 4)", "triple_jump4"),
     ];
     let traces = sims("outer-solar-system", &runs, 10.0, 40000.0, 10)?;
-    let chart = Chart::new(
-        "outer solar system, dt = 10 days: energy error",
-        traces[0].1.units.t(),
-        "|H - H0| / |H0|",
-    );
-    let energy = relative_energy_picture(
-        out,
-        "solar-energy.svg",
-        chart,
-        &traces,
-        "The relative error of the Hamiltonian on a log scale, four methods. Explicit Euler's \
-         climbs; the three symplectic methods stay in a band, each one lower than the last \
-         (order 1, 2, 4).",
-    )?;
+    let title = ("outer solar system, dt = 10 days: energy error", 'H');
+    let energy = relative_energy_picture(out, "solar-energy.svg", title, &traces)?;
     let [e, s, v, c] = [0, 1, 2, 3].map(|k| &traces[k].1);
     let smaller = |a: &Trace, b: &Trace| {
         if max_rel(a) < max_rel(b) {
@@ -463,29 +469,15 @@ fn coulomb(out: &Path) -> anyhow::Result<Section> {
     let t = sim("coulomb-magnetic", method, None, None, None)?;
     let label = "magnetic Stormer-Verlet";
     let path = Series::line(label, t.column("x").into_iter().zip(t.column("y")).collect());
-    let chart = Chart::new(
+    let chart = plane(
         "coulomb-magnetic, h = 0.01: trajectory, x-y plane",
-        t.units.position("x"),
-        t.units.position("y"),
-    )
-    .equal_aspect();
-    let traj = picture(
-        out,
-        "coulomb-xy.svg",
-        &chart,
-        &[path],
-        "The particle's path seen along the field (equal scales): it falls towards the \
-         centre, and the field turns it into loops around it.",
-    )?;
-    let chart = Chart::new(
-        "coulomb-magnetic, h = 0.01: energy error against time",
-        t.units.t(),
-        "|E - E0| / |E0|",
+        &t.units,
+        ("x", "y"),
     );
-    let caption = "The relative energy error on a log scale: it oscillates, dipping at each close \
-                   pass, without a trend over t = 100.";
+    let traj = picture(out, "coulomb-xy.svg", &chart, &[path])?;
+    let title = ("coulomb-magnetic, h = 0.01: energy error against time", 'E');
     let traces = [(label, t)];
-    let energy = relative_energy_picture(out, "coulomb-energy.svg", chart, &traces, caption)?;
+    let energy = relative_energy_picture(out, "coulomb-energy.svg", title, &traces)?;
     let t = &traces[0].1;
     let e0 = t.e0();
     let verdict = format!(
@@ -536,15 +528,7 @@ fn exb(out: &Path) -> anyhow::Result<Section> {
         "max |y - y_exact|",
     )
     .scales(Scale::Linear, Scale::Log);
-    let errors = picture(
-        out,
-        "exb-error.svg",
-        &chart,
-        &series,
-        "The distance to the exact solution on a log scale, six schemes: lower is better. \
-         The first-order schemes' errors grow fastest; the gap between the lines is the \
-         difference of accuracy at the same step.",
-    )?;
+    let errors = picture(out, "exb-error.svg", &chart, &series)?;
     // the orbits in the frame that moves with the exact drift: a cycloid becomes a circle,
     // so that the schemes' differences are not hidden by a 30-long, 1-wide picture
     let paths: Vec<Series> = traces
@@ -561,22 +545,12 @@ fn exb(out: &Path) -> anyhow::Result<Section> {
             Series::line(*l, points)
         })
         .collect();
-    let chart = Chart::new(
+    let chart = plane(
         "E x B drift, h = 0.01: orbits about the exact guiding centre",
-        units.position("x - vd_x t"),
-        units.position("y - vd_y t"),
-    )
-    .equal_aspect();
-    let traj = picture(
-        out,
-        "exb-xy.svg",
-        &chart,
-        &paths,
-        "The orbits seen from the guiding centre, moving with the exact drift velocity vd = \
-         E x B / |B|^2 (equal scales): the exact orbit is one circle. A scheme whose orbit \
-         spirals out or in, or leaves the circle, gains or loses gyration energy or drifts \
-         at the wrong speed.",
-    )?;
+        units,
+        ("x - vd_x t", "y - vd_y t"),
+    );
+    let traj = picture(out, "exb-xy.svg", &chart, &paths)?;
     let max_err = |t: &Trace| t.rows.iter().filter_map(|r| r.3).fold(0.0, f64::max);
     let mut ranked: Vec<(&str, f64)> = traces.iter().map(|(l, t)| (*l, max_err(t))).collect();
     ranked.sort_by(|a, b| a.1.total_cmp(&b.1));
@@ -630,16 +604,8 @@ fn free_kick(out: &Path) -> anyhow::Result<Section> {
         })
         .collect();
     let units = &traces[0].1.units;
-    let chart = Chart::new("free kick, RK4: the flight", units.position("x"), units.position("z")).equal_aspect();
-    let flight = picture(
-        out,
-        "free-kick-flight.svg",
-        &chart,
-        &series,
-        "The ball's path in the vertical plane at both steps (equal scales): the two curves \
-         lie on each other, so dt = 0.1 is already fine for RK4; the flight ends where the \
-         ball lands.",
-    )?;
+    let chart = plane("free kick, RK4: the flight", units, ("x", "z"));
+    let flight = picture(out, "free-kick-flight.svg", &chart, &series)?;
     let mut table = vec![vec!["dt".into(), "landing".into(), "energy E(end) - E(0)".into()]];
     let mut landings = Vec::new();
     for (dt, t) in &traces {
@@ -693,7 +659,17 @@ fn work_precision(out: &Path) -> anyhow::Result<Section> {
     let mut entries: Vec<PathBuf> = std::fs::read_dir(&dir)?
         .filter_map(|e| e.ok().map(|e| e.path()))
         .collect();
-    entries.sort();
+    // the diagrams in the order they are read: evaluations, seconds, energy
+    entries.sort_by_key(|p| {
+        let name = p.to_string_lossy();
+        (
+            ["-evaluations.svg", "-seconds.svg"]
+                .iter()
+                .position(|k| name.ends_with(k))
+                .unwrap_or(2),
+            p.clone(),
+        )
+    });
     for path in entries {
         let name = path
             .file_name()
@@ -708,7 +684,7 @@ fn work_precision(out: &Path) -> anyhow::Result<Section> {
                 x_label: String::new(),
                 y_label: String::new(),
                 legend: vec![],
-                caption: work_precision_caption(&name).into(),
+                caption: caption(&name).into(),
             });
         } else if name.ends_with(".md") && table.is_empty() {
             let text = stormer::input::read_text(&path).map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;

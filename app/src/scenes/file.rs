@@ -87,14 +87,11 @@ pub struct RunSettings {
 #[derive(Debug, Clone, Default, PartialEq, Eq, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Units {
-    /// Unit of time (`"years"`, `"s"`, `"sqrt(l/g)"`).
-    #[serde(default)]
+    /// Unit of time (`"years"`, `"s"`, `"sqrt(l/g)"`); a key left out reads as `None`.
     pub time: Option<String>,
     /// Unit of the positions (`"AU"`, `"m"`).
-    #[serde(default)]
     pub length: Option<String>,
     /// Unit of the angles (`"rad"`).
-    #[serde(default)]
     pub angle: Option<String>,
 }
 
