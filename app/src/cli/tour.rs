@@ -259,8 +259,8 @@ fn caption(file: &str) -> &'static str {
         }
         "exb-error.svg" => {
             "The distance to the exact solution on a log scale, six schemes: lower is better. \
-            The first-order schemes' errors grow fastest; the gap between the lines is the \
-            difference of accuracy at the same step."
+            Explicit and implicit Euler's errors grow with every gyration; Euler-Cromer's comes \
+            back once per gyration; theta = 1/2, Boris and RK2 stay lowest."
         }
         "exb-xy.svg" => {
             "The orbits seen from the guiding centre, moving with the exact drift velocity vd = \
@@ -274,8 +274,8 @@ fn caption(file: &str) -> &'static str {
             ball lands."
         }
         "coulomb-energy.svg" => {
-            "The relative energy error on a log scale: it oscillates, dipping at each close \
-            pass, without a trend over t = 100."
+            "The relative energy error on a log scale: it oscillates (the dips are where the \
+            error changes sign) without a trend over t = 100."
         }
         _ => work_precision_caption(file),
     }
