@@ -187,10 +187,11 @@ fn headless(chromium: &Path, profile: &Path, args: &[String]) -> String {
 /// A page beside `index.html` that shows it in a frame `width` pixels wide (Chromium's
 /// windows are at least 500 px wide; a frame's width is the page's viewport, its media
 /// queries included) and, once it has loaded, writes into its own DOM the images that did
-/// not load and the page's size, and grows the frame to the page's height.
+/// not load and the page's size, and grows the frame to the page's height. Around the
+/// frame, gray: a screenshot shows where the page's viewport ends.
 fn probe_page(report: &Path, width: u32) -> PathBuf {
     let page = format!(
-        "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"></head><body style=\"margin:0\">\n\
+        "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"></head><body style=\"margin:0;background:#6e7781\">\n\
          <iframe id=\"page\" src=\"index.html\" style=\"border:0;display:block;width:{width}px;height:900px\"></iframe>\n\
          <script>\n\
          const frame = document.getElementById('page');\n\

@@ -93,8 +93,8 @@ impl Chart {
 }
 
 /// The picture's size in pixels (the width a page scales it from).
-const WIDTH: u32 = 800;
-const HEIGHT: u32 = 560;
+const WIDTH: u32 = 680;
+const HEIGHT: u32 = 480;
 /// Text heights in pixels of the picture: readable when a page shows it 400 px wide.
 const TITLE_PX: f64 = 21.0;
 const AXIS_PX: f64 = 18.0;

@@ -53,7 +53,7 @@ nav a { text-decoration: none; }
 table { border-collapse: collapse; font-size: 0.95rem; }
 th, td { padding: 0.35rem 0.8rem; border-bottom: 1px solid var(--line); text-align: left;
   white-space: nowrap; overflow-wrap: normal; }
-th { background: #f6f8fa; font-weight: 600; }
+th { background: #f6f8fa; font-weight: 600; white-space: normal; vertical-align: bottom; }
 .num { text-align: right; font-variant-numeric: tabular-nums; }
 .figures { display: grid; gap: 1rem;
   grid-template-columns: repeat(auto-fill, minmax(min(100%, 460px), 1fr)); }
