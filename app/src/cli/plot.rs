@@ -561,6 +561,36 @@ mod tests {
         assert_eq!(Ticks::new(Scale::Log, (1.0, 1e4)).label(3000.0), "3000");
     }
 
+    /// Every text of a picture is at least 2.2% of its width high (15 px of 680: 13 px
+    /// when a page shows it 600 px wide; plotters' default was 1.2%), and the equal-aspect
+    /// ranges give both axes the same units per pixel of the real plotting area.
+    #[test]
+    fn text_is_readable_and_equal_aspect_is_equal() {
+        let chart = Chart::new("orbit", "x (AU)", "y (AU)").equal_aspect();
+        let circle: Vec<(f64, f64)> = (0..100u32).map(|k| (f64::from(k) * 0.0628).sin_cos()).collect();
+        let path = std::env::temp_dir().join(format!("stormer-plot-text-{}.svg", std::process::id()));
+        draw(
+            &path,
+            &chart,
+            &[Series::line("a", circle.clone()), Series::line("b", circle)],
+        )
+        .unwrap();
+        let svg = std::fs::read_to_string(&path).unwrap();
+        std::fs::remove_file(&path).unwrap();
+        let sizes: Vec<f64> = svg
+            .split("font-size=\"")
+            .skip(1)
+            .map(|s| s.split('"').next().unwrap().parse().unwrap())
+            .collect();
+        assert!(sizes.len() > 10, "{sizes:?}");
+        let smallest = sizes.iter().copied().fold(f64::INFINITY, f64::min);
+        assert!(smallest >= 0.022 * f64::from(WIDTH), "{smallest} px in {WIDTH}");
+        let area = plot_area(&chart, 100).unwrap();
+        let (pw, ph) = (area.2 - area.0, area.3 - area.1);
+        let (x, y) = equalize((-1.0, 1.0), (-3.0, 3.0), (pw, ph));
+        assert!(((x.1 - x.0) / pw - (y.1 - y.0) / ph).abs() < 1e-12 && y == (-3.0, 3.0));
+    }
+
     #[test]
     fn tick_labels_are_short() {
         let cases = [
