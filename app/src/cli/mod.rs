@@ -2,6 +2,7 @@
 
 mod choice;
 mod interrupt;
+mod legend;
 mod methods;
 mod output;
 mod pictures;
@@ -15,6 +16,7 @@ mod scene;
 mod section;
 mod study;
 mod tour;
+mod tour_page;
 mod verify;
 mod verify_checks;
 mod verify_splitting;

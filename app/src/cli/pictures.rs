@@ -8,6 +8,7 @@
 use super::plot::{draw, Chart, Scale, Series};
 use super::sample::Sample;
 use std::path::{Path, PathBuf};
+use stormer_app::scenes::Units;
 
 /// What drawing the pictures gave: the files written, and a warning for each picture
 /// skipped.
@@ -51,8 +52,9 @@ fn planes(header: &[String]) -> Vec<(String, usize, usize, &'static str)> {
     out
 }
 
-/// Draws the pictures of a run from its sampled records, as files `STEM-xy.svg`, ...
-pub fn draw_run(sample: &Sample, stem: &Path, scene: &str, method: &str) -> Pictures {
+/// Draws the pictures of a run from its sampled records, as files `STEM-xy.svg`, ..., with
+/// the scene's `units` on their axes.
+pub fn draw_run(sample: &Sample, stem: &Path, (scene, units): (&str, &Units), method: &str) -> Pictures {
     let header = sample.header();
     let named = |suffix: &str| PathBuf::from(format!("{}-{suffix}.svg", stem.display()));
     let title = |what: &str| format!("{scene}, {method}: {what}");
@@ -75,7 +77,12 @@ pub fn draw_run(sample: &Sample, stem: &Path, scene: &str, method: &str) -> Pict
         if series.is_empty() {
             continue;
         }
-        let chart = Chart::new(title(&format!("trajectory, x-{axis} plane")), "x", axis).equal_aspect();
+        let chart = Chart::new(
+            title(&format!("trajectory, x-{axis} plane")),
+            units.position("x"),
+            units.position(axis),
+        )
+        .equal_aspect();
         pictures.draw(named(&format!("x{axis}")), &chart, &series);
     }
     let energy = header.iter().position(|h| h == "energy");
@@ -89,7 +96,7 @@ pub fn draw_run(sample: &Sample, stem: &Path, scene: &str, method: &str) -> Pict
             .filter(|(j, _)| Some(*j) != energy)
             .map(|(j, name)| Series::line(name.clone(), t.iter().copied().zip(column(j)).collect()))
             .collect();
-        let chart = Chart::new(title("state against time"), "t", "state");
+        let chart = Chart::new(title("state against time"), units.t(), "state");
         pictures.draw(named("state"), &chart, &series);
     }
     if let Some(j) = energy {
@@ -103,7 +110,7 @@ pub fn draw_run(sample: &Sample, stem: &Path, scene: &str, method: &str) -> Pict
             .map(|(t, e)| (t, (e - e0).abs() / scale))
             .collect();
         let y_label = if e0 == 0.0 { "|E - E0|" } else { "|E - E0| / |E0|" };
-        let chart = Chart::new(title("energy error"), "t", y_label).scales(Scale::Linear, Scale::Log);
+        let chart = Chart::new(title("energy error"), units.t(), y_label).scales(Scale::Linear, Scale::Log);
         pictures.draw(named("energy"), &chart, &[Series::line(method, points)]);
     }
     pictures

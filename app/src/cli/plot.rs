@@ -1,7 +1,9 @@
 //! SVG line charts (plotters): trajectories, energy errors, convergence and
 //! work-precision diagrams. One function draws every kind; the caller chooses the axes.
 
+use super::legend::{Legend, Place, Rect};
 use plotters::coord::ranged1d::ValueFormatter;
+use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::path::Path;
 
@@ -104,8 +106,17 @@ impl Chart {
     }
 }
 
-const WIDTH: u32 = 800;
-const HEIGHT: u32 = 560;
+/// The picture's size in pixels (the width a page scales it from).
+const WIDTH: u32 = 680;
+const HEIGHT: u32 = 480;
+/// Text heights in pixels of the picture: readable when a page shows it 400 px wide.
+const TITLE_PX: f64 = 21.0;
+const AXIS_PX: f64 = 18.0;
+const TICK_PX: f64 = 16.0;
+/// Plotters draws a font of size `s` at `s / 1.24` pixels.
+const FONT_SCALE: f64 = 1.24;
+/// Room below the plotting area for the x tick labels and the axis label.
+const X_AREA_PX: u32 = 64;
 const PALETTE: [RGBColor; 8] = [
     RGBColor(31, 119, 180),
     RGBColor(214, 39, 40),
@@ -167,9 +178,8 @@ fn range(values: impl Iterator<Item = f64>, scale: Scale) -> (f64, f64) {
 }
 
 /// Widens the shorter range of a linear-linear chart so both axes have the same units per
-/// pixel of the plotting area (approximately: the label areas are fixed).
-fn equalize(x: (f64, f64), y: (f64, f64)) -> ((f64, f64), (f64, f64)) {
-    let (pw, ph) = (f64::from(WIDTH - 90), f64::from(HEIGHT - 100));
+/// pixel of a plotting area `pw` by `ph` pixels.
+fn equalize(x: (f64, f64), y: (f64, f64), (pw, ph): (f64, f64)) -> ((f64, f64), (f64, f64)) {
     let (sx, sy) = ((x.1 - x.0) / pw, (y.1 - y.0) / ph);
     if sx > sy {
         let mid = 0.5 * (y.0 + y.1);
@@ -180,6 +190,87 @@ fn equalize(x: (f64, f64), y: (f64, f64)) -> ((f64, f64), (f64, f64)) {
         let half = 0.5 * sy * pw;
         ((mid - half, mid + half), y)
     }
+}
+
+/// The width of the widest tick label plotters may draw on an axis (about ten ticks at
+/// multiples of a round step on a linear axis, the decades on a log axis), in characters.
+fn widest_tick(scale: Scale, (lo, hi): (f64, f64)) -> usize {
+    let labels = Ticks::new(scale, (lo, hi));
+    let values: Vec<f64> = match scale {
+        Scale::Linear => {
+            let raw = (hi - lo) / 10.0;
+            let unit = 10f64.powf(raw.log10().floor());
+            let step = [1.0, 2.0, 5.0, 10.0]
+                .iter()
+                .map(|m| m * unit)
+                .find(|s| *s >= raw)
+                .unwrap_or(raw);
+            let first = (lo / step).ceil();
+            (0..12)
+                .map(|k| (first + f64::from(k)) * step)
+                .take_while(|v| *v <= hi)
+                .collect()
+        }
+        Scale::Log => {
+            let (a, b) = (lo.log10().floor() as i32, hi.log10().ceil() as i32);
+            (a..=b).take(50).map(|k| 10f64.powi(k)).collect()
+        }
+    };
+    values
+        .iter()
+        .map(|&v| labels.label(v).chars().count())
+        .max()
+        .unwrap_or(4)
+}
+
+/// The pixel rectangle `(left, top, right, bottom)` of the plotting area that `builder`
+/// settings give on a `WIDTH` x `HEIGHT` picture, measured on a picture drawn in memory.
+fn plot_area(chart: &Chart, y_area: u32) -> anyhow::Result<Rect> {
+    let mut scratch = String::new();
+    let root = SVGBackend::with_string(&mut scratch, (WIDTH, HEIGHT)).into_drawing_area();
+    let c = builder(&root, chart, y_area)
+        .build_cartesian_2d(0f64..1f64, 0f64..1f64)
+        .map_err(plot_error)?;
+    let (xs, ys) = c.plotting_area().get_pixel_range();
+    Ok((
+        f64::from(xs.start),
+        f64::from(ys.start),
+        f64::from(xs.end),
+        f64::from(ys.end),
+    ))
+}
+
+/// The chart's frame: caption, margins and the room for the axes' labels.
+fn builder<'a, 'b, DB: DrawingBackend>(
+    root: &'a DrawingArea<DB, Shift>,
+    chart: &'b Chart,
+    y_area: u32,
+) -> ChartBuilder<'a, 'b, DB> {
+    let mut b = ChartBuilder::on(root);
+    b.caption(&chart.title, ("sans-serif", TITLE_PX * FONT_SCALE))
+        .margin(12)
+        .margin_right(28)
+        .x_label_area_size(X_AREA_PX)
+        .y_label_area_size(y_area);
+    b
+}
+
+/// Maps data points to pixels of the plotting area `area` of a chart on ranges `xr`, `yr`.
+fn to_pixels(points: &[(f64, f64)], chart: &Chart, (xr, yr): ((f64, f64), (f64, f64)), area: Rect) -> Vec<(f64, f64)> {
+    let fraction = |scale: Scale, (lo, hi): (f64, f64), v: f64| match scale {
+        Scale::Linear => (v - lo) / (hi - lo),
+        Scale::Log => (v.log10() - lo.log10()) / (hi.log10() - lo.log10()),
+    };
+    let (l, t, r, b) = area;
+    points
+        .iter()
+        .map(|&(x, y)| {
+            (
+                l + (r - l) * fraction(chart.x_scale, xr, x),
+                b - (b - t) * fraction(chart.y_scale, yr, y),
+            )
+        })
+        .collect()
 }
 
 /// Draws `series` on `chart` into the SVG file `path`.
@@ -196,17 +287,34 @@ pub fn draw(path: &Path, chart: &Chart, series: &[Series]) -> anyhow::Result<()>
         .collect();
     let mut xr = range(kept.iter().flatten().map(|p| p.0), chart.x_scale);
     let mut yr = range(kept.iter().flatten().map(|p| p.1), chart.y_scale);
+    // room for the widest y tick label and the axis label beside it
+    let y_area = ((0.6 * TICK_PX * widest_tick(chart.y_scale, yr) as f64) + AXIS_PX + 30.0).clamp(70.0, 220.0) as u32;
+    let area = plot_area(chart, y_area)?;
     if chart.equal_aspect && chart.x_scale == Scale::Linear && chart.y_scale == Scale::Linear {
-        (xr, yr) = equalize(xr, yr);
+        (xr, yr) = equalize(xr, yr, (area.2 - area.0, area.3 - area.1));
     }
-    let root = SVGBackend::new(path, (WIDTH, HEIGHT)).into_drawing_area();
+    let labelled = series.len() > 1 || series.first().is_some_and(|s| !s.label.is_empty());
+    let legend = labelled.then(|| {
+        Legend::new(
+            series
+                .iter()
+                .enumerate()
+                .map(|(i, s)| (s.label.clone(), PALETTE[i % PALETTE.len()]))
+                .collect(),
+        )
+    });
+    let place = legend.as_ref().map(|legend| {
+        let lines: Vec<Vec<(f64, f64)>> = kept.iter().map(|p| to_pixels(p, chart, (xr, yr), area)).collect();
+        legend.place(area, &lines, f64::from(WIDTH))
+    });
+    let strip = match &place {
+        Some(Place::Below(rows)) => Legend::strip_height(rows),
+        _ => 0,
+    };
+    let root = SVGBackend::new(path, (WIDTH, HEIGHT + strip)).into_drawing_area();
     root.fill(&WHITE).map_err(plot_error)?;
-    let mut builder = ChartBuilder::on(&root);
-    builder
-        .caption(&chart.title, ("sans-serif", 20))
-        .margin(12)
-        .x_label_area_size(45)
-        .y_label_area_size(75);
+    let (top, below) = root.split_vertically(HEIGHT);
+    let mut builder = builder(&top, chart, y_area);
     match (chart.x_scale, chart.y_scale) {
         (Scale::Linear, Scale::Linear) => {
             let mut c = builder.build_cartesian_2d(xr.0..xr.1, yr.0..yr.1).map_err(plot_error)?;
@@ -231,6 +339,9 @@ pub fn draw(path: &Path, chart: &Chart, series: &[Series]) -> anyhow::Result<()>
             finish(&mut c, chart, series, &kept, (xr, yr))
         }
     }?;
+    if let (Some(legend), Some(place)) = (&legend, &place) {
+        legend.draw(place, &top, &below)?;
+    }
     root.present().map_err(plot_error)?;
     Ok(())
 }
@@ -252,8 +363,13 @@ where
     c.configure_mesh()
         .x_desc(chart.x_label.as_str())
         .y_desc(chart.y_label.as_str())
+        .x_labels(label_count(chart.x_scale, xr))
+        .y_labels(label_count(chart.y_scale, yr))
         .x_label_formatter(&|v| x_tick.label(*v))
         .y_label_formatter(&|v| y_tick.label(*v))
+        .label_style(("sans-serif", TICK_PX * FONT_SCALE))
+        .axis_desc_style(("sans-serif", AXIS_PX * FONT_SCALE))
+        .bold_line_style(RGBColor(225, 225, 225))
         .light_line_style(WHITE.mix(0.0))
         .draw()
         .map_err(plot_error)?;
@@ -262,29 +378,28 @@ where
         let style = ShapeStyle::from(&color).stroke_width(2);
         if s.joined {
             c.draw_series(LineSeries::new(points.iter().copied(), style))
-                .map_err(plot_error)?
-                .label(s.label.as_str())
-                .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], style));
+                .map_err(plot_error)?;
         } else {
             c.draw_series(points.iter().map(|&p| Circle::new(p, 1, color.filled())))
-                .map_err(plot_error)?
-                .label(s.label.as_str())
-                .legend(move |(x, y)| Circle::new((x + 10, y), 3, color.filled()));
+                .map_err(plot_error)?;
         }
         if s.markers {
             c.draw_series(points.iter().map(|&p| Circle::new(p, 3, color.filled())))
                 .map_err(plot_error)?;
         }
     }
-    if series.len() > 1 || series.first().is_some_and(|s| !s.label.is_empty()) {
-        c.configure_series_labels()
-            .background_style(WHITE.mix(0.85))
-            .border_style(BLACK)
-            .position(SeriesLabelPosition::UpperRight)
-            .draw()
-            .map_err(plot_error)?;
-    }
     Ok(())
+}
+
+/// How many tick labels plotters may put on an axis: 8, or on a log axis of less than two
+/// decades 12, which makes it label 2, 3, ... 9 times the decade too (else it labels the
+/// decades alone: one tick, or none).
+fn label_count(scale: Scale, (lo, hi): (f64, f64)) -> usize {
+    if scale == Scale::Log && (hi / lo).log10() < 2.0 {
+        12
+    } else {
+        8
+    }
 }
 
 /// The tick labels of one axis: on a linear axis, as many digits as tell ticks a tenth of
@@ -293,6 +408,10 @@ where
 struct Ticks {
     /// A tenth of the range of a linear axis; `None` on a log axis or an empty range.
     step: Option<f64>,
+    /// A log axis of less than two decades, ticked at every multiple of its decades
+    /// ([`label_count`]): only 1, 2 and 5 times a decade are labelled, so that the labels
+    /// do not run into each other.
+    dense_log: bool,
 }
 
 impl Ticks {
@@ -300,12 +419,19 @@ impl Ticks {
         let step = (hi - lo).abs() / 10.0;
         Ticks {
             step: (scale == Scale::Linear && step.is_finite() && step > 0.0).then_some(step),
+            dense_log: label_count(scale, (lo, hi)) > 8,
         }
     }
 
     fn label(&self, v: f64) -> String {
         let Some(step) = self.step else {
-            return tick(v);
+            let mantissa = v / 10f64.powf(v.log10().floor());
+            let round = [1.0, 2.0, 5.0, 10.0].iter().any(|m| (mantissa - m).abs() < 1e-6 * m);
+            return if self.dense_log && !round {
+                String::new()
+            } else {
+                tick(v)
+            };
         };
         if v.abs() <= step * 1e-6 {
             return "0".into();
@@ -354,7 +480,7 @@ fn tick(v: f64) -> String {
     }
 }
 
-fn plot_error<E: std::fmt::Display>(e: E) -> anyhow::Error {
+pub(super) fn plot_error<E: std::fmt::Display>(e: E) -> anyhow::Error {
     anyhow::anyhow!("cannot draw the chart: {e}")
 }
 
@@ -444,6 +570,44 @@ mod tests {
         let huge = Ticks::new(Scale::Linear, (1e10, 1e10 + 1e4));
         assert_eq!(huge.label(1e10 + 2e3), "1.0000002e10");
         assert_eq!(Ticks::new(Scale::Log, (1e-3, 1.0)).label(0.01), "0.01");
+        // a log axis of less than two decades labels 1, 2 and 5 times its decades only
+        let short = Ticks::new(Scale::Log, (300.0, 8000.0));
+        let labels: Vec<String> = [1000.0, 2000.0, 3000.0, 5000.0, 6000.000000000001]
+            .iter()
+            .map(|&v| short.label(v))
+            .collect();
+        assert_eq!(labels, ["1000", "2000", "", "5000", ""]);
+        assert_eq!(Ticks::new(Scale::Log, (1.0, 1e4)).label(3000.0), "3000");
+    }
+
+    /// Every text of a picture is at least 2.2% of its width high (15 px of 680: 13 px
+    /// when a page shows it 600 px wide; plotters' default was 1.2%), and the equal-aspect
+    /// ranges give both axes the same units per pixel of the real plotting area.
+    #[test]
+    fn text_is_readable_and_equal_aspect_is_equal() {
+        let chart = Chart::new("orbit", "x (AU)", "y (AU)").equal_aspect();
+        let circle: Vec<(f64, f64)> = (0..100u32).map(|k| (f64::from(k) * 0.0628).sin_cos()).collect();
+        let path = std::env::temp_dir().join(format!("stormer-plot-text-{}.svg", std::process::id()));
+        draw(
+            &path,
+            &chart,
+            &[Series::line("a", circle.clone()), Series::line("b", circle)],
+        )
+        .unwrap();
+        let svg = std::fs::read_to_string(&path).unwrap();
+        std::fs::remove_file(&path).unwrap();
+        let sizes: Vec<f64> = svg
+            .split("font-size=\"")
+            .skip(1)
+            .map(|s| s.split('"').next().unwrap().parse().unwrap())
+            .collect();
+        assert!(sizes.len() > 10, "{sizes:?}");
+        let smallest = sizes.iter().copied().fold(f64::INFINITY, f64::min);
+        assert!(smallest >= 0.022 * f64::from(WIDTH), "{smallest} px in {WIDTH}");
+        let area = plot_area(&chart, 100).unwrap();
+        let (pw, ph) = (area.2 - area.0, area.3 - area.1);
+        let (x, y) = equalize((-1.0, 1.0), (-3.0, 3.0), (pw, ph));
+        assert!(((x.1 - x.0) / pw - (y.1 - y.0) / ph).abs() < 1e-12 && y == (-3.0, 3.0));
     }
 
     #[test]

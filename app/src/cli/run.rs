@@ -282,7 +282,7 @@ impl SceneVisitor for Runner<'_> {
                 track.e0.unwrap_or(f64::NAN)
             );
         }
-        let mut pictures = super::pictures::draw_run(&csv.sample, &stem, &setup.name, method.name());
+        let mut pictures = super::pictures::draw_run(&csv.sample, &stem, (&setup.name, &setup.units), method.name());
         if let (Some((c, count)), Some(section)) = (&crossings, &section) {
             let _ = writeln!(
                 std::io::stderr(),

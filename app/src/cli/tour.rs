@@ -4,12 +4,12 @@
 use super::choice;
 use super::pipeline::{deviation, Options, SceneRun, Steps};
 use super::plot::{draw, Chart, Scale, Series};
+use super::tour_page::{self, Picture, Section};
 use anyhow::Context;
-use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 use stormer::driver::Recorder;
 use stormer::{Error, State};
-use stormer_app::scenes::{self, Scene, SceneVisitor, Setup};
+use stormer_app::scenes::{self, Scene, SceneVisitor, Setup, Units};
 
 /// Arguments of `stormer tour`.
 #[derive(Debug, clap::Args)]
@@ -38,6 +38,8 @@ struct Trace {
     exact_end: Option<Vec<f64>>,
     /// The exact state at the start.
     exact_start: Option<Vec<f64>>,
+    /// The units the scene names.
+    units: Units,
 }
 
 impl Trace {
@@ -71,6 +73,15 @@ impl Trace {
             .into_iter()
             .map(|(t, d)| (t, d.abs() / e0))
             .collect()
+    }
+
+    /// The mean x-y velocity between two states `span` apart.
+    fn drift(&self, first: &[f64], last: &[f64], span: f64) -> (f64, f64) {
+        let j = |n: &str| self.names.iter().position(|c| c == n).unwrap_or(0);
+        (
+            (last[j("x")] - first[j("x")]) / span,
+            (last[j("y")] - first[j("y")]) / span,
+        )
     }
 
     fn max_abs_de(&self) -> f64 {
@@ -155,6 +166,7 @@ impl SceneVisitor for Sim<'_> {
             stop,
             exact_end: run.exact_at_end(&outcome),
             exact_start: setup.exact(run.t0()).map(|s| s.as_slice().to_vec()),
+            units: setup.units.clone(),
         })
     }
 }
@@ -196,22 +208,9 @@ fn sim_alpha(
         .with_context(|| format!("tour: {method} on {scene}"))
 }
 
-/// A picture of the report, with what the test checks in it.
-struct Picture {
-    file: String,
-    title: String,
-    x_label: String,
-    y_label: String,
-    legend: Vec<String>,
-}
-
-/// One experiment of the report.
-struct Section {
-    title: String,
-    verdict: String,
-    /// Markdown table (header row first).
-    table: Vec<Vec<String>>,
-    pictures: Vec<Picture>,
+/// A chart of positions in a plane at equal scales, the axes `x` and `y` in `units`.
+fn plane(title: &str, units: &Units, (x, y): (&str, &str)) -> Chart {
+    Chart::new(title, units.position(x), units.position(y)).equal_aspect()
 }
 
 /// Draws a picture into `out` and describes it.
@@ -223,7 +222,63 @@ fn picture(out: &Path, file: &str, chart: &Chart, series: &[Series]) -> anyhow::
         x_label: chart.x_label.clone(),
         y_label: chart.y_label.clone(),
         legend: series.iter().map(|s| s.label.clone()).collect(),
+        caption: caption(file).to_string(),
     })
+}
+
+/// What a picture of the tour shows and what to look at, by its file name.
+fn caption(file: &str) -> &'static str {
+    match file {
+        "pendulum-energy.svg" => {
+            "The relative energy error on a log scale. Look at the trend: explicit Euler's error \
+            grows with time (it gains energy at every step), Stormer-Verlet's oscillates at a \
+            level that does not grow."
+        }
+        "pendulum-theta.svg" => {
+            "The angle: Stormer-Verlet swings between -pi/4 and pi/4 as the pendulum does; \
+            explicit Euler's swings widen as its energy grows."
+        }
+        "kepler-energy.svg" => {
+            "The relative energy error on a log scale. RK4's is smaller over this span but grows \
+            steadily; velocity Verlet's is larger but comes back at every orbit (the spikes are \
+            the close approaches) and does not grow."
+        }
+        "kepler-orbit.svg" => {
+            "The light body's orbit, equal scales on both axes: the 43 revolutions lie on one \
+            ellipse for both methods; a band instead of a line would show the orbit turning or \
+            shrinking."
+        }
+        "solar-energy.svg" => {
+            "The relative error of the Hamiltonian on a log scale, four methods. Explicit Euler's \
+            climbs; the three symplectic methods stay in a band, each one lower than the last \
+            (order 1, 2, 4)."
+        }
+        "coulomb-xy.svg" => {
+            "The particle's path seen along the field (equal scales): it falls towards the \
+            centre, and the field turns it into loops around it."
+        }
+        "exb-error.svg" => {
+            "The distance to the exact solution on a log scale, six schemes: lower is better. \
+            Explicit and implicit Euler's errors grow with every gyration; Euler-Cromer's comes \
+            back once per gyration; theta = 1/2, Boris and RK2 stay lowest."
+        }
+        "exb-xy.svg" => {
+            "The orbits seen from the guiding centre, moving with the exact drift velocity vd = \
+            E x B / |B|^2 (equal scales): the exact orbit is one circle. A scheme whose orbit \
+            spirals out or in, or leaves the circle, gains or loses gyration energy or drifts \
+            at the wrong speed."
+        }
+        "free-kick-flight.svg" => {
+            "The ball's path in the vertical plane at both steps (equal scales): the two curves \
+            lie on each other, so dt = 0.1 is already fine for RK4; the flight ends where the \
+            ball lands."
+        }
+        "coulomb-energy.svg" => {
+            "The relative energy error on a log scale: it oscillates (the dips are where the \
+            error changes sign) without a trend over t = 100."
+        }
+        _ => work_precision_caption(file),
+    }
 }
 
 fn sci(x: f64) -> String {
@@ -242,15 +297,19 @@ fn drift_word(t: &Trace) -> &'static str {
 fn pendulum(out: &Path) -> anyhow::Result<Section> {
     let runs = [("explicit Euler", "euler"), ("Stormer-Verlet", "stormer_verlet_dkd")];
     let traces = sims("pendulum", &runs, 0.01, 60.0, 10)?;
-    let series: Vec<Series> = traces.iter().map(|(l, t)| Series::line(*l, t.energy_error())).collect();
-    let chart = Chart::new("pendulum, h = 0.01: energy error against time", "t", "E - E0");
-    let energy = picture(out, "pendulum-energy.svg", &chart, &series)?;
     let theta: Vec<Series> = traces
         .iter()
         .map(|(l, t)| Series::line(*l, t.rows.iter().map(|r| r.0).zip(t.column("theta")).collect()))
         .collect();
-    let chart = Chart::new("pendulum, h = 0.01: angle against time", "t", "theta");
+    let units = &traces[0].1.units;
+    let chart = Chart::new(
+        "pendulum, h = 0.01: angle against time",
+        units.t(),
+        Units::label("theta", units.angle.as_ref()),
+    );
     let angle = picture(out, "pendulum-theta.svg", &chart, &theta)?;
+    let title = ("pendulum, h = 0.01: energy error against time", 'E');
+    let energy = relative_energy_picture(out, "pendulum-energy.svg", title, &traces)?;
     let (euler, verlet) = (&traces[0].1, &traces[1].1);
     let euler_end = euler.energy_error().last().map_or(f64::NAN, |p| p.1);
     let upward = if euler_end > 0.0 { "upward" } else { "downward" };
@@ -307,25 +366,30 @@ fn max_rel(t: &Trace) -> f64 {
     t.max_abs_de() / t.e0().abs()
 }
 
-/// The picture of each run's `|E - E0| / |E0|` against time, on a log scale.
-fn relative_energy_picture(out: &Path, file: &str, chart: Chart, traces: &[(&str, Trace)]) -> anyhow::Result<Picture> {
+/// The picture `file`, titled `title`, of each run's relative energy error `|E - E0| / |E0|`
+/// against time on a log scale (`H` instead of `E` for a Hamiltonian called so).
+fn relative_energy_picture(
+    out: &Path,
+    file: &str,
+    (title, e): (&str, char),
+    traces: &[(&str, Trace)],
+) -> anyhow::Result<Picture> {
     let series: Vec<Series> = traces
         .iter()
         .map(|(l, t)| Series::line(*l, t.relative_energy_error()))
         .collect();
-    picture(out, file, &chart.scales(Scale::Linear, Scale::Log), &series)
+    let time = traces.first().map_or_else(|| "t".into(), |t| t.1.units.t());
+    let chart = Chart::new(title, time, format!("|{e} - {e}0| / |{e}0|")).scales(Scale::Linear, Scale::Log);
+    picture(out, file, &chart, &series)
 }
 
 /// Kepler: RK4 against velocity Verlet at h = 0.01 over 100 years (about 43 orbits).
 fn kepler(out: &Path) -> anyhow::Result<Section> {
     let runs = [("RK4", "rk4"), ("velocity Verlet", "velocity_verlet_kdk")];
     let traces = sims("kepler", &runs, 0.01, 100.0, 8)?;
-    let chart = Chart::new(
-        "Kepler, h = 0.01 yr: energy error against time",
-        "t (years)",
-        "|E - E0| / |E0|",
-    );
-    let energy = relative_energy_picture(out, "kepler-energy.svg", chart, &traces)?;
+    let units = &traces[0].1.units;
+    let title = ("Kepler, h = 0.01 yr: energy error against time", 'E');
+    let energy = relative_energy_picture(out, "kepler-energy.svg", title, &traces)?;
     // the light body's orbit (the second body's x and y, whatever the components are called)
     let orbit: Vec<Series> = traces
         .iter()
@@ -340,7 +404,7 @@ fn kepler(out: &Path) -> anyhow::Result<Section> {
             Series::line(*l, t.column(&body).into_iter().zip(t.column(&ybody)).collect())
         })
         .collect();
-    let chart = Chart::new("Kepler, h = 0.01 yr: orbit of the light body", "x (AU)", "y (AU)").equal_aspect();
+    let chart = plane("Kepler, h = 0.01 yr: orbit of the light body", units, ("x", "y"));
     let orbits = picture(out, "kepler-orbit.svg", &chart, &orbit)?;
     let (rk4, verlet) = (&traces[0].1, &traces[1].1);
     let verdict = format!(
@@ -369,12 +433,8 @@ fn solar(out: &Path) -> anyhow::Result<Section> {
         ("triple jump (order 4)", "triple_jump4"),
     ];
     let traces = sims("outer-solar-system", &runs, 10.0, 40000.0, 10)?;
-    let chart = Chart::new(
-        "outer solar system, dt = 10 days: energy error",
-        "t (days)",
-        "|H - H0| / |H0|",
-    );
-    let energy = relative_energy_picture(out, "solar-energy.svg", chart, &traces)?;
+    let title = ("outer solar system, dt = 10 days: energy error", 'H');
+    let energy = relative_energy_picture(out, "solar-energy.svg", title, &traces)?;
     let [e, s, v, c] = [0, 1, 2, 3].map(|k| &traces[k].1);
     let smaller = |a: &Trace, b: &Trace| {
         if max_rel(a) < max_rel(b) {
@@ -409,26 +469,26 @@ fn coulomb(out: &Path) -> anyhow::Result<Section> {
     let t = sim("coulomb-magnetic", method, None, None, None)?;
     let label = "magnetic Stormer-Verlet";
     let path = Series::line(label, t.column("x").into_iter().zip(t.column("y")).collect());
-    let chart = Chart::new("coulomb-magnetic, h = 0.01: trajectory, x-y plane", "x", "y").equal_aspect();
+    let chart = plane(
+        "coulomb-magnetic, h = 0.01: trajectory, x-y plane",
+        &t.units,
+        ("x", "y"),
+    );
     let traj = picture(out, "coulomb-xy.svg", &chart, &[path])?;
-    let e: Vec<(f64, f64)> = t.rows.iter().filter_map(|r| r.2.map(|e| (r.0, e))).collect();
-    let chart = Chart::new("coulomb-magnetic, h = 0.01: energy against time", "t", "E");
-    let energy = picture(out, "coulomb-energy.svg", &chart, &[Series::line(label, e)])?;
+    let title = ("coulomb-magnetic, h = 0.01: energy error against time", 'E');
+    let traces = [(label, t)];
+    let energy = relative_energy_picture(out, "coulomb-energy.svg", title, &traces)?;
+    let t = &traces[0].1;
     let e0 = t.e0();
     let verdict = format!(
         "E(0) = {e0:.6} (-1/sqrt(3) = {:.6}); magnetic Stormer-Verlet's energy {} over t = 100 (max |dE/E0| = {}).",
         -1.0 / 3f64.sqrt(),
-        drift_word(&t),
-        sci(max_rel(&t)),
+        drift_word(t),
+        sci(max_rel(t)),
     );
     let table = vec![
         vec!["method".into(), "E(0)".into(), "max abs dE/E0".into(), "energy".into()],
-        vec![
-            label.into(),
-            format!("{e0:.9}"),
-            sci(max_rel(&t)),
-            drift_word(&t).into(),
-        ],
+        vec![label.into(), format!("{e0:.9}"), sci(max_rel(t)), drift_word(t).into()],
     ];
     Ok(Section {
         title: "Charged particle: Coulomb centre plus magnetic field".into(),
@@ -461,34 +521,45 @@ fn exb(out: &Path) -> anyhow::Result<Section> {
             )
         })
         .collect();
+    let units = &traces[0].1.units;
     let chart = Chart::new(
         "E x B drift, h = 0.01: error against the exact solution",
-        "t",
+        units.t(),
         "max |y - y_exact|",
     )
     .scales(Scale::Linear, Scale::Log);
     let errors = picture(out, "exb-error.svg", &chart, &series)?;
+    // the orbits in the frame that moves with the exact drift: a cycloid becomes a circle,
+    // so that the schemes' differences are not hidden by a 30-long, 1-wide picture
     let paths: Vec<Series> = traces
         .iter()
-        .map(|(l, t)| Series::line(*l, t.column("x").into_iter().zip(t.column("y")).collect()))
+        .map(|(l, t)| {
+            let (vx, vy) = exact_drift(t).unwrap_or((0.0, 0.0));
+            let points = t
+                .rows
+                .iter()
+                .map(|r| r.0)
+                .zip(t.column("x").into_iter().zip(t.column("y")))
+                .map(|(time, (x, y))| (x - vx * time, y - vy * time))
+                .collect();
+            Series::line(*l, points)
+        })
         .collect();
-    let chart = Chart::new("E x B drift, h = 0.01: trajectories, x-y plane", "x", "y");
+    let chart = plane(
+        "E x B drift, h = 0.01: orbits about the exact guiding centre",
+        units,
+        ("x - vd_x t", "y - vd_y t"),
+    );
     let traj = picture(out, "exb-xy.svg", &chart, &paths)?;
     let max_err = |t: &Trace| t.rows.iter().filter_map(|r| r.3).fold(0.0, f64::max);
     let mut ranked: Vec<(&str, f64)> = traces.iter().map(|(l, t)| (*l, max_err(t))).collect();
     ranked.sort_by(|a, b| a.1.total_cmp(&b.1));
     // the guiding centre's drift over the whole gyrations, against the exact one
     let boris = &traces[5].1;
-    let drift = |first: &[f64], last: &[f64], t: f64| {
-        let j = |n: &str| boris.names.iter().position(|c| c == n).unwrap_or(0);
-        ((last[j("x")] - first[j("x")]) / t, (last[j("y")] - first[j("y")]) / t)
-    };
     let (first, last) = (boris.rows.first(), boris.rows.last());
-    let drift_text = match (first, last, &boris.exact_start, &boris.exact_end) {
-        (Some(f), Some(l), Some(es), Some(ee)) => {
-            let span = l.0 - f.0;
-            let (bx, by) = drift(&f.1, &l.1, span);
-            let (ex, ey) = drift(es, ee, span);
+    let drift_text = match (first, last, exact_drift(boris)) {
+        (Some(f), Some(l), Some((ex, ey))) => {
+            let (bx, by) = boris.drift(&f.1, &l.1, l.0 - f.0);
             format!("; Boris's guiding centre drifts at ({bx:.4}, {by:.4}), the exact E x B / |B|^2 drift at ({ex:.4}, {ey:.4})")
         }
         _ => String::new(),
@@ -510,6 +581,13 @@ fn exb(out: &Path) -> anyhow::Result<Section> {
     })
 }
 
+/// The exact solution's mean velocity in the x-y plane over the run (whole gyrations: the
+/// guiding centre's drift), when the scene has one.
+fn exact_drift(t: &Trace) -> Option<(f64, f64)> {
+    let (first, last) = (t.rows.first()?, t.rows.last()?);
+    Some(t.drift(t.exact_start.as_ref()?, t.exact_end.as_ref()?, last.0 - first.0))
+}
+
 /// Free kick at dt = 0.1 and 0.0125: flight and landing point.
 fn free_kick(out: &Path) -> anyhow::Result<Section> {
     let mut traces = Vec::new();
@@ -525,7 +603,8 @@ fn free_kick(out: &Path) -> anyhow::Result<Section> {
             )
         })
         .collect();
-    let chart = Chart::new("free kick, RK4: the flight", "x (m)", "z (m)").equal_aspect();
+    let units = &traces[0].1.units;
+    let chart = plane("free kick, RK4: the flight", units, ("x", "z"));
     let flight = picture(out, "free-kick-flight.svg", &chart, &series)?;
     let mut table = vec![vec!["dt".into(), "landing".into(), "energy E(end) - E(0)".into()]];
     let mut landings = Vec::new();
@@ -580,7 +659,17 @@ fn work_precision(out: &Path) -> anyhow::Result<Section> {
     let mut entries: Vec<PathBuf> = std::fs::read_dir(&dir)?
         .filter_map(|e| e.ok().map(|e| e.path()))
         .collect();
-    entries.sort();
+    // the diagrams in the order they are read: evaluations, seconds, energy
+    entries.sort_by_key(|p| {
+        let name = p.to_string_lossy();
+        (
+            ["-evaluations.svg", "-seconds.svg"]
+                .iter()
+                .position(|k| name.ends_with(k))
+                .unwrap_or(2),
+            p.clone(),
+        )
+    });
     for path in entries {
         let name = path
             .file_name()
@@ -595,13 +684,14 @@ fn work_precision(out: &Path) -> anyhow::Result<Section> {
                 x_label: String::new(),
                 y_label: String::new(),
                 legend: vec![],
+                caption: caption(&name).into(),
             });
         } else if name.ends_with(".md") && table.is_empty() {
             let text = stormer::input::read_text(&path).map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
             table = text
                 .lines()
                 .filter(|l| l.starts_with('|') && !l.contains("---"))
-                .map(|l| l.trim_matches('|').split('|').map(|c| c.trim().to_string()).collect())
+                .map(markdown_cells)
                 .collect();
         }
     }
@@ -614,11 +704,27 @@ fn work_precision(out: &Path) -> anyhow::Result<Section> {
     })
 }
 
-fn html_escape(s: &str) -> String {
-    s.replace('&', "&amp;")
-        .replace('<', "&lt;")
-        .replace('>', "&gt;")
-        .replace('"', "&quot;")
+/// What a diagram of `stormer compare` shows, by its file name.
+fn work_precision_caption(file: &str) -> &'static str {
+    if file.ends_with("-evaluations.svg") {
+        "The error at the end against the force evaluations, both on log scales: lower left \
+         is better, and a line's slope is minus the method's order."
+    } else if file.ends_with("-seconds.svg") {
+        "The error at the end against the run time: the same comparison in seconds (the \
+         times of one short run, so they scatter)."
+    } else {
+        "The largest relative energy error against the force evaluations, log scales."
+    }
+}
+
+/// The cells of a markdown table row, `\|` read as `|`.
+fn markdown_cells(line: &str) -> Vec<String> {
+    let inner = line.trim().trim_start_matches('|').trim_end_matches('|');
+    inner
+        .replace("\\|", "\u{0}")
+        .split('|')
+        .map(|c| c.replace('\u{0}', "|").trim().to_string())
+        .collect()
 }
 
 /// `stormer tour`.
@@ -639,57 +745,8 @@ pub fn tour(args: &TourArgs) -> anyhow::Result<()> {
         eprintln!("tour: {name}");
         sections.push(f(out)?);
     }
-    let mut html = String::from(
-        "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>stormer tour</title>\n</head>\n<body>\n<h1>stormer tour</h1>\n",
-    );
-    let mut md = String::from(
-        "# stormer tour\n\nThe experiments of SCENES.md, each with its verdict computed from the runs.\n\n",
-    );
-    for s in &sections {
-        let _ = writeln!(
-            html,
-            "<h2>{}</h2>\n<p class=\"verdict\">{}</p>",
-            html_escape(&s.title),
-            html_escape(&s.verdict)
-        );
-        let _ = writeln!(md, "## {}\n\n**Verdict:** {}\n", s.title, s.verdict);
-        if let Some((head, body)) = s.table.split_first() {
-            html.push_str("<table border=\"1\">\n<tr>");
-            for h in head {
-                let _ = write!(html, "<th>{}</th>", html_escape(h));
-            }
-            html.push_str("</tr>\n");
-            for row in body {
-                html.push_str("<tr>");
-                for c in row {
-                    let _ = write!(html, "<td>{}</td>", html_escape(c));
-                }
-                html.push_str("</tr>\n");
-            }
-            html.push_str("</table>\n");
-            let _ = writeln!(md, "| {} |", head.join(" | "));
-            let _ = writeln!(md, "|{}", "---|".repeat(head.len()));
-            for row in body {
-                let _ = writeln!(md, "| {} |", row.join(" | "));
-            }
-            md.push('\n');
-        }
-        for p in &s.pictures {
-            let _ = writeln!(
-                html,
-                "<p><img src=\"{}\" alt=\"{}\" data-x=\"{}\" data-y=\"{}\" data-legend=\"{}\"></p>",
-                html_escape(&p.file),
-                html_escape(&p.title),
-                html_escape(&p.x_label),
-                html_escape(&p.y_label),
-                html_escape(&p.legend.join(";")),
-            );
-            let _ = writeln!(md, "![{}]({})\n", p.title, p.file);
-        }
-    }
-    html.push_str("</body>\n</html>\n");
-    std::fs::write(out.join("index.html"), html)?;
-    std::fs::write(out.join("summary.md"), md)?;
+    std::fs::write(out.join("index.html"), tour_page::html(&sections))?;
+    std::fs::write(out.join("summary.md"), tour_page::markdown(&sections))?;
     for s in &sections {
         println!("{}: {}", s.title, s.verdict);
     }

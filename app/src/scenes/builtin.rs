@@ -307,6 +307,30 @@ mod tests {
     }
 
     #[test]
+    fn units_are_read_for_the_axes_and_checked() {
+        let text = format!("{GOOD}[units]\ntime = \"s\"\nlength = \"m\"\n");
+        let AnyScene::DampedOscillator(s) = parse(&text, "t.toml", "t").unwrap() else {
+            panic!("model")
+        };
+        assert_eq!((s.units.t(), s.units.position("x")), ("t (s)".into(), "x (m)".into()));
+        let AnyScene::DampedOscillator(s) = parse(GOOD, "t.toml", "t").unwrap() else {
+            panic!("model")
+        };
+        assert_eq!(s.units.t(), "t", "no unit, no parentheses");
+        let message = parse(&format!("{GOOD}[units]\nmass = \"kg\"\n"), "t.toml", "t")
+            .unwrap_err()
+            .to_string();
+        assert!(
+            message.contains("line 14") && message.contains("unknown field `mass`"),
+            "{message}"
+        );
+        let AnyScene::NBody(kepler) = load("kepler").unwrap() else {
+            panic!("model")
+        };
+        assert_eq!(kepler.units.position("y"), "y (AU)");
+    }
+
+    #[test]
     fn missing_parameters_are_named() {
         let text = GOOD.replace("[parameters]\nw0 = 2.0\nQ = 1.0\n", "");
         let message = parse(&text, "t.toml", "t").unwrap_err().to_string();

@@ -82,6 +82,39 @@ pub struct RunSettings {
     pub every: u64,
 }
 
+/// The units a scene file names (its optional `[units]` table), for the pictures' axis
+/// labels: `t (years)`, `x (AU)`. A unit left out is not printed.
+#[derive(Debug, Clone, Default, PartialEq, Eq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Units {
+    /// Unit of time (`"years"`, `"s"`, `"sqrt(l/g)"`); a key left out reads as `None`.
+    pub time: Option<String>,
+    /// Unit of the positions (`"AU"`, `"m"`).
+    pub length: Option<String>,
+    /// Unit of the angles (`"rad"`).
+    pub angle: Option<String>,
+}
+
+impl Units {
+    /// `name (unit)`, or `name` alone when the unit is not given.
+    pub fn label(name: &str, unit: Option<&String>) -> String {
+        match unit.map(|u| u.trim()).filter(|u| !u.is_empty()) {
+            Some(unit) => format!("{name} ({unit})"),
+            None => name.to_string(),
+        }
+    }
+
+    /// The axis label of time: `t (years)`.
+    pub fn t(&self) -> String {
+        Self::label("t", self.time.as_ref())
+    }
+
+    /// The axis label of a position coordinate: `x (AU)`.
+    pub fn position(&self, name: &str) -> String {
+        Self::label(name, self.length.as_ref())
+    }
+}
+
 /// A scene file as written, for the model `S`: unknown keys anywhere are errors.
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -97,6 +130,8 @@ struct SceneFile<P, I> {
     #[serde(default = "none", alias = "bodies", alias = "particles")]
     initial: Option<I>,
     run: RunTable,
+    #[serde(default)]
+    units: Units,
 }
 
 fn none<P>() -> Option<P> {
@@ -178,5 +213,6 @@ pub(super) fn parse_as<S: Scene>(src: &Source<'_>, name: &str) -> Result<Setup<S
         model,
         y0,
         run,
+        units: file.units,
     })
 }

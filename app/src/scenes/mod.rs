@@ -58,7 +58,7 @@ pub use builtin::{builtin, load, parse, source, BuiltinScene, SceneSource, BUILT
 pub use central_force_file::{CentralForceInitial, CentralForceParameters};
 pub use charged_file::{BottleTable, ChargedParameters, ChargedScene, ParticleEntry};
 pub use damped::{DampedOscillator, DampedParameters};
-pub use file::{Number, RunSettings, Source};
+pub use file::{Number, RunSettings, Source, Units};
 pub use free_kick::{KickInitial, SpinningBall, SpinningBallParameters};
 pub use harmonic::{Harmonic, HarmonicParameters, OscillatorInitial};
 pub use henon_heiles::{HenonHeiles, HenonHeilesInitial, HenonHeilesParameters, DEFAULT_ENERGY};
@@ -162,6 +162,8 @@ pub struct Setup<S: Scene> {
     pub y0: S::State,
     /// How to run it unless told otherwise.
     pub run: RunSettings,
+    /// The units its file names (`[units]`), for the pictures.
+    pub units: Units,
 }
 
 impl<S: Scene> Setup<S> {
