@@ -47,6 +47,7 @@
 
 pub mod conditions;
 pub mod dense;
+mod double_double;
 pub mod expr;
 mod forest;
 mod lie;

@@ -13,6 +13,8 @@
 
 use std::collections::HashMap;
 
+use crate::double_double::Scalar;
+
 /// A letter, by its index in the alphabet (its order in the lexicographic order of words).
 pub(crate) type Letter = u8;
 
@@ -98,12 +100,15 @@ impl Words {
     }
 
     /// The product `a b` of two series, truncated at the words below `end`.
-    pub(crate) fn product(&self, a: &[f64], b: &[f64], end: usize) -> Vec<f64> {
-        let mut c = vec![0.0; end];
+    pub(crate) fn product<T: Scalar>(&self, a: &[T], b: &[T], end: usize) -> Vec<T> {
+        let mut c = vec![T::of(0.0); end];
         for w in 0..end {
-            let mut sum = a[w] * b[0] + if w == 0 { 0.0 } else { a[0] * b[w] };
+            let mut sum = a[w] * b[0];
+            if w != 0 {
+                sum = sum + a[0] * b[w];
+            }
             for &(u, v) in &self.splits[self.split_starts[w]..self.split_starts[w + 1]] {
-                sum += a[u as usize] * b[v as usize];
+                sum = sum + a[u as usize] * b[v as usize];
             }
             c[w] = sum;
         }
@@ -112,9 +117,9 @@ impl Words {
 
     /// `exp(sum_x z_x x)` for one coefficient `z_x` per letter: the word `x_1 .. x_m` has
     /// coefficient `z_x1 ... z_xm / m!`.
-    pub(crate) fn exp_of_letters(&self, z: &[f64], end: usize) -> Vec<f64> {
-        let mut e = vec![0.0; end];
-        e[0] = 1.0;
+    pub(crate) fn exp_of_letters<T: Scalar>(&self, z: &[T], end: usize) -> Vec<T> {
+        let mut e = vec![T::of(0.0); end];
+        e[0] = T::of(1.0);
         for w in 1..end {
             let word = &self.words[w];
             // the word without its last letter: the prefix of its last split
@@ -124,7 +129,7 @@ impl Words {
                 self.splits[self.split_starts[w + 1] - 1].0 as usize
             };
             let last = usize::from(word[word.len() - 1]);
-            e[w] = e[head] * z[last] / word.len() as f64;
+            e[w] = (e[head] * z[last]).over(word.len() as f64);
         }
         e
     }
@@ -132,17 +137,18 @@ impl Words {
     /// `log p` for a series with constant term 1, truncated at weight `max_weight`, as
     /// `sum_k (-1)^(k+1) (p - 1)^k / k`; `magnitude` gives the same sum of magnitudes for
     /// the magnitudes of `p` (every term added).
-    pub(crate) fn log(&self, p: &[f64], max_weight: usize, magnitude: bool) -> Vec<f64> {
+    pub(crate) fn log<T: Scalar>(&self, p: &[T], max_weight: usize, magnitude: bool) -> Vec<T> {
         let end = self.end_of(max_weight);
         let mut x = p[..end].to_vec();
-        x[0] = 0.0;
+        x[0] = T::of(0.0);
         let mut log = x.clone();
         let mut power = x.clone();
         for k in 2..=max_weight {
             power = self.product(&power, &x, end);
-            let factor = if magnitude || k % 2 == 1 { 1.0 } else { -1.0 } / k as f64;
+            let add = magnitude || k % 2 == 1;
             for (l, q) in log.iter_mut().zip(&power) {
-                *l += factor * q;
+                let term = q.over(k as f64);
+                *l = if add { *l + term } else { *l - term };
             }
         }
         log
@@ -236,15 +242,15 @@ impl Lyndon {
     /// The coordinates `lambda` of a Lie series `l` (over words) in the Lyndon basis, for
     /// the Lyndon words below `end`: `l[w_i] = sum_j lambda_j P(w_j)[w_i]` solved by forward
     /// substitution. With `magnitude`, the same with every term added (for magnitudes).
-    pub(crate) fn coordinates(&self, l: &[f64], end: usize, magnitude: bool) -> Vec<f64> {
-        let mut lambda = vec![0.0; end];
+    pub(crate) fn coordinates<T: Scalar>(&self, l: &[T], end: usize, magnitude: bool) -> Vec<T> {
+        let mut lambda = vec![T::of(0.0); end];
         for i in 0..end {
             let mut value = l[self.word_index[i]];
             for &(j, c) in &self.below[i] {
                 if magnitude {
-                    value += c.abs() * lambda[j];
+                    value = value + T::of(c.abs()) * lambda[j];
                 } else {
-                    value -= c * lambda[j];
+                    value = value - T::of(c) * lambda[j];
                 }
             }
             lambda[i] = value;

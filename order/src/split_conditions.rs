@@ -2,9 +2,9 @@
 //!
 //! A splitting step `exp(d_1 A) exp(k_1 B) exp(d_2 A) ...` (`A` the drift's vector field,
 //! `B` the kick's, fractions of `h`) is `exp(h(A + B) + h^2 E_2 + h^3 E_3 + ...)` with each
-//! `E_n` in the free Lie algebra of `A` and `B` ([`crate::lie`]). The method has order `p`
-//! when `sum drift = sum kick = 1` and `E_2 .. E_p` vanish: one condition per Lyndon
-//! bracket, 2, 1, 2, 3, 6, 9, 18, 30, 56, 99 of orders 1 to 10, the dimensions of the free
+//! `E_n` in the free Lie algebra of `A` and `B` (written in its Lyndon basis). The method
+//! has order `p` when `sum drift = sum kick = 1` and `E_2 .. E_p` vanish: one condition per
+//! Lyndon bracket, 2, 1, 2, 3, 6, 9, 18, 30, 56, 99 of orders 1 to 10, the dimensions of the free
 //! Lie algebra ([`OrderClass::General`]).
 //!
 //! With a quadratic kinetic energy (`q'' = F(q)`) every bracket with at least two more `B`
@@ -29,12 +29,15 @@
 //! its bound the tolerance factor times the same sum over the coefficients' magnitudes (the
 //! size of its terms, which bounds its rounding error and the effect of the digits the
 //! coefficients were given with). In the quadratic-kinetic class the conditions are
-//! coordinates of `log P` modulo the ideal, their bound from the magnitudes carried through
-//! the logarithm (larger). Either way, when every earlier condition holds, the value of the
-//! first failing one is the coefficient of its bracket in the leading error term.
+//! coordinates of `log P` modulo the ideal, computed in double-double arithmetic (the
+//! logarithm cancels terms far larger than its result), their bound the same multiple of
+//! the magnitudes of `P` on the brackets' words plus the double-double rounding error.
+//! Either way, when every earlier condition holds, the value of the first failing one is
+//! the coefficient of its bracket in the leading error term.
 
 use std::sync::OnceLock;
 
+use crate::double_double::{DoubleDouble, Scalar};
 use crate::lie::{commutator, Letter, Lyndon, Words};
 use crate::splitting::{Flow, Op, SplitCondition};
 
@@ -194,29 +197,29 @@ impl System {
     /// `exp(sum_x z_x x)` over `factors` (one `z` per letter), first factor first.
     fn evaluate(&self, factors: &[Vec<f64>], max_order: usize, tol: f64) -> Vec<SplitCondition> {
         let max_order = max_order.min(MAX_SPLIT_ORDER);
-        let end = self.words.end_of(max_order);
-        let mut step = vec![0.0; end];
-        step[0] = 1.0;
-        let mut size = step.clone();
-        for z in factors {
-            let magnitudes: Vec<f64> = z.iter().map(|x| x.abs()).collect();
-            step = self.words.product(&step, &self.words.exp_of_letters(z, end), end);
-            size = self
-                .words
-                .product(&size, &self.words.exp_of_letters(&magnitudes, end), end);
-        }
+        let magnitudes: Vec<Vec<f64>> = factors.iter().map(|z| z.iter().map(|x| x.abs()).collect()).collect();
+        let size = self.series::<f64>(&magnitudes, max_order);
         let lyndon_end = self.lyndon.end_of(max_order);
-        let (coordinates, magnitudes) = if self.lie {
+        let on_lyndon_words =
+            |series: &[f64]| -> Vec<f64> { (0..lyndon_end).map(|i| series[self.lyndon.word_index[i]]).collect() };
+        // the coordinates, the magnitude of their terms, and a bound on their rounding error
+        let (coordinates, magnitudes, rounding) = if self.lie {
+            let step = self.series::<DoubleDouble>(factors, max_order);
             let log = self.words.log(&step, max_order, false);
-            let log_size = self.words.log(&size, max_order, true);
+            let lambda = self.lyndon.coordinates(&log, lyndon_end, false);
+            // every term of the logarithm, for the double-double rounding error
+            let carried = self
+                .lyndon
+                .coordinates(&self.words.log(&size, max_order, true), lyndon_end, true);
+            let rounding: Vec<f64> = carried.iter().map(|m| 64.0 * f64::EPSILON.powi(2) * m).collect();
             (
-                self.lyndon.coordinates(&log, lyndon_end, false),
-                self.lyndon.coordinates(&log_size, lyndon_end, true),
+                lambda.iter().map(|x| x.value()).collect(),
+                on_lyndon_words(&size),
+                rounding,
             )
         } else {
-            let at =
-                |series: &[f64]| -> Vec<f64> { (0..lyndon_end).map(|i| series[self.lyndon.word_index[i]]).collect() };
-            (at(&step), at(&size))
+            let step = self.series::<f64>(factors, max_order);
+            (on_lyndon_words(&step), on_lyndon_words(&size), vec![0.0; lyndon_end])
         };
         self.conditions
             .iter()
@@ -227,16 +230,33 @@ impl System {
                     .iter()
                     .map(|&(i, c)| c * (coordinates[i] - self.exact[i]))
                     .sum();
-                let magnitude: f64 = form.terms.iter().map(|&(i, c)| c.abs() * magnitudes[i]).sum();
+                let bound: f64 = form
+                    .terms
+                    .iter()
+                    .map(|&(i, c)| c.abs() * (tol * magnitudes[i] + rounding[i]))
+                    .sum();
                 SplitCondition {
                     order: form.order,
                     text: form.text.clone(),
                     expected: form.expected,
                     value: form.expected + deviation,
-                    bound: tol * magnitude,
+                    bound,
                 }
             })
             .collect()
+    }
+
+    /// The step's series up to `max_order`: the product of `exp(sum_x z_x x)` over
+    /// `factors`, first factor first.
+    fn series<T: Scalar>(&self, factors: &[Vec<f64>], max_order: usize) -> Vec<T> {
+        let end = self.words.end_of(max_order);
+        let mut step = vec![T::of(0.0); end];
+        step[0] = T::of(1.0);
+        for z in factors {
+            let z: Vec<T> = z.iter().map(|&x| T::of(x)).collect();
+            step = self.words.product(&step, &self.words.exp_of_letters(&z, end), end);
+        }
+        step
     }
 }
 
