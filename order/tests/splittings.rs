@@ -346,3 +346,27 @@ fn perturbations_break_only_a_high_order() {
     assert_eq!(algebraic_order(&c), 4);
     assert_eq!(c.iter().find(|c| !c.holds()).unwrap().order, 5);
 }
+
+/// What the macros add to a build: validating all 58 catalog methods at their declared
+/// order and class, in a fresh process (the tables of brackets built on first use), with
+/// this crate compiled as the proc macro runs it (unoptimized, in `cargo test`'s debug
+/// profile as in a release build's). Printed, not asserted.
+#[test]
+fn cost_of_checking_the_catalog() {
+    use stormer_order::splitting::{validate_composition, CompositionSpec};
+    let methods = catalog();
+    let start = std::time::Instant::now();
+    for e in &methods {
+        let valid = if e.gamma.is_empty() {
+            validate_splitting(&splitting(&e.drift, &e.kick, e.order, e.quadratic))
+        } else {
+            validate_composition(&CompositionSpec {
+                gamma: e.gamma.clone(),
+                order: e.order,
+                tolerance: None,
+            })
+        };
+        assert!(valid.is_ok(), "{}: {valid:?}", e.name);
+    }
+    eprintln!("validating the 58 catalog methods: {:?}", start.elapsed());
+}
