@@ -79,6 +79,7 @@ pub fn tableau(input: TokenStream) -> TokenStream {
 ///         // or instead of drift/kick, any word of named flows:
 ///         // word: [kick(1/2), drift(1), kick(1/2)],
 ///         // optional: quadratic_kinetic: true   (an RKN method: needs T quadratic in p)
+///         // optional: generalized_order: [8, 6, 4]   (for H = A + eps B, checked)
 ///         // optional: tolerance: 1e-14
 ///     }
 /// }
@@ -91,7 +92,10 @@ pub fn tableau(input: TokenStream) -> TokenStream {
 /// to 10), or, with `quadratic_kinetic: true`, zero modulo the brackets that vanish for a
 /// quadratic kinetic energy (2, 1, 2, 2, 4, 5, 10, 14, 25, 39). A failure is a compile
 /// error naming the first failing condition, e.g. `order 5 condition [A,[A,[A,[A,B]]]]
-/// fails: got 1.3e-4`. Symmetry and FSAL are derived from the merged word. The expansion is a zero-sized struct
+/// fails: got 1.3e-4`. A `generalized_order` `(p_1, p_2, ..)` (near-integrable `H = A +
+/// eps B`, local error `O(eps h^(p_1+1) + eps^2 h^(p_2+1) + ..)`) checks, in the same class,
+/// every bracket with `k` letters `B` up to order `p_k`. Symmetry and FSAL are derived from
+/// the merged word. The expansion is a zero-sized struct
 /// implementing `stormer::SplittingMethod` whose step is the merged word, unrolled.
 #[proc_macro]
 pub fn splitting(input: TokenStream) -> TokenStream {

@@ -93,6 +93,9 @@ impl OrderClass {
 /// One condition: a linear form on the Lyndon coordinates.
 struct Form {
     order: usize,
+    /// How many `B` (kicks) its bracket has: the power of `eps` of its term when `H = A +
+    /// eps B`.
+    kicks: usize,
     text: String,
     expected: f64,
     /// `(Lyndon index, coefficient)`.
@@ -135,6 +138,7 @@ impl System {
                 let (text, expected) = text(named);
                 conditions.push(Form {
                     order,
+                    kicks: lyndon.words[named].iter().filter(|&&x| x == B).count(),
                     text,
                     expected,
                     terms,
@@ -176,6 +180,7 @@ impl System {
                 };
                 conditions.push(Form {
                     order,
+                    kicks: 0,
                     text,
                     expected,
                     terms: vec![(i, 1.0)],
@@ -196,6 +201,17 @@ impl System {
     /// Every condition of order `<= max_order` for a step that is the product of
     /// `exp(sum_x z_x x)` over `factors` (one `z` per letter), first factor first.
     fn evaluate(&self, factors: &[Vec<f64>], max_order: usize, tol: f64) -> Vec<SplitCondition> {
+        self.evaluate_where(factors, max_order, tol, |_| true)
+    }
+
+    /// [`System::evaluate`] for the conditions `keep(order, kicks)` accepts.
+    fn evaluate_where(
+        &self,
+        factors: &[Vec<f64>],
+        max_order: usize,
+        tol: f64,
+        keep: impl Fn(&Form) -> bool,
+    ) -> Vec<SplitCondition> {
         let max_order = max_order.min(MAX_SPLIT_ORDER);
         let magnitudes: Vec<Vec<f64>> = factors.iter().map(|z| z.iter().map(|x| x.abs()).collect()).collect();
         let size = self.series::<f64>(&magnitudes, max_order);
@@ -224,6 +240,7 @@ impl System {
         self.conditions
             .iter()
             .take_while(|form| form.order <= max_order)
+            .filter(|form| keep(form))
             .map(|form| {
                 let deviation: f64 = form
                     .terms
@@ -406,14 +423,48 @@ pub fn splitting_conditions(word: &[Op], class: OrderClass, max_order: usize, to
         OrderClass::SymmetricComposition => OrderClass::General,
         c => c,
     };
-    let factors: Vec<Vec<f64>> = word
-        .iter()
+    class.system().evaluate(&factors_of(word), max_order, tol)
+}
+
+/// The letters' coefficients of each sub-flow of a splitting word.
+fn factors_of(word: &[Op]) -> Vec<Vec<f64>> {
+    word.iter()
         .map(|op| match op.flow {
             Flow::Drift => vec![op.coef, 0.0],
             Flow::Kick => vec![0.0, op.coef],
         })
-        .collect();
-    class.system().evaluate(&factors, max_order, tol)
+        .collect()
+}
+
+/// The conditions of a generalized order `(p_1, .., p_m)` of a splitting word for
+/// `H = A + eps B` (near-integrable problems: `A` the integrable part, drifts its flow):
+/// the local error is `O(eps h^(p_1+1) + eps^2 h^(p_2+1) + ... + eps^m h^(p_m+1))`, so every
+/// condition whose bracket has `k` letters `B` vanishes up to order `p_k` (`p_m` for `k >= m`),
+/// besides `sum drift_i = 1`. `orders` must be non-empty, non-increasing and at most
+/// [`MAX_SPLIT_ORDER`] (else no condition is returned). `class` as in
+/// [`splitting_conditions`].
+pub fn generalized_conditions(word: &[Op], class: OrderClass, orders: &[usize], tol: f64) -> Vec<SplitCondition> {
+    let valid = !orders.is_empty()
+        && orders.windows(2).all(|w| w[0] >= w[1])
+        && orders.iter().all(|&p| (1..=MAX_SPLIT_ORDER).contains(&p));
+    if !valid {
+        return Vec::new();
+    }
+    let class = match class {
+        OrderClass::SymmetricComposition => OrderClass::General,
+        c => c,
+    };
+    let up_to = |kicks: usize| orders[kicks.clamp(1, orders.len()) - 1];
+    let mut conditions = class
+        .system()
+        .evaluate_where(&factors_of(word), orders[0], tol, |form| {
+            form.order <= up_to(form.kicks)
+        });
+    for c in conditions.iter_mut().filter(|c| c.text.starts_with('[')) {
+        let kicks = c.text.matches('B').count();
+        c.text = format!("{} of the eps^{kicks} term", c.text);
+    }
+    conditions
 }
 
 /// Every condition of the composition weights `gamma` over a symmetric second-order base up

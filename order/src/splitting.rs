@@ -30,7 +30,9 @@ use std::fmt;
 
 use crate::conditions::DEFAULT_TOLERANCE;
 use crate::number::format_significant;
-use crate::split_conditions::{composition_conditions, splitting_conditions, OrderClass, MAX_SPLIT_ORDER};
+use crate::split_conditions::{
+    composition_conditions, generalized_conditions, splitting_conditions, OrderClass, MAX_SPLIT_ORDER,
+};
 
 /// The highest order whose conditions a declaration may claim.
 pub const MAX_COMPOSITION_ORDER: usize = MAX_SPLIT_ORDER;
@@ -77,6 +79,9 @@ pub struct SplittingSpec {
     /// The order needs a quadratic kinetic energy: the conditions checked are those of
     /// [`OrderClass::QuadraticKineticEnergy`] instead of [`OrderClass::General`].
     pub quadratic_kinetic: bool,
+    /// A generalized order `(p_1, p_2, ..)` for `H = A + eps B`, checked with the
+    /// conditions of the class given ([`generalized_conditions`]) besides the order.
+    pub generalized_order: Option<(Vec<usize>, OrderClass)>,
     /// Tolerance factor of the conditions' bounds; `None` means [`DEFAULT_TOLERANCE`].
     pub tolerance: Option<f64>,
 }
@@ -221,6 +226,12 @@ pub enum SplittingError {
         /// Highest checked.
         max: usize,
     },
+    /// A generalized order that is empty, increasing somewhere, or with an entry outside
+    /// `1..=10`.
+    InvalidGeneralizedOrder {
+        /// Declared.
+        orders: Vec<usize>,
+    },
     /// The tolerance is negative, infinite or NaN.
     InvalidTolerance {
         /// Declared.
@@ -242,6 +253,10 @@ impl fmt::Display for SplittingError {
             SplittingError::OrderTooHigh { order, max } => write!(
                 f,
                 "order {order} is above {max}, the highest order whose conditions are checked"
+            ),
+            SplittingError::InvalidGeneralizedOrder { orders } => write!(
+                f,
+                "generalized order {orders:?} must be non-empty, non-increasing, with entries from 1 to {MAX_SPLIT_ORDER}"
             ),
             SplittingError::InvalidTolerance { tolerance } => {
                 write!(f, "tolerance {tolerance} is not a finite non-negative number")
@@ -377,7 +392,18 @@ pub fn validate_splitting(spec: &SplittingSpec) -> Result<ValidSplitting, Splitt
     } else {
         OrderClass::General
     };
-    finish(spec.drift.clone(), spec.kick.clone(), None, spec.order, class, tol)
+    let mut valid = finish(spec.drift.clone(), spec.kick.clone(), None, spec.order, class, tol)?;
+    if let Some((orders, class)) = &spec.generalized_order {
+        let conditions = generalized_conditions(&valid.word, *class, orders, tol);
+        if conditions.is_empty() {
+            return Err(SplittingError::InvalidGeneralizedOrder { orders: orders.clone() });
+        }
+        if let Some(failed) = conditions.iter().find(|c| !c.holds()) {
+            return Err(SplittingError::Condition(failed.clone()));
+        }
+        valid.conditions.extend(conditions);
+    }
+    Ok(valid)
 }
 
 fn check_order(order: usize) -> Result<(), SplittingError> {

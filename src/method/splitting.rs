@@ -44,6 +44,8 @@ pub struct SplittingData {
     pub gamma: Option<&'static [f64]>,
     /// The order needs a quadratic kinetic energy (Runge-Kutta-Nystrom methods).
     pub requires_quadratic_kinetic: bool,
+    /// The generalized order `(p_1, p_2, ..)` for `H = A + eps B` the declaration checked.
+    pub generalized_order: Option<&'static [usize]>,
     /// Force evaluations per step, after FSAL reuse.
     pub stages: usize,
     /// The tolerance factor of the checks, when the declaration set one.
@@ -145,6 +147,7 @@ impl Splitting {
             kick: kick.to_vec(),
             order,
             quadratic_kinetic: requires_quadratic_kinetic,
+            generalized_order: None,
             tolerance: None,
         };
         Self::from_spec(name.into(), &spec, requires_quadratic_kinetic)
@@ -215,6 +218,14 @@ impl Splitting {
                     kick: data.kick.to_vec(),
                     order: data.order,
                     quadratic_kinetic: data.requires_quadratic_kinetic,
+                    generalized_order: data.generalized_order.map(|orders| {
+                        let class = if data.requires_quadratic_kinetic {
+                            OrderClass::QuadraticKineticEnergy
+                        } else {
+                            OrderClass::General
+                        };
+                        (orders.to_vec(), class)
+                    }),
                     tolerance: data.tolerance,
                 },
                 data.requires_quadratic_kinetic,
