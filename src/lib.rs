@@ -36,8 +36,8 @@ pub mod diagnostics {
 pub use flows::{Admits, QuadraticKinetic, Splittable};
 pub use hamiltonian::{Hamiltonian, SecondOrder};
 pub use method::{
-    ButcherMethod, ExplicitMethod, Flags, Method, MethodInfo, Splitting, SplittingData, SplittingMethod, Tableau,
-    TableauData,
+    AlgebraicOrders, ButcherMethod, ExplicitMethod, Flags, Method, MethodInfo, Splitting, SplittingData,
+    SplittingMethod, Tableau, TableauData,
 };
 pub use problem::Problem;
 pub use real::{lit, to_f64, Real};

@@ -228,3 +228,46 @@ fn every_compiled_splitting_matches_the_data_file() {
         );
     }
 }
+
+/// A method file's `generalized_order` (for `H = A + eps B`) is checked at load, in the
+/// class the file gives: the catalog's 14 near-integrable methods pass (the test above
+/// loads them), SABA2 claiming SABA3's `(6, 2)` fails an `eps` condition of order 5, and
+/// ABAH844 claiming ABAH864's `(8, 6, 4)` an `eps^2` one.
+#[test]
+fn generalized_orders_are_checked_at_load() {
+    use stormer::Splitting;
+    let saba2 = r#"
+        name = "saba2_as_saba3"
+        class = "near_integrable"
+        order = 2
+        generalized_order = [6, 2]
+        drift = ["0.2113248654051871177454256097490212721762", "0.5773502691896257645091487805019574556476", "0.2113248654051871177454256097490212721762"]
+        kick = ["1/2", "1/2", "0"]
+    "#;
+    let err = Splitting::from_toml_str(saba2, "inline").unwrap_err().to_string();
+    assert!(
+        err.contains("order 5 condition [A,[A,[A,[A,B]]]] of the eps^1 term fails"),
+        "{err}"
+    );
+    let fixed = saba2.replace("[6, 2]", "[4, 2]");
+    let method = Splitting::from_toml_str(&fixed, "inline").unwrap();
+    assert!(method
+        .conditions()
+        .iter()
+        .any(|c| c.text.ends_with("of the eps^1 term")));
+    let abah844 = r#"
+        name = "abah844"
+        class = "near_integrable_rkn"
+        order = 4
+        generalized_order = [8, 4, 4]
+        drift = ["0.2741402689434018761640565440378637101205", "-0.1075684384401642306251105297063236526845", "-0.0480185025906016926911954171508475065370", "0.7628933441747280943044988056386148982021", "-0.0480185025906016926911954171508475065370", "-0.1075684384401642306251105297063236526845", "0.2741402689434018761640565440378637101205"]
+        kick = ["0.6408857951625127177322491164716010349386", "-0.8585754489567828565881283246356000103664", "0.7176896537942701388558792081639989754277", "0.7176896537942701388558792081639989754277", "-0.8585754489567828565881283246356000103664", "0.6408857951625127177322491164716010349386", "0"]
+    "#;
+    assert!(Splitting::from_toml_str(abah844, "inline").is_ok());
+    let claimed = abah844.replace("[8, 4, 4]", "[8, 6, 4]");
+    let err = Splitting::from_toml_str(&claimed, "inline").unwrap_err().to_string();
+    assert!(err.contains("of the eps^2 term fails"), "{err}");
+    let bad = saba2.replace("[6, 2]", "[2, 6]");
+    let err = Splitting::from_toml_str(&bad, "inline").unwrap_err().to_string();
+    assert!(err.contains("must be non-empty, non-increasing"), "{err}");
+}

@@ -22,6 +22,7 @@ impl SplittingMethod for HandKdk {
         kick: &[0.5, 0.5],
         gamma: None,
         requires_quadratic_kinetic: false,
+        generalized_order: None,
         stages: 1,
         tolerance: None,
         flags: Flags {

@@ -108,6 +108,8 @@ def declaration(m):
         out += g.array("kick: ", lit(m["kick"]), 8)
         if m["requires_quadratic_kinetic"]:
             out += ["        quadratic_kinetic: true,"]
+        if "generalized_order" in m:
+            out += [f"        generalized_order: [{', '.join(str(p) for p in m['generalized_order'])}],"]
     else:
         out += g.array("gamma: ", lit(m["gamma"]), 8)
     return out + ["    }", "}"]

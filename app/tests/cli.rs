@@ -577,6 +577,43 @@ fn verify_reads_splitting_and_composition_files() {
     assert_error(&stormer(&dir, &["verify", "jump.toml"]), "sum gamma_i^3 = 0 fails");
 }
 
+/// `verify` of a splitting or composition lists every order condition of its class with
+/// its residual and bound, and its algebraic order by class (issue 13).
+#[test]
+fn verify_reports_the_algebraic_order_and_every_condition() {
+    let dir = workdir("verify-algebraic");
+    let v = json(&dir, &["verify", "kahan_li8", "--format", "json"]);
+    assert_eq!(v["algebraic_order"], 8, "{v}");
+    assert_eq!(v["condition_class"], "composition");
+    let conditions = v["conditions"].as_array().unwrap();
+    // 1 + 0 + 1 + 1 + 2 + 2 + 4 + 5 conditions of orders 1 to 8
+    assert_eq!(conditions.len(), 16);
+    assert!(conditions.iter().all(|c| c["ok"] == true
+        && c["residual"].as_f64().unwrap() <= c["bound"].as_f64().unwrap()
+        && c["bound"].as_f64().unwrap() < 1e-10));
+    assert_eq!(conditions[2]["condition"], "[Y1,Y3]");
+    // a Runge-Kutta-Nystrom method: order 4 in its class, 3 in the general one
+    let v = json(&dir, &["verify", "mclachlan_atela4", "--format", "json"]);
+    assert_eq!(
+        (
+            &v["algebraic_order"],
+            &v["condition_class"],
+            &v["algebraic_order_general"]
+        ),
+        (
+            &serde_json::json!(4),
+            &serde_json::json!("quadratic_kinetic"),
+            &serde_json::json!(3)
+        )
+    );
+    let text = stdout(&stormer(&dir, &["verify", "mclachlan_atela4"]));
+    assert!(
+        text.contains("algebraic order 4 (class of a quadratic kinetic energy)"),
+        "{text}"
+    );
+    assert!(text.contains("  4      [A,[A,[A,B]]]"), "{text}");
+}
+
 /// The linear stability interval of `verify`, from the coefficients: the largest `h omega`
 /// with no growth on the harmonic oscillator (docs/verification.md).
 #[test]

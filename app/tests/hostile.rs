@@ -231,17 +231,22 @@ fn methods_lists_the_aliases() {
 
 // ---- verify: declarations the measurements contradict ----
 
-/// Velocity Verlet's coefficients declared as order 4: the report says so and the exit
-/// is non-zero (it was 0, with `DIFFERS from the declared 4` in the report).
+/// Velocity Verlet's coefficients declared as order 4 are refused at load (an order-3
+/// condition fails); with a tolerance so loose that the conditions pass, the measured
+/// order contradicts the declaration: the report says so and the exit is non-zero (it was
+/// 0, with `DIFFERS from the declared 4` in the report).
 #[test]
 fn verify_fails_when_the_measurements_contradict_the_file() {
     let dir = workdir("verify");
     let file = dir.join("verlet-as-4.toml");
-    std::fs::write(
-        &file,
-        "name = \"verlet_as_4\"\nfamily = \"splitting\"\norder = 4\ndrift = [\"0\", \"1\"]\nkick = [\"1/2\", \"1/2\"]\n",
-    )
-    .unwrap();
+    let verlet_as_4 =
+        "name = \"verlet_as_4\"\nfamily = \"splitting\"\norder = 4\ndrift = [\"0\", \"1\"]\nkick = [\"1/2\", \"1/2\"]\n";
+    std::fs::write(&file, verlet_as_4).unwrap();
+    assert_error(
+        &stormer(&dir, &["verify", file.to_str().unwrap()]),
+        "order 3 condition [A,[A,B]] fails",
+    );
+    std::fs::write(&file, format!("{verlet_as_4}tolerance = 10.0\n")).unwrap();
     let out = stormer(&dir, &["verify", file.to_str().unwrap()]);
     let report = String::from_utf8_lossy(&out.stdout);
     assert!(report.contains("DIFFERS from the declared 4"), "{report}");

@@ -15,6 +15,8 @@
 //! * [`tree`]: rooted trees, the index set of the order conditions;
 //! * [`conditions`]: order conditions `sum_i w_i Phi_i(t) = 1/gamma(t)` and their residuals;
 //! * [`tableau`]: a Butcher tableau as plain data, its validation and derived flags;
+//! * [`split_conditions`]: the exact order conditions of splittings and compositions, by
+//!   class (Lyndon brackets of the free Lie algebra);
 //! * [`splitting`]: splitting sequences and composition weights, their checks and merged words;
 //! * [`stability`]: the linear stability interval on the imaginary axis;
 //! * [`number`]: how numbers are printed in messages.
@@ -45,9 +47,12 @@
 
 pub mod conditions;
 pub mod dense;
+mod double_double;
 pub mod expr;
 mod forest;
+mod lie;
 pub mod number;
+pub mod split_conditions;
 pub mod splitting;
 pub mod stability;
 pub mod tableau;
@@ -56,6 +61,9 @@ pub mod tree;
 pub use conditions::{achieved_order, order_conditions, Condition, DEFAULT_TOLERANCE, MAX_ORDER};
 pub use dense::dense_conditions;
 pub use expr::{eval_coefficient, ExprError};
+pub use split_conditions::{
+    algebraic_order, composition_conditions, splitting_conditions, OrderClass, MAX_SPLIT_ORDER,
+};
 pub use splitting::{
     validate_composition, validate_splitting, CompositionSpec, Flow, Op, SplitCondition, SplittingError, SplittingSpec,
     ValidSplitting,

@@ -11,7 +11,7 @@
 //! use stormer_order::splitting::{validate_composition, validate_splitting, CompositionSpec, Flow, SplittingSpec};
 //!
 //! // velocity Verlet: K(1/2) D(1) K(1/2), one force evaluation per step (FSAL)
-//! let kdk = SplittingSpec { drift: vec![0.0, 1.0], kick: vec![0.5, 0.5], order: 2, tolerance: None };
+//! let kdk = SplittingSpec { drift: vec![0.0, 1.0], kick: vec![0.5, 0.5], order: 2, ..SplittingSpec::default() };
 //! let v = validate_splitting(&kdk).unwrap();
 //! assert_eq!(v.word.iter().map(|op| op.flow).collect::<Vec<_>>(), [Flow::Kick, Flow::Drift, Flow::Kick]);
 //! assert!(v.fsal && v.symmetric);
@@ -23,16 +23,19 @@
 //! assert_eq!(validate_composition(&jump).unwrap().stages, 3);
 //! let typo = CompositionSpec { gamma: vec![1.35, 1.0 - 2.0 * 1.35, 1.35], ..jump };
 //! let message = validate_composition(&typo).unwrap_err().to_string();
-//! assert!(message.starts_with("order 4 condition sum gamma_i^3 = 0 fails"), "{message}");
+//! assert!(message.starts_with("order 3 condition sum gamma_i^3 = 0 fails"), "{message}");
 //! ```
 
 use std::fmt;
 
 use crate::conditions::DEFAULT_TOLERANCE;
 use crate::number::format_significant;
+use crate::split_conditions::{
+    composition_conditions, generalized_conditions, splitting_conditions, OrderClass, MAX_SPLIT_ORDER,
+};
 
-/// The highest order whose conditions a composition declaration may claim.
-pub const MAX_COMPOSITION_ORDER: usize = 10;
+/// The highest order whose conditions a declaration may claim.
+pub const MAX_COMPOSITION_ORDER: usize = MAX_SPLIT_ORDER;
 
 /// One of the two sub-flows a splitting composes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -73,7 +76,13 @@ pub struct SplittingSpec {
     pub kick: Vec<f64>,
     /// Declared order.
     pub order: usize,
-    /// Tolerance of the consistency checks; `None` means [`DEFAULT_TOLERANCE`].
+    /// The order needs a quadratic kinetic energy: the conditions checked are those of
+    /// [`OrderClass::QuadraticKineticEnergy`] instead of [`OrderClass::General`].
+    pub quadratic_kinetic: bool,
+    /// A generalized order `(p_1, p_2, ..)` for `H = A + eps B`, checked with the
+    /// conditions of the class given ([`generalized_conditions`]) besides the order.
+    pub generalized_order: Option<(Vec<usize>, OrderClass)>,
+    /// Tolerance factor of the conditions' bounds; `None` means [`DEFAULT_TOLERANCE`].
     pub tolerance: Option<f64>,
 }
 
@@ -117,12 +126,14 @@ pub struct CompositionSpec {
     pub tolerance: Option<f64>,
 }
 
-/// A checked condition: its text, the value found and whether it holds.
+/// A checked condition: its text, the value found and whether it holds
+/// ([`crate::split_conditions`] says what the values are).
 #[derive(Clone, Debug, PartialEq)]
 pub struct SplitCondition {
     /// The order the condition belongs to.
     pub order: usize,
-    /// E.g. `"sum kick_i = 1"` or `"sum gamma_i^3 = 0"`.
+    /// E.g. `"sum kick_i = 1"`, `"[A,[A,B]]"` (its coefficient is zero) or
+    /// `"sum gamma_i^3 = 0"`.
     pub text: String,
     /// The required value.
     pub expected: f64,
@@ -133,9 +144,14 @@ pub struct SplitCondition {
 }
 
 impl SplitCondition {
-    /// True when `|value - expected| <= bound`.
+    /// True when `|value - expected| <= bound` (false for NaN).
     pub fn holds(&self) -> bool {
-        (self.value - self.expected).abs() <= self.bound
+        self.residual() <= self.bound
+    }
+
+    /// `|value - expected|`.
+    pub fn residual(&self) -> f64 {
+        (self.value - self.expected).abs()
     }
 }
 
@@ -163,8 +179,10 @@ pub struct ValidSplitting {
     pub gamma: Option<Vec<f64>>,
     /// The step as a word of sub-flows: zeros dropped, adjacent flows of one kind merged.
     pub word: Vec<Op>,
-    /// Declared (and consistent) order.
+    /// Declared (and verified) order.
     pub order: usize,
+    /// The class whose conditions were checked.
+    pub class: OrderClass,
     /// Force evaluations per step once the first-same-as-last saving applies.
     pub stages: usize,
     /// The step starts and ends with a kick: the force at the end of a step is the first
@@ -173,7 +191,7 @@ pub struct ValidSplitting {
     /// The word is a palindrome (for a composition: so are the weights): the method is its
     /// own adjoint.
     pub symmetric: bool,
-    /// Every condition checked, all holding.
+    /// Every condition of the class up to the declared order, all holding.
     pub conditions: Vec<SplitCondition>,
 }
 
@@ -208,6 +226,12 @@ pub enum SplittingError {
         /// Highest checked.
         max: usize,
     },
+    /// A generalized order that is empty, increasing somewhere, or with an entry outside
+    /// `1..=10`.
+    InvalidGeneralizedOrder {
+        /// Declared.
+        orders: Vec<usize>,
+    },
     /// The tolerance is negative, infinite or NaN.
     InvalidTolerance {
         /// Declared.
@@ -229,6 +253,10 @@ impl fmt::Display for SplittingError {
             SplittingError::OrderTooHigh { order, max } => write!(
                 f,
                 "order {order} is above {max}, the highest order whose conditions are checked"
+            ),
+            SplittingError::InvalidGeneralizedOrder { orders } => write!(
+                f,
+                "generalized order {orders:?} must be non-empty, non-increasing, with entries from 1 to {MAX_SPLIT_ORDER}"
             ),
             SplittingError::InvalidTolerance { tolerance } => {
                 write!(f, "tolerance {tolerance} is not a finite non-negative number")
@@ -294,46 +322,20 @@ fn is_palindrome(ops: &[Op], tol: f64) -> bool {
     })
 }
 
-fn sum_condition(order: usize, what: &str, v: &[f64], tol: f64) -> SplitCondition {
-    let value: f64 = v.iter().sum();
-    let scale: f64 = v.iter().map(|x| x.abs()).sum::<f64>().max(1.0);
-    SplitCondition {
-        order,
-        text: format!("sum {what}_i = 1"),
-        expected: 1.0,
-        value,
-        bound: tol * scale,
-    }
-}
-
 /// The conditions and derived data of a drift-first sequence (shared by both families).
 fn finish(
     drift: Vec<f64>,
     kick: Vec<f64>,
     gamma: Option<Vec<f64>>,
     order: usize,
+    class: OrderClass,
     tol: f64,
-    mut conditions: Vec<SplitCondition>,
 ) -> Result<ValidSplitting, SplittingError> {
-    conditions.push(sum_condition(1, "drift", &drift, tol));
-    conditions.push(sum_condition(1, "kick", &kick, tol));
     let ops = word(&drift, &kick);
-    if order >= 2 {
-        // second order: sum_i kick_i c_i = 1/2, c_i = the drifts before kick i (with the
-        // first-order sums this also gives the mirrored condition on the drifts)
-        let (mut value, mut scale) = (0.0, 0.0);
-        for op in ops.iter().filter(|op| op.flow == Flow::Kick) {
-            value += op.coef * op.node;
-            scale += (op.coef * op.node).abs();
-        }
-        conditions.push(SplitCondition {
-            order: 2,
-            text: "sum kick_i c_i = 1/2 (c_i = drifts before kick i)".into(),
-            expected: 0.5,
-            value,
-            bound: tol * f64::max(scale, 1.0),
-        });
-    }
+    let conditions = match gamma.as_deref() {
+        Some(g) => composition_conditions(g, order, tol),
+        None => splitting_conditions(&ops, class, order, tol),
+    };
     if let Some(failed) = conditions.iter().find(|c| !c.holds()) {
         return Err(SplittingError::Condition(failed.clone()));
     }
@@ -351,6 +353,7 @@ fn finish(
         stages: kicks - usize::from(fsal),
         word: ops,
         order,
+        class,
         fsal,
         symmetric,
         conditions,
@@ -362,21 +365,17 @@ fn palindromic(v: &[f64], tol: f64) -> bool {
     (0..n / 2).all(|i| (v[i] - v[n - 1 - i]).abs() <= tol * v[i].abs().max(1.0))
 }
 
-/// Checks a drift-first splitting: equal lengths, finite entries, `sum drift = sum kick = 1`
-/// (relative to the sum of magnitudes), the second-order condition when `order >= 2`;
-/// derives the merged word, the stage count and the flags.
-///
-/// Conditions beyond order 2 depend on the problem class (general or quadratic kinetic
-/// energy) and are checked by measuring the order, not here.
+/// Checks a drift-first splitting: equal lengths, finite entries, and every order
+/// condition of its class ([`OrderClass::General`], or [`OrderClass::QuadraticKineticEnergy`]
+/// when `spec.quadratic_kinetic`) up to the declared order, from `sum drift = sum kick = 1`
+/// on; derives the merged word, the stage count and the flags.
 ///
 /// # Errors
 ///
 /// The first problem found.
 pub fn validate_splitting(spec: &SplittingSpec) -> Result<ValidSplitting, SplittingError> {
     let tol = tolerance_of(spec.tolerance)?;
-    if spec.order == 0 {
-        return Err(SplittingError::ZeroOrder);
-    }
+    check_order(spec.order)?;
     if spec.drift.len() != spec.kick.len() {
         return Err(SplittingError::LengthMismatch {
             drift: spec.drift.len(),
@@ -388,54 +387,79 @@ pub fn validate_splitting(spec: &SplittingSpec) -> Result<ValidSplitting, Splitt
     }
     check_finite("drift", &spec.drift)?;
     check_finite("kick", &spec.kick)?;
-    finish(spec.drift.clone(), spec.kick.clone(), None, spec.order, tol, Vec::new())
+    let class = if spec.quadratic_kinetic {
+        OrderClass::QuadraticKineticEnergy
+    } else {
+        OrderClass::General
+    };
+    let mut valid = finish(spec.drift.clone(), spec.kick.clone(), None, spec.order, class, tol)?;
+    if let Some((orders, class)) = &spec.generalized_order {
+        let conditions = generalized_conditions(&valid.word, *class, orders, tol);
+        if conditions.is_empty() {
+            return Err(SplittingError::InvalidGeneralizedOrder { orders: orders.clone() });
+        }
+        if let Some(failed) = conditions.iter().find(|c| !c.holds()) {
+            return Err(SplittingError::Condition(failed.clone()));
+        }
+        valid.conditions.extend(conditions);
+    }
+    Ok(valid)
 }
 
-/// Checks composition weights: finite, `sum gamma = 1`, and `sum gamma^k = 0` for
-/// `k = 3, 5, ..` up to `order - 1` (necessary conditions of order `order`; the remaining
-/// ones from order 6 on are checked by measuring the order), each relative to
-/// `sum |gamma|^k`; derives the expansion over drift-kick-drift Verlet.
+fn check_order(order: usize) -> Result<(), SplittingError> {
+    match order {
+        0 => Err(SplittingError::ZeroOrder),
+        o if o > MAX_SPLIT_ORDER => Err(SplittingError::OrderTooHigh {
+            order,
+            max: MAX_SPLIT_ORDER,
+        }),
+        _ => Ok(()),
+    }
+}
+
+/// Checks composition weights: finite, and every condition of
+/// [`OrderClass::SymmetricComposition`] up to the declared order (`sum gamma = 1`,
+/// `sum gamma^3 = 0`, then the brackets of the base's error terms); derives the expansion
+/// over drift-kick-drift Verlet.
 ///
 /// # Errors
 ///
 /// The first problem found.
 pub fn validate_composition(spec: &CompositionSpec) -> Result<ValidSplitting, SplittingError> {
     let tol = tolerance_of(spec.tolerance)?;
-    if spec.order == 0 {
-        return Err(SplittingError::ZeroOrder);
-    }
-    if spec.order > MAX_COMPOSITION_ORDER {
-        return Err(SplittingError::OrderTooHigh {
-            order: spec.order,
-            max: MAX_COMPOSITION_ORDER,
-        });
-    }
+    check_order(spec.order)?;
     let g = &spec.gamma;
     if g.is_empty() {
         return Err(SplittingError::Empty);
     }
     check_finite("gamma", g)?;
-    let mut conditions = vec![sum_condition(1, "gamma", g, tol)];
-    for power in (3..spec.order).step_by(2) {
-        let exponent = power as i32;
-        conditions.push(SplitCondition {
-            order: power + 1,
-            text: format!("sum gamma_i^{power} = 0"),
-            expected: 0.0,
-            value: g.iter().map(|x| x.powi(exponent)).sum(),
-            bound: tol * g.iter().map(|x| x.abs().powi(exponent)).sum::<f64>().max(1.0),
-        });
-    }
+    let (drift, kick) = expansion_over_verlet(g);
+    finish(
+        drift,
+        kick,
+        Some(g.clone()),
+        spec.order,
+        OrderClass::SymmetricComposition,
+        tol,
+    )
+}
+
+/// The drift-first arrays of `S(g_s h) ... S(g_1 h)` with `S` drift-kick-drift Verlet:
+/// `drift = [g1/2, (g1+g2)/2, ..., g_s/2]`, `kick = [g1, ..., g_s, 0]`.
+pub fn expansion_over_verlet(g: &[f64]) -> (Vec<f64>, Vec<f64>) {
     let s = g.len();
     let mut drift = Vec::with_capacity(s + 1);
     let mut kick = Vec::with_capacity(s + 1);
+    if s == 0 {
+        return (drift, kick);
+    }
     drift.push(g[0] / 2.0);
     for i in 0..s {
         kick.push(g[i]);
         drift.push(if i + 1 < s { (g[i] + g[i + 1]) / 2.0 } else { g[i] / 2.0 });
     }
     kick.push(0.0);
-    finish(drift, kick, Some(g.clone()), spec.order, tol, conditions)
+    (drift, kick)
 }
 
 #[cfg(test)]
@@ -466,10 +490,10 @@ mod tests {
             drift: vec![1.0],
             kick: vec![1.0],
             order: 2,
-            tolerance: None,
+            ..SplittingSpec::default()
         };
         let e = validate_splitting(&spec).unwrap_err().to_string();
-        assert!(e.starts_with("order 2 condition sum kick_i c_i = 1/2"), "{e}");
+        assert_eq!(e, "order 2 condition [A,B] fails: got 0.5");
         let v = validate_splitting(&SplittingSpec { order: 1, ..spec }).unwrap();
         assert!(!v.symmetric && !v.fsal);
         assert_eq!(v.stages, 1);
@@ -494,7 +518,7 @@ mod tests {
             drift: vec![0.5, 0.4],
             kick: vec![1.0, 0.0],
             order: 1,
-            tolerance: None,
+            ..SplittingSpec::default()
         })
         .unwrap_err();
         assert!(

@@ -11,5 +11,5 @@ mod tableau;
 pub use any_method::{looks_like_path, Method, StepperResult};
 pub use butcher::{ButcherMethod, ExplicitMethod};
 pub use info::{DenseData, Flags, MethodInfo, TableauData};
-pub use splitting::{Splitting, SplittingData, SplittingMethod};
+pub use splitting::{AlgebraicOrders, Splitting, SplittingData, SplittingMethod};
 pub use tableau::Tableau;

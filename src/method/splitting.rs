@@ -4,9 +4,25 @@
 use super::{Flags, MethodInfo};
 use crate::flows::{ProblemClass, Splittable};
 use crate::{Error, Real};
+use stormer_order::split_conditions::{
+    algebraic_order, composition_conditions, splitting_conditions, OrderClass, MAX_SPLIT_ORDER,
+};
 use stormer_order::splitting::{
     validate_composition, validate_splitting, CompositionSpec, Op, SplitCondition, SplittingSpec, ValidSplitting,
 };
+
+/// The orders a splitting's or composition's coefficients satisfy exactly (to the bounds
+/// of their conditions), by class.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct AlgebraicOrders {
+    /// In the method's own class: a composition's over a general symmetric base, a
+    /// Runge-Kutta-Nystrom method's with a quadratic kinetic energy, otherwise general.
+    pub own: usize,
+    /// As a splitting of any `H = A + B`.
+    pub general: usize,
+    /// As a splitting of `H = T(p) + V(q)` with `T` quadratic.
+    pub quadratic_kinetic: usize,
+}
 
 /// The coefficients of a splitting or composition as compiled into the binary.
 ///
@@ -28,6 +44,8 @@ pub struct SplittingData {
     pub gamma: Option<&'static [f64]>,
     /// The order needs a quadratic kinetic energy (Runge-Kutta-Nystrom methods).
     pub requires_quadratic_kinetic: bool,
+    /// The generalized order `(p_1, p_2, ..)` for `H = A + eps B` the declaration checked.
+    pub generalized_order: Option<&'static [usize]>,
     /// Force evaluations per step, after FSAL reuse.
     pub stages: usize,
     /// The tolerance factor of the checks, when the declaration set one.
@@ -104,7 +122,7 @@ pub trait SplittingMethod: Copy + Default + Send + Sync + core::fmt::Debug + 'st
 /// assert_eq!(kdk.stages(), 1);
 /// // a wrong weight is an error naming the condition
 /// let err = Splitting::composition("jump", &[1.35, -1.7, 1.35], 4).unwrap_err();
-/// assert!(err.to_string().contains("order 4 condition sum gamma_i^3 = 0 fails"), "{err}");
+/// assert!(err.to_string().contains("order 3 condition sum gamma_i^3 = 0 fails"), "{err}");
 /// ```
 #[derive(Debug, Clone)]
 pub struct Splitting {
@@ -128,14 +146,21 @@ impl Splitting {
             drift: drift.to_vec(),
             kick: kick.to_vec(),
             order,
+            quadratic_kinetic: requires_quadratic_kinetic,
+            generalized_order: None,
             tolerance: None,
         };
         Self::from_spec(name.into(), &spec, requires_quadratic_kinetic)
     }
 
-    /// A splitting from its specification (with a tolerance, if any).
+    /// A splitting from its specification (with a tolerance, if any); its order conditions
+    /// are those of a quadratic kinetic energy when `requires_quadratic_kinetic`.
     pub fn from_spec(name: String, spec: &SplittingSpec, requires_quadratic_kinetic: bool) -> Result<Self, Error> {
-        match validate_splitting(spec) {
+        let spec = SplittingSpec {
+            quadratic_kinetic: requires_quadratic_kinetic,
+            ..spec.clone()
+        };
+        match validate_splitting(&spec) {
             Ok(valid) => Ok(Splitting {
                 name,
                 valid,
@@ -192,6 +217,15 @@ impl Splitting {
                     drift: data.drift.to_vec(),
                     kick: data.kick.to_vec(),
                     order: data.order,
+                    quadratic_kinetic: data.requires_quadratic_kinetic,
+                    generalized_order: data.generalized_order.map(|orders| {
+                        let class = if data.requires_quadratic_kinetic {
+                            OrderClass::QuadraticKineticEnergy
+                        } else {
+                            OrderClass::General
+                        };
+                        (orders.to_vec(), class)
+                    }),
                     tolerance: data.tolerance,
                 },
                 data.requires_quadratic_kinetic,
@@ -243,9 +277,36 @@ impl Splitting {
     pub fn tolerance(&self) -> Option<f64> {
         self.tolerance
     }
-    /// Every consistency condition checked, with its value.
+    /// Every order condition of the method's class up to its declared order, with its
+    /// value and bound (all holding).
     pub fn conditions(&self) -> &[SplitCondition] {
         &self.valid.conditions
+    }
+
+    /// The class whose conditions [`Splitting::conditions`] are.
+    pub fn class(&self) -> OrderClass {
+        self.valid.class
+    }
+
+    /// The highest order (up to [`MAX_SPLIT_ORDER`]) whose conditions all hold, in the
+    /// method's class, then as a splitting (for a composition: its expansion over
+    /// drift-kick-drift Verlet) in the general class and with a quadratic kinetic energy.
+    pub fn algebraic_orders(&self) -> AlgebraicOrders {
+        let tol = self.tolerance.unwrap_or(stormer_order::DEFAULT_TOLERANCE);
+        let of = |class| algebraic_order(&splitting_conditions(&self.valid.word, class, MAX_SPLIT_ORDER, tol));
+        let (general, quadratic_kinetic) = (of(OrderClass::General), of(OrderClass::QuadraticKineticEnergy));
+        let own = match (self.valid.class, self.gamma()) {
+            (OrderClass::SymmetricComposition, Some(g)) => {
+                algebraic_order(&composition_conditions(g, MAX_SPLIT_ORDER, tol))
+            }
+            (OrderClass::QuadraticKineticEnergy, _) => quadratic_kinetic,
+            _ => general,
+        };
+        AlgebraicOrders {
+            own,
+            general,
+            quadratic_kinetic,
+        }
     }
     /// Derived flags: explicit and symplectic always; FSAL and symmetric from the word.
     pub fn flags(&self) -> Flags {

@@ -7,17 +7,16 @@ use super::Splitting;
 use crate::Error;
 use serde::Deserialize;
 use stormer_order::splitting::{CompositionSpec, SplittingSpec};
+use stormer_order::OrderClass;
 
 /// The keys of a splitting or composition in the catalog that describe it and are not
 /// read, besides those every method may have.
 const DESCRIPTIVE: &[&str] = &[
-    "class",
     "order_general",
     "order_rkn",
     "n_kick",
     "n_drift",
     "convention",
-    "generalized_order",
     "corrector",
     "corrector_c",
     "corrector_c_closed_form",
@@ -37,6 +36,11 @@ struct SplittingFile {
     kick: Option<Vec<Coefficient>>,
     gamma: Option<Vec<Coefficient>>,
     requires_quadratic_kinetic: Option<bool>,
+    /// `general`, `rkn`, `near_integrable` or `near_integrable_rkn`: the class of the
+    /// generalized order (an `rkn` one assumes a quadratic kinetic energy).
+    class: Option<String>,
+    /// `(p_1, p_2, ..)` for `H = A + eps B`, checked.
+    generalized_order: Option<Vec<usize>>,
     stages: Option<usize>,
     tolerance: Option<f64>,
     explicit: Option<bool>,
@@ -67,11 +71,27 @@ impl SplittingFile {
                 ))
             }
         };
+        let generalized_class = match self.class.as_deref() {
+            None | Some("general" | "near_integrable") => OrderClass::General,
+            Some("rkn" | "near_integrable_rkn") => OrderClass::QuadraticKineticEnergy,
+            Some(other) => {
+                return Err(fail(format!(
+                    "class = \"{other}\" is not general, rkn, near_integrable or near_integrable_rkn"
+                )))
+            }
+        };
+        if family == "composition" && self.generalized_order.is_some() {
+            return Err(fail(
+                "a generalized order belongs to a splitting (H = A + eps B)".into(),
+            ));
+        }
         let method = if family == "splitting" {
             let spec = SplittingSpec {
                 drift: vector(self.drift.as_deref().unwrap_or_default(), "drift").map_err(fail)?,
                 kick: vector(self.kick.as_deref().unwrap_or_default(), "kick").map_err(fail)?,
                 order: self.order,
+                quadratic_kinetic: self.requires_quadratic_kinetic.unwrap_or(false),
+                generalized_order: self.generalized_order.clone().map(|orders| (orders, generalized_class)),
                 tolerance: self.tolerance,
             };
             Splitting::from_spec(

@@ -134,3 +134,32 @@ fn defects_scale_with_the_scalars_epsilon() {
         );
     }
 }
+
+/// The order the coefficients satisfy exactly (every order condition of the class up to
+/// it, `Splitting::algebraic_orders`) is the order `stormer verify` measures, for every
+/// splitting and composition of the catalog, in the class it is measured in (a general
+/// method on the quartic kinetic energy, a Runge-Kutta-Nystrom one on Henon-Heiles); and it
+/// is the declared order in the method's own class.
+#[test]
+fn algebraic_and_measured_orders_agree_on_every_splitting() {
+    for data in registry::SPLITTING {
+        let name = data.name;
+        let orders = stormer::Splitting::from_data(data).unwrap().algebraic_orders();
+        assert_eq!(orders.own, data.order, "{name}: {orders:?}");
+        let algebraic = if data.requires_quadratic_kinetic {
+            assert!(orders.general < data.order, "{name}: {orders:?}");
+            orders.quadratic_kinetic
+        } else {
+            orders.general
+        };
+        let measured = catalog_report(name)
+            .order
+            .as_ref()
+            .unwrap_or_else(|e| panic!("{name}: {e}"));
+        assert!(
+            (measured.order - algebraic as f64).abs() <= 0.2,
+            "{name}: measured {:.2}, algebraic {algebraic}",
+            measured.order
+        );
+    }
+}

@@ -1,6 +1,6 @@
 //! `stormer verify METHOD|FILE`: for a Butcher tableau, flags, row sums, every order
 //! condition with its residual and the highest order the coefficients reach; for a
-//! splitting or composition, its consistency conditions (`verify_splitting`); for both,
+//! splitting or composition, its order conditions by class (`verify_splitting`); for both,
 //! the numerical checks of `stormer::verify` (`verify_checks`). The exit is non-zero when
 //! what it measures contradicts what the method declares (its order, its symmetry...).
 
@@ -121,7 +121,7 @@ impl Report {
         ];
         properties(&mut out, &rows);
         let conditions: Vec<ConditionRow<'_>> = t.conditions().iter().map(ConditionRow::tableau).collect();
-        condition_table(&mut out, "order conditions", "residual", &conditions);
+        condition_table(&mut out, "order conditions", &conditions);
         let _ = writeln!(
             out,
             "achieved order {}",
@@ -242,7 +242,7 @@ impl<'a> ConditionRow<'a> {
             condition: &c.text,
             expected: c.expected,
             got: c.value,
-            residual: None,
+            residual: Some(c.residual()),
             tolerance: None,
             bound: Some(c.bound),
             ok: c.holds(),
@@ -257,24 +257,32 @@ pub(super) fn properties(out: &mut String, rows: &[(&str, String)]) {
     }
 }
 
-/// The table of conditions, `margin` naming the column of residuals or bounds.
-pub(super) fn condition_table(out: &mut String, title: &str, margin: &str, conditions: &[ConditionRow<'_>]) {
+/// The table of conditions: their residuals, and their bounds when they have them (a
+/// splitting's or composition's).
+pub(super) fn condition_table(out: &mut String, title: &str, conditions: &[ConditionRow<'_>]) {
     let _ = writeln!(out, "{title} ({}):", conditions.len());
     let width = conditions.iter().map(|c| c.condition.len()).max().unwrap_or(0).max(9);
+    let bounds = conditions.iter().any(|c| c.bound.is_some());
     let _ = writeln!(
         out,
-        "  {:<5}  {:<width$}  {:<22}  {:<22}  {:<9}",
-        "order", "condition", "expected", "got", margin
+        "  {:<5}  {:<width$}  {:<22}  {:<24}  {:<9}{}",
+        "order",
+        "condition",
+        "expected",
+        "got",
+        "residual",
+        if bounds { "  bound    " } else { "" }
     );
     for c in conditions {
+        let bound = c.bound.map(|b| format!("  {b:<9.1e}")).unwrap_or_default();
         let _ = writeln!(
             out,
-            "  {:<5}  {:<width$}  {:<22}  {:<22}  {:<9.1e}  {}",
+            "  {:<5}  {:<width$}  {:<22}  {:<24}  {:<9.1e}{bound}  {}",
             c.order,
             c.condition,
             format!("{:?}", c.expected),
             format!("{:?}", c.got),
-            c.residual.or(c.bound).unwrap_or(f64::NAN),
+            c.residual.unwrap_or(f64::NAN),
             if c.ok { "ok" } else { "FAILS" }
         );
     }
@@ -283,7 +291,7 @@ pub(super) fn condition_table(out: &mut String, title: &str, margin: &str, condi
 /// A report, and what its measurements contradict among the method's declarations.
 type Outcome = (String, Vec<String>);
 
-/// The report of a splitting or composition: its consistency conditions and the checks.
+/// The report of a splitting or composition: its order conditions and the checks.
 fn splitting_report(method: Splitting, source: String, scheme: &Method, format: TextFormat) -> anyhow::Result<Outcome> {
     let report = verify_splitting::Report {
         checks: verify::report(scheme)?,

@@ -1,11 +1,13 @@
 //! `stormer verify` for a splitting or composition: flags, the word of sub-flows, every
-//! consistency condition with its value, and the numerical checks.
+//! order condition of its class up to its declared order with its value, residual and
+//! bound, the algebraic orders by class, and the numerical checks.
 
 use super::output::yes_no;
 use super::verify::{condition_table, properties, ConditionRow};
 use super::verify_checks::{self, JsonChecks};
 use std::fmt::Write as _;
 use stormer::order::splitting::Flow;
+use stormer::order::OrderClass;
 use stormer::verify::Report as Checks;
 use stormer::Splitting;
 
@@ -22,13 +24,13 @@ impl Report {
     }
 
     /// What the measurements contradict: the numerical checks
-    /// ([`verify_checks::contradictions`]), failing consistency conditions, and a measured
+    /// ([`verify_checks::contradictions`]), failing order conditions, and a measured
     /// symplecticity defect (a composition of exact flows is symplectic).
     pub fn contradictions(&self) -> Vec<String> {
         let m = &self.method;
         let mut found = verify_checks::contradictions(&self.checks, m.order(), m.flags().symmetric);
         if !self.conditions_ok() {
-            found.push("consistency conditions fail".into());
+            found.push("order conditions fail".into());
         }
         if !self.checks.symplectic.holds {
             found.push("the measured symplecticity defect is above its bound".into());
@@ -67,11 +69,14 @@ impl Report {
         let f = m.flags();
         let mut out = String::new();
         let ok = if self.conditions_ok() { "hold" } else { "FAIL" };
+        let orders = m.algebraic_orders();
         let _ = writeln!(
             out,
-            "{}: declared order {}, consistency conditions {ok}",
+            "{}: declared order {}, algebraic order {} ({}), order conditions {ok}",
             m.name(),
-            m.order()
+            m.order(),
+            orders.own,
+            class_text(m.class()),
         );
         let rows = [
             ("source", self.source.clone()),
@@ -90,10 +95,20 @@ impl Report {
                 },
             ),
             ("word", self.word()),
+            (
+                "algebraic order",
+                format!(
+                    "{} as a splitting{} of any H = A + B, {} with a quadratic kinetic energy",
+                    orders.general,
+                    if m.gamma().is_some() { " (over Verlet)" } else { "" },
+                    orders.quadratic_kinetic
+                ),
+            ),
         ];
         properties(&mut out, &rows);
         let conditions: Vec<ConditionRow<'_>> = m.conditions().iter().map(ConditionRow::splitting).collect();
-        condition_table(&mut out, "consistency conditions", "bound", &conditions);
+        let title = format!("order conditions, {}", class_text(m.class()));
+        condition_table(&mut out, &title, &conditions);
         out += &verify_checks::text(&self.checks, m.order(), f.symmetric);
         out.lines().map(|l| l.trim_end().to_string() + "\n").collect()
     }
@@ -101,11 +116,16 @@ impl Report {
     pub fn json(&self) -> JsonReport<'_> {
         let m = &self.method;
         let f = m.flags();
+        let orders = m.algebraic_orders();
         JsonReport {
             name: m.name(),
             source: &self.source,
             family: m.family(),
             declared_order: m.order(),
+            algebraic_order: orders.own,
+            condition_class: m.class().name(),
+            algebraic_order_general: orders.general,
+            algebraic_order_quadratic_kinetic: orders.quadratic_kinetic,
             conditions_ok: self.conditions_ok(),
             stages: m.stages(),
             explicit: f.explicit,
@@ -129,6 +149,15 @@ pub struct JsonReport<'a> {
     source: &'a str,
     family: &'a str,
     declared_order: usize,
+    /// The highest order whose conditions all hold in the method's class
+    /// (`condition_class`), up to 10.
+    algebraic_order: usize,
+    /// `"general"`, `"quadratic_kinetic"` or `"composition"`.
+    condition_class: &'static str,
+    /// As a splitting (a composition: over Verlet) of any `H = A + B`.
+    algebraic_order_general: usize,
+    /// As a splitting with a quadratic kinetic energy.
+    algebraic_order_quadratic_kinetic: usize,
     conditions_ok: bool,
     stages: usize,
     explicit: bool,
@@ -143,4 +172,13 @@ pub struct JsonReport<'a> {
     conditions: Vec<ConditionRow<'a>>,
     #[serde(flatten)]
     checks: JsonChecks,
+}
+
+/// How the text report names a class of order conditions.
+fn class_text(class: OrderClass) -> &'static str {
+    match class {
+        OrderClass::General => "general class: any H = A + B",
+        OrderClass::QuadraticKineticEnergy => "class of a quadratic kinetic energy",
+        OrderClass::SymmetricComposition => "composition of a symmetric second-order base",
+    }
 }

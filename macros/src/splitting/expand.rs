@@ -74,6 +74,7 @@ pub fn expand(method: &Method) -> TokenStream {
         family,
         valid,
         quadratic_kinetic,
+        generalized_order,
         tolerance,
     } = method;
     let (body, values) = step_body(method);
@@ -96,6 +97,10 @@ pub fn expand(method: &Method) -> TokenStream {
         None => quote!(::stormer::__private::None),
     };
     let (fsal, symmetric) = (valid.fsal, valid.symmetric);
+    let generalized_order = match generalized_order {
+        Some(orders) => quote!(::stormer::__private::Some(&[#(#orders),*])),
+        None => quote!(::stormer::__private::None),
+    };
     let class = if *quadratic_kinetic {
         quote!(::stormer::__private::QuadraticOnly)
     } else {
@@ -117,6 +122,7 @@ pub fn expand(method: &Method) -> TokenStream {
                 kick: #kick,
                 gamma: #gamma,
                 requires_quadratic_kinetic: #quadratic_kinetic,
+                generalized_order: #generalized_order,
                 stages: #stages,
                 tolerance: #tolerance,
                 flags: ::stormer::__private::Flags {

@@ -10,7 +10,7 @@ use crate::declaration::{self, parse_order, push, Header, Keyed, Spanned};
 use crate::tableau::parse::Array;
 
 /// The keys of both families.
-pub const KEYS: [&str; 8] = [
+pub const KEYS: [&str; 9] = [
     "name",
     "order",
     "drift",
@@ -18,6 +18,7 @@ pub const KEYS: [&str; 8] = [
     "word",
     "gamma",
     "quadratic_kinetic",
+    "generalized_order",
     "tolerance",
 ];
 
@@ -46,6 +47,8 @@ pub struct Fields {
     pub gamma: Option<Keyed<Array>>,
     /// `quadratic_kinetic: true`.
     pub quadratic_kinetic: Option<Keyed<LitBool>>,
+    /// `generalized_order: [8, 6, 4]` (for `H = A + eps B`).
+    pub generalized_order: Option<Keyed<Array>>,
     /// `tolerance: 1e-14`.
     pub tolerance: Option<Expr>,
 }
@@ -68,6 +71,7 @@ impl Fields {
                     "drift" => &mut self.drift,
                     "kick" => &mut self.kick,
                     "word" => &mut self.word,
+                    "generalized_order" => &mut self.generalized_order,
                     _ => &mut self.gamma,
                 };
                 *slot = Some(Keyed { key, value });

@@ -3,6 +3,7 @@
 //! becomes a `syn::Error` on the tokens it is about.
 
 use proc_macro2::Span;
+use stormer_order::split_conditions::OrderClass;
 use stormer_order::splitting::{
     validate_composition, validate_splitting, CompositionSpec, Flow, SplittingError, SplittingSpec, ValidSplitting,
 };
@@ -26,6 +27,8 @@ pub struct Method {
     pub valid: ValidSplitting,
     /// Needs a quadratic kinetic energy.
     pub quadratic_kinetic: bool,
+    /// The generalized order checked, if declared.
+    pub generalized_order: Option<Vec<usize>>,
     /// The tolerance factor the checks used, when not the default.
     pub tolerance: Option<f64>,
 }
@@ -55,6 +58,9 @@ fn foreign_keys(input: &Input, family: Family) -> Vec<(&Ident, &'static str)> {
                     &k.key,
                     "a composition of a general base is valid for every splittable problem",
                 ));
+            }
+            if let Some(k) = &input.fields.generalized_order {
+                found.push((&k.key, "a generalized order belongs to a splitting of H = A + eps B"));
             }
         }
     }
@@ -108,6 +114,8 @@ fn span_of(input: &Input, err: &SplittingError) -> Span {
             "kick" => entry(&input.fields.kick, *index),
             _ => entry(&input.fields.gamma, *index),
         },
+        SplittingError::Condition(c) if c.text.contains(" of the eps^") => array(&input.fields.generalized_order),
+        SplittingError::InvalidGeneralizedOrder { .. } => array(&input.fields.generalized_order),
         SplittingError::Condition(c) if c.text.contains("gamma") => array(&input.fields.gamma),
         SplittingError::Condition(c) if c.text.starts_with("sum drift") => array(&input.fields.drift).or(word),
         SplittingError::Condition(_) => array(&input.fields.kick).or(word).or(array(&input.fields.gamma)),
@@ -177,11 +185,39 @@ pub fn validate(input: Input, family: Family) -> syn::Result<Method> {
     if let Some(e) = errors {
         return Err(e);
     }
+    let quadratic_kinetic = input.fields.quadratic_kinetic.as_ref().is_some_and(|k| k.value.value);
+    let generalized_order = match &input.fields.generalized_order {
+        Some(g) => {
+            let mut orders = Vec::new();
+            for item in &g.value.items {
+                match item {
+                    Expr::Lit(syn::ExprLit {
+                        lit: syn::Lit::Int(n), ..
+                    }) => orders.push(n.base10_parse::<usize>()?),
+                    _ => {
+                        return Err(syn::Error::new_spanned(
+                            item,
+                            "a generalized order is a list of integers, e.g. [8, 6, 4]",
+                        ))
+                    }
+                }
+            }
+            let class = if quadratic_kinetic {
+                OrderClass::QuadraticKineticEnergy
+            } else {
+                OrderClass::General
+            };
+            Some((orders, class))
+        }
+        None => None,
+    };
     let validated = match (family, spec_splitting, gamma) {
         (Family::Splitting, Some((drift, kick)), _) => validate_splitting(&SplittingSpec {
             drift,
             kick,
             order,
+            quadratic_kinetic,
+            generalized_order: generalized_order.clone(),
             tolerance,
         }),
         (_, _, Some(gamma)) => validate_composition(&CompositionSpec {
@@ -197,7 +233,8 @@ pub fn validate(input: Input, family: Family) -> syn::Result<Method> {
             name: input.fields.name.expect("checked by the parser"),
             family,
             valid,
-            quadratic_kinetic: input.fields.quadratic_kinetic.is_some_and(|k| k.value.value),
+            quadratic_kinetic,
+            generalized_order: generalized_order.map(|(orders, _)| orders),
             tolerance,
         }),
         Err(err) => Err(syn::Error::new(span_of(&input, &err), err)),
@@ -265,6 +302,6 @@ mod tests {
             quote! { struct C { name: "c", order: 4, gamma: [1.35, -1.7, 1.35] } },
         )
         .unwrap_err();
-        assert!(e.starts_with("order 4 condition sum gamma_i^3 = 0 fails"), "{e}");
+        assert!(e.starts_with("order 3 condition sum gamma_i^3 = 0 fails"), "{e}");
     }
 }
