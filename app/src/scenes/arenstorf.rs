@@ -4,10 +4,9 @@
 
 use super::central_force_file::{coordinates, AXES};
 use super::file::{Number, Source};
-use super::Scene;
+use super::{Built, Scene};
 use serde::Deserialize;
 use stormer::magnetic::{Charged, Lorentz};
-use stormer::Error;
 
 /// A body of negligible mass moving near two primaries (masses `1 - mu` and `mu`) that
 /// circle their centre of mass, in the frame rotating with them (angular velocity
@@ -156,11 +155,7 @@ impl Scene for Charged<RestrictedThreeBody> {
     type Parameters = ThreeBodyParameters;
     type Initial = ThreeBodyInitial;
 
-    fn build(
-        parameters: Option<ThreeBodyParameters>,
-        initial: ThreeBodyInitial,
-        src: &Source<'_>,
-    ) -> Result<(Self, [f64; 6]), Error> {
+    fn build(parameters: Option<Self::Parameters>, initial: Self::Initial, src: &Source<'_>) -> Built<Self> {
         let p = parameters.ok_or_else(|| src.missing("parameters", "mu"))?;
         let mu = src.positive("parameters.mu", &p.mu)?;
         if mu >= 1.0 {

@@ -2,7 +2,7 @@
 //! ([`CentralForce`], the `kepler` and `kepler-e06` scenes).
 
 use super::file::{Number, Source};
-use super::Scene;
+use super::{Built, Scene};
 use nalgebra::DVector;
 use serde::Deserialize;
 use stormer::models::{CentralForce, Orbit};
@@ -48,11 +48,7 @@ impl Scene for CentralForce<f64, DVector<f64>> {
     type Parameters = CentralForceParameters;
     type Initial = CentralForceInitial;
 
-    fn build(
-        parameters: Option<CentralForceParameters>,
-        initial: CentralForceInitial,
-        src: &Source<'_>,
-    ) -> Result<(Self, DVector<f64>), Error> {
+    fn build(parameters: Option<Self::Parameters>, initial: Self::Initial, src: &Source<'_>) -> Built<Self> {
         let parameters = parameters.ok_or_else(|| src.missing("parameters", "mu"))?;
         let mu = src.positive("parameters.mu", &parameters.mu)?;
         let q = coordinates(src, "initial.q", &initial.q)?;

@@ -19,7 +19,7 @@
 
 use super::file::{Number, Source};
 use super::nbody_file::{column, Taken};
-use super::Scene;
+use super::{Built, Scene};
 use nalgebra::DVector;
 use serde::Deserialize;
 use stormer::magnetic::Charged;
@@ -185,11 +185,7 @@ impl Scene for ChargedScene {
     type Parameters = ChargedParameters;
     type Initial = Spanned<Vec<Spanned<ParticleEntry>>>;
 
-    fn build(
-        parameters: Option<ChargedParameters>,
-        particles: Spanned<Vec<Spanned<ParticleEntry>>>,
-        src: &Source<'_>,
-    ) -> Result<(Self, DVector<f64>), Error> {
+    fn build(parameters: Option<Self::Parameters>, particles: Self::Initial, src: &Source<'_>) -> Built<Self> {
         let parameters = parameters.unwrap_or_default();
         let field = magnetic_field(src, &parameters)?;
         let electric = match &parameters.e {

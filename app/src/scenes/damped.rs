@@ -1,9 +1,9 @@
 //! The damped oscillator `x'' = -w0^2 x - (w0/Q) x'` (SCENES.md 2).
 
 use super::file::{Number, Source};
-use super::{OscillatorInitial, Scene};
+use super::{Built, OscillatorInitial, Scene};
 use serde::Deserialize;
-use stormer::{Error, Families, Problem};
+use stormer::{Families, Problem};
 
 /// The damped oscillator `x'' = -w0^2 x - (w0/Q) x'`, state `[x, v]`.
 ///
@@ -87,11 +87,7 @@ impl Scene for DampedOscillator {
     type Parameters = DampedParameters;
     type Initial = OscillatorInitial;
 
-    fn build(
-        parameters: Option<DampedParameters>,
-        initial: OscillatorInitial,
-        src: &Source<'_>,
-    ) -> Result<(Self, [f64; 2]), Error> {
+    fn build(parameters: Option<Self::Parameters>, initial: Self::Initial, src: &Source<'_>) -> Built<Self> {
         let p = parameters.ok_or_else(|| src.missing("parameters", "w0 and Q"))?;
         let model = DampedOscillator::new(
             src.positive("parameters.w0", &p.w0)?,

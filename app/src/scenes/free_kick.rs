@@ -2,7 +2,7 @@
 //! the `free-kick` scene).
 
 use super::file::{Number, Source};
-use super::{Scene, Stop};
+use super::{Built, Scene, Stop};
 use serde::Deserialize;
 use stormer::magnetic::gyration_coefficients;
 use stormer::{Error, Families, Problem};
@@ -162,11 +162,7 @@ impl Scene for SpinningBall {
     type Parameters = SpinningBallParameters;
     type Initial = KickInitial;
 
-    fn build(
-        parameters: Option<SpinningBallParameters>,
-        initial: KickInitial,
-        src: &Source<'_>,
-    ) -> Result<(Self, [f64; 4]), Error> {
+    fn build(parameters: Option<Self::Parameters>, initial: Self::Initial, src: &Source<'_>) -> Built<Self> {
         let p = parameters.ok_or_else(|| src.missing("parameters", "g, rho, Cx, R, m, mu and spin"))?;
         let ball = SpinningBall::new(
             non_negative(src, "parameters.g", &p.g)?,

@@ -1,7 +1,7 @@
 //! The harmonic oscillator `x'' = -w0^2 x` (SCENES.md 2).
 
 use super::file::{Number, Source};
-use super::Scene;
+use super::{Built, Scene};
 use serde::Deserialize;
 use stormer::{Error, SecondOrder};
 
@@ -82,11 +82,7 @@ impl Scene for Harmonic {
     type Parameters = HarmonicParameters;
     type Initial = OscillatorInitial;
 
-    fn build(
-        parameters: Option<HarmonicParameters>,
-        initial: OscillatorInitial,
-        src: &Source<'_>,
-    ) -> Result<(Self, [f64; 2]), Error> {
+    fn build(parameters: Option<Self::Parameters>, initial: Self::Initial, src: &Source<'_>) -> Built<Self> {
         let p = parameters.ok_or_else(|| src.missing("parameters", "w0"))?;
         let model = Harmonic::new(src.positive("parameters.w0", &p.w0)?);
         Ok((model, initial.state(src)?))

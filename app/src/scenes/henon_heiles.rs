@@ -3,9 +3,9 @@
 //! chaotic motion on its Poincare section.
 
 use super::file::{Number, Source};
-use super::Scene;
+use super::{Built, Scene};
 use serde::Deserialize;
-use stormer::{Error, SecondOrder};
+use stormer::SecondOrder;
 
 /// `H = (px^2 + py^2)/2 + (x^2 + y^2)/2 + x^2 y - y^3/3`, state `[x, y, px, py]` (unit
 /// masses): `x'' = -x - 2 x y`, `y'' = -y - x^2 + y^2`.
@@ -82,11 +82,7 @@ impl Scene for HenonHeiles {
     type Parameters = HenonHeilesParameters;
     type Initial = HenonHeilesInitial;
 
-    fn build(
-        parameters: Option<HenonHeilesParameters>,
-        initial: HenonHeilesInitial,
-        src: &Source<'_>,
-    ) -> Result<(Self, [f64; 4]), Error> {
+    fn build(parameters: Option<Self::Parameters>, initial: Self::Initial, src: &Source<'_>) -> Built<Self> {
         let energy = match parameters.and_then(|p| p.energy) {
             Some(e) => src.finite("parameters.energy", &e)?,
             None => DEFAULT_ENERGY,

@@ -73,6 +73,9 @@ use stormer::{Error, Problem};
 
 /// A model of a scene: a problem in `f64` that knows how a scene file describes it.
 ///
+/// What [`Scene::build`] makes of a file: the model and its initial state.
+pub type Built<S> = Result<(S, <S as Problem>::State), Error>;
+
 /// The trait gives what the tools around a run need and the [`Problem`] does not: the
 /// names of the state's components (the CSV header), how the file's `[parameters]` and
 /// `[initial]` tables are read and checked, the exact solution where there is one, and
@@ -94,11 +97,7 @@ pub trait Scene: Problem<Scalar = f64> + Sized + 'static {
 
     /// The model and its initial state from the file's `[parameters]` (`None` when the
     /// file has none) and `[initial]` tables, every value checked.
-    fn build(
-        parameters: Option<Self::Parameters>,
-        initial: Self::Initial,
-        src: &Source<'_>,
-    ) -> Result<(Self, Self::State), Error>;
+    fn build(parameters: Option<Self::Parameters>, initial: Self::Initial, src: &Source<'_>) -> Built<Self>;
 
     /// Names of the components of the model's states (shaped like `y0`), in order
     /// (`["x", "v"]`): the CSV header.

@@ -17,7 +17,7 @@
 
 use super::central_force_file::{coordinates, AXES};
 use super::file::{Number, Source};
-use super::Scene;
+use super::{Built, Scene};
 use nalgebra::DVector;
 use serde::Deserialize;
 use std::collections::hash_map::{Entry, HashMap};
@@ -110,11 +110,7 @@ impl Scene for NBody<f64, DVector<f64>> {
     type Parameters = GravityParameters;
     type Initial = Spanned<Vec<BodyEntry>>;
 
-    fn build(
-        parameters: Option<GravityParameters>,
-        bodies: Spanned<Vec<BodyEntry>>,
-        src: &Source<'_>,
-    ) -> Result<(Self, DVector<f64>), Error> {
+    fn build(parameters: Option<Self::Parameters>, bodies: Self::Initial, src: &Source<'_>) -> Built<Self> {
         let parameters = parameters.ok_or_else(|| src.missing("parameters", "G"))?;
         let g = src.positive("parameters.G", &parameters.g)?;
         if bodies.get_ref().is_empty() {

@@ -1,9 +1,9 @@
 //! The simple pendulum `theta'' = -sin(theta)` (SCENES.md 1).
 
 use super::file::{Number, Source};
-use super::Scene;
+use super::{Built, Scene};
 use serde::Deserialize;
-use stormer::{Error, SecondOrder};
+use stormer::SecondOrder;
 
 /// The exact period of the pendulum released at rest from `theta0 = pi/4`, in units of
 /// `sqrt(l/g)`: `4 K(sin^2(pi/8))` (K the complete elliptic integral of the first kind,
@@ -65,11 +65,7 @@ impl Scene for Pendulum {
     type Parameters = NoParameters;
     type Initial = PendulumInitial;
 
-    fn build(
-        _parameters: Option<NoParameters>,
-        initial: PendulumInitial,
-        src: &Source<'_>,
-    ) -> Result<(Self, [f64; 2]), Error> {
+    fn build(_parameters: Option<Self::Parameters>, initial: Self::Initial, src: &Source<'_>) -> Built<Self> {
         let y0 = [
             src.finite("initial.theta", &initial.theta)?,
             src.finite("initial.omega", &initial.omega)?,
