@@ -92,12 +92,13 @@ fn tour_writes_the_report_with_verdicts() {
     }
     assert!(pictures >= 12, "{pictures} pictures");
     let verdicts: Vec<&str> = html.lines().filter(|l| l.contains("class=\"verdict\"")).collect();
-    assert_eq!(verdicts.len(), 7, "{verdicts:?}");
+    assert_eq!(verdicts.len(), 8, "{verdicts:?}");
     let has = |i: usize, needle: &str| assert!(verdicts[i].contains(needle), "expected {needle:?} in {}", verdicts[i]);
     has(0, "Explicit Euler's energy drifts upward");
     has(0, "Stormer-Verlet's stays bounded");
     has(1, "RK4's energy drifts");
     has(1, "velocity Verlet's stays bounded");
+    has(6, "RK4's energy on the section strays");
     has(2, "Explicit Euler's H drifts");
     has(2, "symplectic Euler's stays bounded");
     has(2, "Stormer-Verlet's stays bounded with a smaller oscillation");
@@ -122,7 +123,7 @@ fn the_page_is_self_contained_with_contents_and_captions() {
         .skip(1)
         .map(|s| s.split('"').next().unwrap())
         .collect();
-    assert_eq!(targets.len(), 7, "one entry per experiment");
+    assert_eq!(targets.len(), 8, "one entry per experiment");
     for id in &targets {
         assert!(html.contains(&format!("<section id=\"{id}\">")), "no section {id}");
     }
@@ -135,7 +136,7 @@ fn the_page_is_self_contained_with_contents_and_captions() {
     );
     assert!(html.contains("<td class=\"num\">"), "numbers aligned right");
     let summary = std::fs::read_to_string(report.join("summary.md")).unwrap();
-    assert_eq!(summary.matches("**Verdict:**").count(), 7);
+    assert_eq!(summary.matches("**Verdict:**").count(), 8);
     assert_eq!(summary.matches("](").count(), figures);
 }
 
