@@ -241,11 +241,12 @@ impl<'a, T: Real, S: State<Scalar = T>> Driver<'a, T, S> {
     }
 
     /// What the run records inside its steps, when it records anything there.
-    /// `order` is the method's, which sets the order of the driver's interpolant.
-    fn between(&self, t0: T, y0: &S, order: usize) -> Option<Between<'_, 'a, T, S>> {
+    /// `order` gives the method's, which sets the order of the driver's interpolant (asked
+    /// only when the run records inside its steps).
+    fn between(&self, t0: T, y0: &S, order: impl FnOnce() -> usize) -> Option<Between<'_, 'a, T, S>> {
         let times = self.save_at.as_deref();
         (times.is_some() || !self.events.is_empty())
-            .then(|| Between::new(times.unwrap_or(&[]), &self.events, t0, y0, order))
+            .then(|| Between::new(times.unwrap_or(&[]), &self.events, t0, y0, order()))
     }
 
     /// True when the cancel flag is set, read only at every [`CANCEL_EVERY`]-th step.

@@ -63,7 +63,7 @@ where
         }
         let mut y_new = y0.clone();
         let mut g_old = driver.stop.as_ref().map(|g| g(t0, y0));
-        let mut save = driver.between(t0, y0, self.stepper.info().order);
+        let mut save = driver.between(t0, y0, || self.stepper.info().order);
         for i in 0..n {
             let t = t0 + lit::<T>(i as f64) * h;
             if driver.cancelled(i) {
@@ -250,7 +250,7 @@ where
         let mut y_new = y0.clone();
         let mut g_old = driver.stop.as_ref().map(|g| g(t0, y0));
         let mut since_record = 0;
-        let mut save = driver.between(t0, y0, self.stepper.info().order);
+        let mut save = driver.between(t0, y0, || self.stepper.info().order);
         loop {
             if (t - t_end) * dir >= T::zero() {
                 return Ok(None);

@@ -1,6 +1,7 @@
 //! Argument parsing and dispatch to the subcommands.
 
 mod choice;
+mod finite_number;
 mod interrupt;
 mod legend;
 mod methods;

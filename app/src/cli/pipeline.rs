@@ -254,6 +254,7 @@ impl<'s, S: Scene> SceneRun<'s, S> {
             setup: self.setup,
             track: Track::default(),
             out,
+            section: self.section.as_ref(),
         };
         let (mut driver, setup) = (self.driver(every), self.setup);
         if let Some(times) = self.save_at.as_ref().filter(|_| at_times) {
@@ -302,11 +303,13 @@ impl<'s, S: Scene> SceneRun<'s, S> {
     }
 }
 
-/// Keeps the [`Track`] of the records on their way to `out`.
+/// Keeps the [`Track`] of the records on their way to `out`, and passes on the crossings
+/// of the run's Poincare section that lie on its side.
 struct Tracking<'a, S: Scene, R: ?Sized> {
     setup: &'a Setup<S>,
     track: Track,
     out: &'a mut R,
+    section: Option<&'a Section>,
 }
 
 impl<S: Scene, R: Recorder<f64, S::State> + ?Sized> Recorder<f64, S::State> for Tracking<'_, S, R> {
@@ -334,7 +337,11 @@ impl<S: Scene, R: Recorder<f64, S::State> + ?Sized> Recorder<f64, S::State> for 
     }
 
     fn event(&mut self, hit: &EventHit<f64, S::State>) -> Result<(), Error> {
-        self.out.event(hit)
+        // the section is the run's only non-terminal event
+        if self.section.is_some_and(|s| s.admits(hit.y.as_slice())) {
+            self.out.event(hit)?;
+        }
+        Ok(())
     }
 }
 

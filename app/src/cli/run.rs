@@ -205,13 +205,12 @@ impl SceneVisitor for Runner<'_> {
         let beside_csv = std::fs::metadata(&path).is_ok_and(|m| m.is_file());
         let stem = if beside_csv { &path } else { &default_path }.with_extension("");
         let (outcome, mut crossings) = match &section {
-            Some(section) => {
+            Some(_) => {
                 let section_path = PathBuf::from(format!("{}-section.csv", stem.display()));
                 super::output::refuse_overwriting(&section_path, &inputs)?;
                 let mut with = WithSection {
                     run: &mut csv,
                     crossings: CsvRecorder::create(&section_path, &setup)?,
-                    section,
                     setup: &setup,
                     count: 0,
                 };

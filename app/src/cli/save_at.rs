@@ -1,5 +1,6 @@
 //! `--save-at`: the output times of a run, as `START:STEP:END` or a comma list.
 
+use super::finite_number::finite_number;
 use stormer::Error;
 
 /// At most this many output times (8 bytes each in memory, a CSV row each on disk).
@@ -9,13 +10,7 @@ const MAX_TIMES: f64 = 1e8;
 /// END itself included when STEP divides the span to rounding) or `T1,T2,...`.
 pub fn parse(text: &str) -> Result<Vec<f64>, Error> {
     let bad = |reason: String| Error::invalid("--save-at", reason);
-    let number = |s: &str| {
-        s.trim()
-            .parse::<f64>()
-            .ok()
-            .filter(|x| x.is_finite())
-            .ok_or_else(|| bad(format!("'{}' is not a finite number (in '{text}')", s.trim())))
-    };
+    let number = |s: &str| finite_number("--save-at", text, s);
     let parts: Vec<&str> = text.split(':').collect();
     match parts[..] {
         [start, step, end] => {

@@ -2,12 +2,13 @@
 //! CSV crosses a value (optionally only where another column is above or below a value),
 //! located on the continuous extension of the steps, written to their own CSV and drawn.
 
+use super::finite_number::finite_number;
 use super::output::CsvRecorder;
 use super::pictures::Pictures;
 use super::plot::{Chart, Series};
 use std::path::PathBuf;
 use stormer::driver::Recorder;
-use stormer::{Error, EventHit, State};
+use stormer::{Error, EventHit};
 use stormer_app::scenes::{Scene, Setup};
 
 /// A parsed `--section`: the state component `column` crosses `value`, where `side` holds.
@@ -37,13 +38,7 @@ impl Section {
                 ))
             })
         };
-        let number = |s: &str| {
-            s.trim()
-                .parse::<f64>()
-                .ok()
-                .filter(|x| x.is_finite())
-                .ok_or_else(|| bad(format!("'{}' is not a finite number", s.trim())))
-        };
+        let number = |s: &str| finite_number("--section", text, s);
         let (crossing, condition) = match text.split_once(',') {
             Some((a, b)) => (a, Some(b)),
             None => (text, None),
@@ -97,14 +92,13 @@ impl Section {
     }
 }
 
-/// The run's records to its CSV and the section's crossings to theirs.
+/// The run's records to its CSV and the section's crossings (those on its side, as the
+/// run pipeline passes them on) to theirs.
 pub struct WithSection<'a, S: Scene> {
     /// The run's CSV.
     pub run: &'a mut CsvRecorder,
     /// The section's CSV (same header).
     pub crossings: CsvRecorder,
-    /// The section.
-    pub section: &'a Section,
     /// The scene (the energy of each crossing).
     pub setup: &'a Setup<S>,
     /// Crossings written.
@@ -117,9 +111,6 @@ impl<S: Scene> Recorder<f64, S::State> for WithSection<'_, S> {
     }
 
     fn event(&mut self, hit: &EventHit<f64, S::State>) -> Result<(), Error> {
-        if !self.section.admits(hit.y.as_slice()) {
-            return Ok(());
-        }
         self.count += 1;
         let energy = self.setup.model.energy(hit.t, &hit.y);
         self.crossings.record(hit.t, &hit.y, energy)

@@ -120,7 +120,6 @@ impl Trace {
 struct Memory<'a, S: Scene> {
     setup: &'a Setup<S>,
     rows: Vec<Row>,
-    section: Option<&'a PoincareSection>,
     crossings: Vec<Vec<f64>>,
 }
 
@@ -132,9 +131,8 @@ impl<S: Scene> Recorder<f64, S::State> for Memory<'_, S> {
     }
 
     fn event(&mut self, hit: &EventHit<f64, S::State>) -> Result<(), Error> {
-        if self.section.is_some_and(|s| s.admits(hit.y.as_slice())) {
-            self.crossings.push(hit.y.as_slice().to_vec());
-        }
+        // the run's section crossings on its side (the pipeline filters them)
+        self.crossings.push(hit.y.as_slice().to_vec());
         Ok(())
     }
 }
@@ -163,14 +161,13 @@ impl SceneVisitor for Sim<'_> {
             steps: Steps::Fixed(self.dt),
             t_end: self.t_end,
             every: self.every,
-            section: section.clone(),
+            section,
             ..Options::default()
         };
         let mut run = SceneRun::new(&setup, &method, &options)?;
         let mut memory = Memory {
             setup: &setup,
             rows: Vec::new(),
-            section: section.as_ref(),
             crossings: Vec::new(),
         };
         let outcome = run.run_into(&mut memory);
