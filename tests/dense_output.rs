@@ -6,13 +6,18 @@
 // the error of a run carries its solution, by design
 #![allow(clippy::result_large_err)]
 
+#[path = "support/kepler_reference.rs"]
+mod kepler_reference;
 #[path = "support/problems.rs"]
 mod problems;
 
 use problems::{Decay, Fall, Kepler, Oscillator};
-use stormer::catalog::{Dop853, DormandPrince5, Kutta3, Rk4, Verner9};
-use stormer::ExplicitMethod;
+use stormer::catalog::{
+    BackwardEuler, Dop853, DormandPrince5, GaussLegendre4, GaussLegendre6, ImplicitMidpoint, Kutta3, LobattoIiia4,
+    RadauIia3, RadauIia5, Rk4, Trapezoidal, Verner9,
+};
 use stormer::{hermite_order, registry, Driver, Error, ExplicitRk, Solution, Tolerances};
+use stormer::{ButcherMethod, ExplicitMethod, ImplicitOptions, ImplicitRk, Tableau};
 
 /// `n + 1` times from `a` to `b`.
 fn grid(a: f64, b: f64, n: usize) -> Vec<f64> {
@@ -208,6 +213,83 @@ fn the_interpolant_has_its_stated_order() {
         );
     }
     assert_eq!((hermite_order(3), hermite_order(4)), (3, 5));
+}
+
+/// The largest error between the steps, and the evaluations without and with output there.
+type ErrorAndCost = (f64, [u64; 2]);
+
+/// A collocation method: its name, its measurement at a step, its number of stages.
+type Collocation = (&'static str, fn(f64) -> ErrorAndCost, usize);
+
+/// Kepler's e = 0.6 orbit: the largest error of collocation method `M`'s own continuous
+/// extension at 3/10 of one step of `h` taken from the exact state at 20 points of the
+/// orbit (the interpolant's error alone, not the run's); and the evaluations of a 40-step
+/// run without and with output at 3/10 of every step.
+fn collocation_error<M: ButcherMethod>(h: f64) -> ErrorAndCost {
+    let tableau = Tableau::from_data(&M::DATA).unwrap();
+    let orbit = kepler_reference::Conic { e: 0.6, qp: 0.4 };
+    let exact = |t: f64| {
+        let (q, v) = orbit.state(t);
+        [q[0], q[1], v[0], v[1]]
+    };
+    let mut error = 0.0;
+    for i in 0..20 {
+        // the problem is autonomous: each step starts at t = 0 from the orbit's state at t0
+        let t0 = orbit.period() * i as f64 / 20.0;
+        let y0 = exact(t0);
+        let mut stepper = ImplicitRk::new(&tableau, &y0, ImplicitOptions::newton());
+        let run = Driver::fixed(h)
+            .save_at([0.3 * h])
+            .run(&Kepler, &mut stepper, 0.0, &y0, h)
+            .unwrap();
+        assert_eq!(run.t, [0.3 * h]);
+        let reference = exact(t0 + 0.3 * h);
+        error = run.y[0]
+            .iter()
+            .zip(&reference)
+            .map(|(a, b)| (a - b).abs())
+            .fold(error, f64::max);
+    }
+    let y0 = exact(0.0);
+    let mut evaluations = [0; 2];
+    for (output, evaluations) in [false, true].into_iter().zip(&mut evaluations) {
+        let mut stepper = ImplicitRk::new(&tableau, &y0, ImplicitOptions::newton());
+        let times = (0..40).map(|i| (i as f64 + 0.3) * h).filter(|_| output);
+        let run = Driver::fixed(h)
+            .save_at(times)
+            .run(&Kepler, &mut stepper, 0.0, &y0, 40.0 * h);
+        *evaluations = run.unwrap().stats.evaluations;
+    }
+    (error, evaluations)
+}
+
+/// Gauss, Radau IIA and Lobatto IIIA interpolate by their collocation polynomial (declared as
+/// data next to the tableau, `b_i(theta) = int_0^theta l_i`, its continuous order conditions
+/// checked when it compiles): order `s` between the steps (the error falls by `2^(s+1)` when
+/// the step halves), and no evaluation beyond the run's own.
+#[test]
+fn collocation_methods_interpolate_by_their_collocation_polynomial() {
+    let cases: [Collocation; 8] = [
+        ("backward_euler", collocation_error::<BackwardEuler>, 1),
+        ("implicit_midpoint", collocation_error::<ImplicitMidpoint>, 1),
+        ("trapezoidal", collocation_error::<Trapezoidal>, 2),
+        ("gauss_legendre4", collocation_error::<GaussLegendre4>, 2),
+        ("gauss_legendre6", collocation_error::<GaussLegendre6>, 3),
+        ("radau_iia3", collocation_error::<RadauIia3>, 2),
+        ("radau_iia5", collocation_error::<RadauIia5>, 3),
+        ("lobatto_iiia4", collocation_error::<LobattoIiia4>, 3),
+    ];
+    for (name, error, s) in cases {
+        let tableau = registry::lookup(name).unwrap().tableau().unwrap().unwrap();
+        assert_eq!(tableau.info().dense_order, Some(s), "{name}");
+        let ((coarse, [plain, dense]), (fine, _)) = (error(0.02), error(0.01));
+        assert_eq!(plain, dense, "{name}: output cost evaluations");
+        let measured = (coarse / fine).log2() - 1.0;
+        assert!(
+            (measured - s as f64).abs() < 0.35,
+            "{name}: order {measured:.2} between steps, expected {s}"
+        );
+    }
 }
 
 /// The slopes of a FSAL method are its stages: output at every midpoint costs Dormand-Prince

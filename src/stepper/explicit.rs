@@ -113,18 +113,51 @@ pub struct ExplicitStepper<C, S: State> {
     /// its register allocation (1.21x the hand-written loop instead of 0.98x, bisected to
     /// the commit that added it; docs/benchmarks.md).
     compensated: Option<Box<CompensatedCombination<S>>>,
-    /// The stages a dense output adds after a step (DOP853's), made at the first output
-    /// time inside a step. Boxed and created then: a run without output pays nothing.
-    added: Option<Box<AddedStages<S>>>,
+    /// The dense output's coefficients and the stages it adds after a step (DOP853's),
+    /// made at the first output time inside a step. Boxed and created then: a run without
+    /// output pays nothing.
+    dense: Option<Box<Dense<S>>>,
     counters: Counters,
 }
 
-/// The dense output's added stages of the last step, and the step `(t, h)` they are of.
+/// The method's own dense output in the state's scalar (converted once), and the stages it
+/// adds after the step with the step `(t, h)` they are of.
 #[derive(Debug, Clone)]
-struct AddedStages<S: State> {
+struct Dense<S: State> {
+    /// The powers `m` of `b_i(theta)`.
+    powers: usize,
+    /// The stages whose `b_i(theta)` is not zero, with the coefficients of theta^1 .. theta^m.
+    rows: Vec<(usize, Vec<S::Scalar>)>,
+    /// The added stages: their nodes and rows of `a` (`e x (s + e)`), and their values.
+    c: Vec<S::Scalar>,
+    a: Vec<S::Scalar>,
     k: Vec<S>,
     stage: S,
     of_step: Option<(S::Scalar, S::Scalar)>,
+}
+
+/// Powers of theta a dense output may use (DOP853's is 7).
+const MAX_POWERS: usize = 12;
+
+impl<S: State> Dense<S> {
+    fn new<C: ExplicitStages<S>>(stages: &C, s: usize, y: &S) -> Option<Self> {
+        let powers = stages.dense_powers().filter(|&m| m <= MAX_POWERS)?;
+        let (c, a) = stages.dense_added();
+        let rows = (0..s + c.len())
+            .map(|i| (i, stages.dense_row(i)))
+            .filter(|(_, row)| row.iter().any(|&d| d != 0.0))
+            .map(|(i, row)| (i, row.iter().map(|&d| lit(d)).collect()))
+            .collect();
+        Some(Dense {
+            powers,
+            rows,
+            c: c.iter().map(|&x| lit(x)).collect(),
+            a: a.iter().map(|&x| lit(x)).collect(),
+            k: vec![y.zeros_like(); c.len()],
+            stage: y.zeros_like(),
+            of_step: None,
+        })
+    }
 }
 
 /// Stepper for an explicit method `M` declared with [`crate::tableau!`], on states `S`.
@@ -161,36 +194,32 @@ impl<M: ExplicitMethod, S: State> ExplicitStepper<Unrolled<M, S>, S> {
 }
 
 impl<C: ExplicitStages<S>, S: State> ExplicitStepper<C, S> {
-    /// The stages the dense output adds to the step `(t, y)` of size `last_h` just taken:
-    /// `Y = y + h sum_j a_kj K_j` over the step's stages and the added ones before, `K_k =
-    /// f(t + c_k h, Y)`; once per step.
-    fn add_stages<P: Problem<Scalar = S::Scalar, State = S>>(&mut self, p: &P, t: S::Scalar, y: &S) {
-        let (c, a) = self.stages.dense_added();
-        if c.is_empty() {
-            return;
+    /// The dense output of the step `(t, y)` of size `last_h` just taken, with the stages it
+    /// adds (`Y = y + h sum_j a_kj K_j` over the step's stages and the added ones before,
+    /// `K_k = f(t + c_k h, Y)`), made once per step; nothing for a method without one.
+    fn dense_of_step<P: Problem<Scalar = S::Scalar, State = S>>(&mut self, p: &P, t: S::Scalar, y: &S) {
+        if self.dense.is_none() {
+            self.dense = Dense::new(&self.stages, self.k.len(), y).map(Box::new);
         }
+        let Some(dense) = self.dense.as_mut() else {
+            return;
+        };
         let h = self.last_h;
-        let added = self.added.get_or_insert_with(|| {
-            Box::new(AddedStages {
-                k: vec![y.zeros_like(); c.len()],
-                stage: y.zeros_like(),
-                of_step: None,
-            })
-        });
-        if added.of_step == Some((t, h)) {
-            return;
-        }
-        let (s, n) = (self.k.len(), self.k.len() + c.len());
-        for (e, &ce) in c.iter().enumerate() {
-            added.stage.copy_from(y);
-            for (j, &aj) in a[e * n..(e + 1) * n].iter().enumerate().filter(|(_, &aj)| aj != 0.0) {
-                let kj = if j < s { &self.k[j] } else { &added.k[j - s] };
-                added.stage.axpy(h * lit::<S::Scalar>(aj), kj);
+        if !dense.c.is_empty() && dense.of_step != Some((t, h)) {
+            let (s, n) = (self.k.len(), self.k.len() + dense.c.len());
+            for e in 0..dense.c.len() {
+                dense.stage.copy_from(y);
+                for (j, &aj) in dense.a[e * n..(e + 1) * n].iter().enumerate() {
+                    if aj != S::Scalar::zero() {
+                        let kj = if j < s { &self.k[j] } else { &dense.k[j - s] };
+                        dense.stage.axpy(h * aj, kj);
+                    }
+                }
+                p.rhs(t + dense.c[e] * h, &dense.stage, &mut dense.k[e]);
             }
-            p.rhs(t + lit::<S::Scalar>(ce) * h, &added.stage, &mut added.k[e]);
+            self.counters.evaluations += dense.c.len() as u64;
+            dense.of_step = Some((t, h));
         }
-        self.counters.evaluations += c.len() as u64;
-        added.of_step = Some((t, h));
     }
 
     /// A stepper over `stages`, with buffers shaped like `y0`.
@@ -210,7 +239,7 @@ impl<C: ExplicitStages<S>, S: State> ExplicitStepper<C, S> {
             k0_valid: false,
             last_h: num_traits::Zero::zero(),
             compensated: None,
-            added: None,
+            dense: None,
             counters: Counters::default(),
             stages,
         }
@@ -276,24 +305,22 @@ where
     /// `y + h sum_i b_i(theta) k_i` with the method's own `b_i(theta)`, over its stages and
     /// the ones its dense output adds (made once per step).
     fn interpolate(&mut self, p: &P, t: P::Scalar, theta: P::Scalar, y: &P::State, out: &mut P::State) -> bool {
-        if self.stages.dense_powers().is_none() {
+        let (h, s) = (self.last_h, self.k.len());
+        self.dense_of_step(p, t, y);
+        let Some(dense) = self.dense.as_deref() else {
             return false;
+        };
+        // theta^1 .. theta^m once, then each b_i(theta) as independent products
+        let mut power = [P::Scalar::zero(); MAX_POWERS];
+        let mut x = theta;
+        for p in &mut power[..dense.powers] {
+            *p = x;
+            x *= theta;
         }
-        self.add_stages(p, t, y);
         out.copy_from(y);
-        let added = self.added.as_ref().map_or(&[][..], |a| &a.k[..]);
-        let s = self.k.len();
-        for i in 0..s + added.len() {
-            let row = self.stages.dense_row(i);
-            if row.iter().all(|&d| d == 0.0) {
-                continue;
-            }
-            // b_i(theta) = theta (d_1 + theta (d_2 + ...)), Horner
-            let weight = row
-                .iter()
-                .rev()
-                .fold(P::Scalar::zero(), |w, &d| (w + lit::<P::Scalar>(d)) * theta);
-            out.axpy(self.last_h * weight, if i < s { &self.k[i] } else { &added[i - s] });
+        for (i, row) in &dense.rows {
+            let weight = row.iter().zip(&power).fold(P::Scalar::zero(), |w, (&d, &x)| w + d * x);
+            out.axpy(h * weight, if *i < s { &self.k[*i] } else { &dense.k[*i - s] });
         }
         true
     }
@@ -313,8 +340,8 @@ where
 
     fn reset(&mut self) {
         self.k0_valid = false;
-        if let Some(added) = self.added.as_mut() {
-            added.of_step = None;
+        if let Some(dense) = self.dense.as_mut() {
+            dense.of_step = None;
         }
         if let Some(sum) = self.compensated.as_mut() {
             sum.reset();

@@ -315,6 +315,9 @@ pub struct ImplicitRk<S: State> {
     newton: Option<Newton<S>>,
     /// `h` of the last successful step (what [`Stepper::accept`] keeps).
     last_h: Option<S::Scalar>,
+    /// The method's own continuous extension (a collocation method's polynomial): the
+    /// stages whose `b_i(theta)` is not zero, with its coefficients of theta^1 .. theta^m.
+    dense: Option<Vec<(usize, Vec<S::Scalar>)>>,
     /// The final update added with a carry, when compensated summation is on.
     compensated: Option<CompensatedSum<S>>,
     counters: Counters,
@@ -402,6 +405,12 @@ impl<T: Real, S: State<Scalar = T>> ImplicitRk<S> {
             },
             newton: None,
             last_h: None,
+            dense: tableau.dense().map(|rows| {
+                let nonzero = rows.iter().enumerate().filter(|(_, row)| row.iter().any(|&d| d != 0.0));
+                nonzero
+                    .map(|(i, row)| (i, row.iter().map(|&d| lit(d)).collect()))
+                    .collect()
+            }),
             compensated: None,
             counters: Counters::default(),
         }
@@ -685,6 +694,22 @@ impl<P: Problem> Stepper<P> for ImplicitRk<P::State> {
         self.finish(h, y, y_new);
         self.last_h = Some(h);
         Ok(())
+    }
+
+    /// `y + h sum_i b_i(theta) f(Y_i)` with the method's own `b_i(theta)` (a collocation
+    /// method's polynomial: order `s` for every theta), `f` as last evaluated: at the solver's
+    /// last iterate, within its tolerance of the converged stages.
+    fn interpolate(&mut self, _p: &P, _t: P::Scalar, theta: P::Scalar, y: &P::State, out: &mut P::State) -> bool {
+        let (Some(h), Some(dense)) = (self.last_h, self.dense.as_ref()) else {
+            return false;
+        };
+        out.copy_from(y);
+        for (i, row) in dense {
+            // b_i(theta) = theta (d_1 + theta (d_2 + ...)), Horner
+            let weight = row.iter().rev().fold(P::Scalar::zero(), |w, &d| (w + d) * theta);
+            out.axpy(h * weight, &self.f[*i]);
+        }
+        true
     }
 
     fn error_norm(&mut self, y: &P::State, y_new: &P::State, tol: &Tolerances<P::Scalar>) -> Option<P::Scalar> {
