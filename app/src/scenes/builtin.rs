@@ -173,7 +173,13 @@ pub fn parse(text: &str, origin: &str, name: &str) -> Result<AnyScene, Error> {
         DampedOscillator::MODEL => AnyScene::DampedOscillator(parse_as(&src, name)?),
         Pendulum::MODEL => AnyScene::Pendulum(parse_as(&src, name)?),
         CentralForce::<f64, DVector<f64>>::MODEL => AnyScene::CentralForce(parse_as(&src, name)?),
-        NBody::<f64, DVector<f64>>::MODEL => AnyScene::NBody(parse_as(&src, name)?),
+        NBody::<f64, DVector<f64>>::MODEL => {
+            let setup = parse_as::<NBody<f64, DVector<f64>>>(&src, name)?;
+            match setup.run.split {
+                Some(split) => AnyScene::NBody(setup).with_split(split)?,
+                None => AnyScene::NBody(setup),
+            }
+        }
         ChargedScene::MODEL => AnyScene::ChargedParticles(parse_as(&src, name)?),
         Charged::<RestrictedThreeBody>::MODEL => AnyScene::RestrictedThreeBody(parse_as(&src, name)?),
         SpinningBall::MODEL => AnyScene::SpinningBall(parse_as(&src, name)?),
