@@ -149,7 +149,7 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> KeplerSplit<T, S, K> {
             return Err(Error::invalid(
                 "bodies",
                 format!(
-                    "the {} needs a central body and at least one body orbiting it",
+                    "the {} split needs a central body and at least one body orbiting it",
                     coordinates.name()
                 ),
             ));
@@ -157,7 +157,7 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> KeplerSplit<T, S, K> {
         if !(1..=3).contains(&d) {
             return Err(Error::invalid(
                 "dimension",
-                format!("the {} runs in 1 to 3 dimensions, got {d}", coordinates.name()),
+                format!("the {} split runs in 1 to 3 dimensions, got {d}", coordinates.name()),
             ));
         }
         let (heaviest, &largest) = masses[1..]
@@ -170,7 +170,7 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> KeplerSplit<T, S, K> {
             return Err(Error::invalid(
                 "bodies",
                 format!(
-                    "the {} needs one dominant body, listed first, but no body dominates: {} has {ratio:.3} times \
+                    "the {} split needs one dominant body, listed first, but no body dominates: {} has {ratio:.3} times \
                      the mass of {} (the split accepts at most {MAX_MASS_RATIO}); run without the split",
                     coordinates.name(),
                     names[heaviest + 1],

@@ -46,6 +46,14 @@ pub const BUILTIN: &[BuiltinScene] = &[
         text: include_str!("../../../scenes/outer-solar-system.toml"),
     },
     BuiltinScene {
+        name: "outer-solar-system-6",
+        text: include_str!("../../../scenes/outer-solar-system-6.toml"),
+    },
+    BuiltinScene {
+        name: "solar-system-8",
+        text: include_str!("../../../scenes/solar-system-8.toml"),
+    },
+    BuiltinScene {
         name: "coulomb-magnetic",
         text: include_str!("../../../scenes/coulomb-magnetic.toml"),
     },
@@ -207,6 +215,8 @@ mod tests {
             ("kepler", "n-body"),
             ("kepler-e06", "central-force"),
             ("outer-solar-system", "n-body"),
+            ("outer-solar-system-6", "n-body"),
+            ("solar-system-8", "n-body"),
             ("coulomb-magnetic", "charged-particles"),
             ("cyclotron", "charged-particles"),
             ("exb-drift", "charged-particles"),
