@@ -108,6 +108,7 @@ fn wisdom_holman_is_in_the_methods_list() {
         .find(|l| l.starts_with("stormer_verlet_dkd"))
         .expect("stormer_verlet_dkd");
     assert!(line.contains("wisdom_holman"), "{line}");
+    assert!(out.contains("wisdom_holman (stormer_verlet_dkd) is the Wisdom-Holman method on an n-body scene run with --split kepler-jacobi"));
 }
 
 /// `--split` on a scene that is not an n-body one, and an unknown split: one line each.
