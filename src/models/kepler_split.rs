@@ -280,13 +280,20 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> KeplerSplit<T, S, K> {
         v
     }
 
-    /// Every body's Kepler motion (the first body's entry: free motion) for `tau`, ADDING
+    /// Every body's Kepler motion (the first body's entry, the centre of mass: free
+    /// motion) for `tau`, ADDING
     /// to `(dq, dp)` what it adds to `(q, p)`; `(dq, dp)` may be `(q, p)` themselves, by
     /// [`KeplerSplit::kepler_in_place`].
     #[inline(always)]
     fn kepler_increment(&self, tau: T, q: &[T], p: &[T], dq: &mut [T], dp: &mut [T]) {
         let d = self.bodies.dim();
-        for (k, &(mu, mass)) in self.kepler.iter().enumerate() {
+        // the centre of mass moves freely (a Kepler flow of mu = 0 would do it too, but
+        // its derivatives at mu = 0 are not finite on dual numbers)
+        let total = self.kepler[0].1;
+        for (dq, &p) in dq[..d].iter_mut().zip(&p[..d]) {
+            *dq += tau * p / total;
+        }
+        for (k, &(mu, mass)) in self.kepler.iter().enumerate().skip(1) {
             let (qk, pk) = (&q[k * d..(k + 1) * d], &p[k * d..(k + 1) * d]);
             let v = self.velocity(k, pk);
             let c = LagrangeCoefficients::new(mu, tau, qk, &v[..d]);
@@ -301,7 +308,11 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> KeplerSplit<T, S, K> {
     #[inline(always)]
     fn kepler_in_place(&self, tau: T, q: &mut [T], p: &mut [T]) {
         let d = self.bodies.dim();
-        for (k, &(mu, mass)) in self.kepler.iter().enumerate() {
+        let total = self.kepler[0].1;
+        for (q, &p) in q[..d].iter_mut().zip(&p[..d]) {
+            *q += tau * p / total;
+        }
+        for (k, &(mu, mass)) in self.kepler.iter().enumerate().skip(1) {
             let (qk, pk) = (&mut q[k * d..(k + 1) * d], &mut p[k * d..(k + 1) * d]);
             let v = self.velocity(k, pk);
             let c = LagrangeCoefficients::new(mu, tau, qk, &v[..d]);
