@@ -10,7 +10,8 @@
 //!
 //! And one step of Wisdom-Holman (`stormer_verlet_dkd` on [`KeplerSplit`] in Jacobi
 //! coordinates: a Kepler drift per planet, one interaction kick) on the outer solar system
-//! (`[f64; 24]`, dt = 10 days), against one step of velocity Verlet on the N-body problem.
+//! (`[f64; 24]`, dt = 10 days), the same in kick-drift-kick form (`velocity_verlet_kdk`,
+//! one drift per step), and one step of Stormer-Verlet on the N-body problem.
 //!
 //! Run: `cargo bench --bench kepler_drift`
 
@@ -19,7 +20,7 @@
 use std::hint::black_box;
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use stormer::catalog::StormerVerletDkd;
+use stormer::catalog::{StormerVerletDkd, VelocityVerletKdk};
 use stormer::kepler::KeplerDrift;
 use stormer::models::{KeplerCoordinates, KeplerSplit, NBody};
 use stormer::{SplittingStepper, Stepper};
@@ -116,13 +117,20 @@ fn wisdom_holman(c: &mut Criterion) {
     group.bench_function("wisdom_holman_jacobi", |b| {
         b.iter(|| run(&split, &mut stepper, black_box(&mut z), 1))
     });
+    // kick-drift-kick: one Kepler drift per planet and (FSAL) one force per step, the
+    // cost of WHFast's drift-kick-drift with the half drifts of consecutive steps merged
+    let mut x = split.from_scene(&y);
+    let mut kdk = SplittingStepper::<VelocityVerletKdk, [f64; 24]>::new(&x).unwrap();
+    group.bench_function("verlet_kdk_jacobi", |b| {
+        b.iter(|| run(&split, &mut kdk, black_box(&mut x), 1))
+    });
     let mut w = y;
     let mut verlet = SplittingStepper::<StormerVerletDkd, [f64; 24]>::new(&w).unwrap();
     group.bench_function("stormer_verlet_nbody", |b| {
         b.iter(|| run(&bodies, &mut verlet, black_box(&mut w), 1))
     });
     group.finish();
-    assert!(z.iter().chain(&w).all(|x| x.is_finite()));
+    assert!(z.iter().chain(&w).chain(&x).all(|x| x.is_finite()));
 }
 
 criterion_group!(benches, bench, wisdom_holman);

@@ -166,7 +166,7 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> KeplerSplit<T, S, K> {
             .max_by(|a, b| a.1.partial_cmp(b.1).unwrap_or(core::cmp::Ordering::Equal))
             .expect("at least two bodies");
         let ratio = to_f64(largest / masses[0]);
-        if !(ratio <= MAX_MASS_RATIO) {
+        if ratio.is_nan() || ratio > MAX_MASS_RATIO {
             return Err(Error::invalid(
                 "bodies",
                 format!(
