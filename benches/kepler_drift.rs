@@ -8,6 +8,11 @@
 //!   doublings of the Stumpff functions);
 //! - `hyperbola`: e = 1.5, from pericentre, `tau` alternating +-3 (in and out again).
 //!
+//! And one step of Wisdom-Holman (`stormer_verlet_dkd` on [`KeplerSplit`] in Jacobi
+//! coordinates: a Kepler drift per planet, one interaction kick) on the outer solar system
+//! (`[f64; 24]`, dt = 10 days), the same in kick-drift-kick form (`velocity_verlet_kdk`,
+//! one drift per step), and one step of Stormer-Verlet on the N-body problem.
+//!
 //! Run: `cargo bench --bench kepler_drift`
 
 #![allow(missing_docs)] // criterion_group! generates an undocumented function
@@ -15,7 +20,10 @@
 use std::hint::black_box;
 
 use criterion::{criterion_group, criterion_main, Criterion};
+use stormer::catalog::{StormerVerletDkd, VelocityVerletKdk};
 use stormer::kepler::KeplerDrift;
+use stormer::models::{KeplerCoordinates, KeplerSplit, NBody};
+use stormer::{SplittingStepper, Stepper};
 
 /// The state at pericentre of the conic of eccentricity `e` and semi-major axis 1 (or
 /// pericentre distance 0.5 for e >= 1), tilted out of the reference plane.
@@ -49,5 +57,81 @@ fn bench(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, bench);
+/// Sun, Jupiter, Saturn, Uranus (SCENES.md 4).
+fn outer_solar_system() -> (NBody<f64, [f64; 24]>, [f64; 24]) {
+    let masses = [1.00000597682, 0.000954786104043, 0.000285583733151, 0.0000437273164546];
+    let q = [
+        0.0,
+        0.0,
+        0.0,
+        -3.5023653,
+        -3.8169847,
+        -1.5507963,
+        9.0755314,
+        -3.0458353,
+        -1.6483708,
+        8.3101420,
+        -16.2901086,
+        -7.2521278,
+    ];
+    let v = [
+        0.0,
+        0.0,
+        0.0,
+        0.00565429,
+        -0.00412490,
+        -0.00190589,
+        0.00168318,
+        0.00483525,
+        0.00192462,
+        0.00354178,
+        0.00137102,
+        0.00055029,
+    ];
+    let bodies = NBody::new(2.95912208286e-4, &masses, 3).unwrap();
+    let mut y = [0.0; 24];
+    bodies.set_state(&q, &v, &mut y).unwrap();
+    (bodies, y)
+}
+
+/// `steps` steps of `stepper` on `problem` from `y`, in place.
+fn run<P, S>(problem: &P, stepper: &mut S, y: &mut [f64; 24], steps: usize)
+where
+    P: stormer::Problem<Scalar = f64, State = [f64; 24]>,
+    S: Stepper<P>,
+{
+    let mut next = *y;
+    for _ in 0..steps {
+        stepper.step(problem, 0.0, 10.0, y, &mut next).unwrap();
+        stepper.accept();
+        *y = next;
+    }
+}
+
+fn wisdom_holman(c: &mut Criterion) {
+    let (bodies, y) = outer_solar_system();
+    let split = KeplerSplit::new(bodies.clone(), KeplerCoordinates::Jacobi).unwrap();
+    let mut group = c.benchmark_group("outer_solar_system_step");
+    let mut z = split.from_scene(&y);
+    let mut stepper = SplittingStepper::<StormerVerletDkd, [f64; 24]>::new(&z).unwrap();
+    group.bench_function("wisdom_holman_jacobi", |b| {
+        b.iter(|| run(&split, &mut stepper, black_box(&mut z), 1))
+    });
+    // kick-drift-kick: one Kepler drift per planet and (FSAL) one force per step, the
+    // cost of WHFast's drift-kick-drift with the half drifts of consecutive steps merged
+    let mut x = split.from_scene(&y);
+    let mut kdk = SplittingStepper::<VelocityVerletKdk, [f64; 24]>::new(&x).unwrap();
+    group.bench_function("verlet_kdk_jacobi", |b| {
+        b.iter(|| run(&split, &mut kdk, black_box(&mut x), 1))
+    });
+    let mut w = y;
+    let mut verlet = SplittingStepper::<StormerVerletDkd, [f64; 24]>::new(&w).unwrap();
+    group.bench_function("stormer_verlet_nbody", |b| {
+        b.iter(|| run(&bodies, &mut verlet, black_box(&mut w), 1))
+    });
+    group.finish();
+    assert!(z.iter().chain(&w).chain(&x).all(|x| x.is_finite()));
+}
+
+criterion_group!(benches, bench, wisdom_holman);
 criterion_main!(benches);

@@ -87,6 +87,8 @@ pub mod guide {
     pub mod verification {}
     #[doc = include_str!("../docs/output-and-events.md")]
     pub mod output_and_events {}
+    #[doc = include_str!("../docs/kepler-split.md")]
+    pub mod kepler_split {}
 }
 
 /// The everyday items in one import.

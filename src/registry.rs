@@ -155,6 +155,12 @@ pub const ALIASES: &[(&str, &str, &str)] = &[
     ("KahanLi6", "kahan_li6", "OrdinaryDiffEq.jl"),
     ("KahanLi8", "kahan_li8", "OrdinaryDiffEq.jl"),
     ("SofSpa10", "sofroniou_spaletta10", "OrdinaryDiffEq.jl"),
+    (
+        "wisdom_holman",
+        "stormer_verlet_dkd",
+        "Wisdom and Holman 1991, REBOUND's WHFast (drift-kick-drift): the Wisdom-Holman method with --split \
+         kepler-jacobi",
+    ),
     ("leapfrog4", "triple_jump4", "REBOUND (LF4)"),
     ("LF6", "mclachlan_ss9", "REBOUND"),
     ("LF8", "mclachlan_ss17", "REBOUND"),

@@ -120,3 +120,37 @@ fn compensated_steps_do_not_allocate() {
         compensated_driver_allocations_for(1000)
     );
 }
+
+/// The allocations of a driver run of `steps` Wisdom-Holman steps (the triple jump over
+/// the Kepler split, compensated or not) of a star and three planets in `[f64; 24]`, in
+/// both coordinates.
+fn kepler_split_allocations_for(steps: u64, compensated: bool) -> Vec<usize> {
+    use stormer::models::{KeplerCoordinates, KeplerSplit, NBody};
+    let bodies = NBody::<f64, [f64; 24]>::new(1.0, &[1.0, 1e-3, 2e-3, 1e-4], 3).unwrap();
+    let mut y = [0.0; 24];
+    let q = [0.0, 0.0, 0.0, 1.0, 0.0, 0.1, 0.0, 2.0, 0.0, -3.0, 0.5, 0.0];
+    let v = [0.0, 0.0, 0.0, 0.0, 1.0, 0.0, -0.7, 0.0, 0.05, 0.0, -0.55, 0.1];
+    bodies.set_state(&q, &v, &mut y).unwrap();
+    KeplerCoordinates::ALL
+        .iter()
+        .map(|&c| {
+            let split = KeplerSplit::new(bodies.clone(), c).unwrap();
+            let y0 = split.from_scene(&y);
+            let mut jump = SplittingStepper::<TripleJump4, _>::new(&y0).unwrap();
+            if compensated {
+                Stepper::<KeplerSplit<f64, [f64; 24]>>::set_compensated(&mut jump, true).unwrap();
+            }
+            driver_run_allocations(&split, &mut jump, compensated, &y0, steps)
+        })
+        .collect()
+}
+
+#[test]
+fn kepler_split_steps_do_not_allocate() {
+    for compensated in [false, true] {
+        assert_eq!(
+            kepler_split_allocations_for(1, compensated),
+            kepler_split_allocations_for(1000, compensated)
+        );
+    }
+}

@@ -1,7 +1,9 @@
 //! Generic problems that many simulations share, in any scalar and state type: gravitating
 //! bodies ([`NBody`], with [`Orbit`] for the two-body solution), one body around a fixed
 //! centre ([`CentralForce`]) and charged particles in electric and magnetic fields
-//! ([`ChargedParticles`], run through [`crate::magnetic::Charged`]).
+//! ([`ChargedParticles`], run through [`crate::magnetic::Charged`]); and a planetary
+//! system split the Wisdom-Holman way ([`KeplerSplit`], in [`Jacobi`] or
+//! [`DemocraticHeliocentric`] coordinates).
 //!
 //! The application's scene files build these; a program uses them directly:
 //!
@@ -21,12 +23,18 @@
 
 mod central_force;
 mod charged_particles;
+mod democratic_heliocentric;
+mod jacobi;
+mod kepler_split;
 mod nbody;
 mod nbody_shape;
 mod orbit;
 
 pub use central_force::CentralForce;
 pub use charged_particles::{ChargedParticles, MagneticField};
+pub use democratic_heliocentric::DemocraticHeliocentric;
+pub use jacobi::Jacobi;
+pub use kepler_split::{KeplerCoordinates, KeplerSplit, MAX_MASS_RATIO};
 pub use nbody::NBody;
 pub use nbody_shape::{AnyShape, Bodies, Shape};
 pub use orbit::{eccentric_anomaly, Orbit};

@@ -1,7 +1,7 @@
 //! The whole verification of one method on the test problems: what `stormer verify`
 //! prints and the crate's own tests assert.
 
-use super::problems::{HenonHeiles, Pendulum, QuarticKinetic};
+use super::problems::{HenonHeiles, KeplerPlanets, Pendulum, QuarticKinetic};
 use super::{
     defect_bound, jacobian_dual, jacobian_fd, measure_global_order, measure_order, reversibility_defect, step_once,
     symplectic_defect, Canonical, GlobalOrderOptions, OrderMeasurement, OrderOptions, Precision,
@@ -28,7 +28,8 @@ pub const REVERSIBLE_FACTOR: f64 = 100.0;
 /// Where a check was worst: a test problem, a state and a step.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Case {
-    /// `"pendulum"`, `"henon_heiles"` or `"quartic_kinetic"`.
+    /// `"pendulum"`, `"henon_heiles"`, `"quartic_kinetic"` or (splittings and
+    /// compositions) `"kepler_planets"`.
     pub problem: &'static str,
     /// The state `(q, p)` stepped from.
     pub state: Vec<f64>,
@@ -102,8 +103,9 @@ const PLANAR_STATES: [[f64; 4]; 2] = [[0.1, -0.2, 0.3, 0.2], [-0.2, 0.25, 0.1, -
 /// [`measure_order`], on [`QuarticKinetic`] for a general method, [`HenonHeiles`] for one
 /// that needs a quadratic kinetic energy), the stability interval, symplecticity
 /// (exact and central-difference Jacobians) and reversibility on [`Pendulum`],
-/// [`HenonHeiles`] and (general methods) [`QuarticKinetic`], at two states each and
-/// `h = 0.1, 0.4`.
+/// [`HenonHeiles`], (general methods) [`QuarticKinetic`] and (splittings and
+/// compositions) [`KeplerPlanets`], whose drift is the exact Kepler flow, at two states
+/// each and `h = 0.1, 0.4`.
 ///
 /// ```
 /// use stormer::{verify::report, Method};
@@ -131,6 +133,19 @@ pub fn report(method: &Method) -> Result<Report, Error> {
                 cases.push(case::<QuarticKinetic<f64>, QuarticKinetic<Dual64>, 4>(
                     method,
                     "quartic_kinetic",
+                    y,
+                    h,
+                )?);
+            }
+        }
+    }
+    if method.splitting_source().is_some() {
+        // through the exact Kepler drift (a splitting's drift is its sub-flow)
+        for y in KeplerPlanets::<f64>::STATES {
+            for h in STEPS {
+                cases.push(case::<KeplerPlanets<f64>, KeplerPlanets<Dual64>, 12>(
+                    method,
+                    "kepler_planets",
                     y,
                     h,
                 )?);

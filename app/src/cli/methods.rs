@@ -99,6 +99,11 @@ fn table(rows: &[[String; 10]]) -> String {
     out
 }
 
+/// Under the table: what the alias astronomers look for means.
+const KEPLER_NOTE: &str =
+    "\nwisdom_holman (stormer_verlet_dkd) is the Wisdom-Holman method on an n-body scene run with \
+                           --split kepler-jacobi (docs/kepler-split.md)\n";
+
 /// Prints the catalog.
 pub fn run(format: TableFormat) -> anyhow::Result<()> {
     let infos: Vec<MethodInfo> = BUTCHER
@@ -108,7 +113,7 @@ pub fn run(format: TableFormat) -> anyhow::Result<()> {
         .chain(PARTICLE_METHODS.iter().map(|m| m.info()))
         .collect();
     let text = match format {
-        TableFormat::Table => table(&infos.iter().map(cells).collect::<Vec<_>>()),
+        TableFormat::Table => table(&infos.iter().map(cells).collect::<Vec<_>>()) + KEPLER_NOTE,
         TableFormat::Json => {
             let list: Vec<_> = infos.iter().map(json).collect();
             serde_json::to_string_pretty(&list)? + "\n"

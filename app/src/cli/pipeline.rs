@@ -6,6 +6,7 @@
 //! and `tour` all run scenes through [`SceneRun`], so they stop and measure alike.
 
 use super::section::Section;
+use std::borrow::Cow;
 use std::sync::atomic::AtomicBool;
 use stormer::driver::{Recorder, StopEvent};
 use stormer::{
@@ -216,8 +217,10 @@ impl<'s, S: Scene> SceneRun<'s, S> {
             };
         }
         if let Some(section) = &self.section {
-            let g = section.g();
-            driver = driver.event(move |t, y: &S::State| g(t, y.as_slice()), Crossing::Either, false);
+            let (g, model) = (section.g(), &self.setup.model);
+            // the section's columns are the scene's
+            let g = move |t, y: &S::State| g(t, model.scene_state(y).as_slice());
+            driver = driver.event(g, Crossing::Either, false);
         }
         if self.compensated {
             driver = driver.compensated();
@@ -314,6 +317,8 @@ struct Tracking<'a, S: Scene, R: ?Sized> {
 
 impl<S: Scene, R: Recorder<f64, S::State> + ?Sized> Recorder<f64, S::State> for Tracking<'_, S, R> {
     fn record(&mut self, t: f64, y: &S::State, energy: Option<f64>) -> Result<(), Error> {
+        // in the scene's coordinates from here on
+        let y = &*self.setup.model.scene_state(y);
         self.out.record(t, y, energy)?;
         let track = &mut self.track;
         if let Some(e) = energy {
@@ -338,8 +343,16 @@ impl<S: Scene, R: Recorder<f64, S::State> + ?Sized> Recorder<f64, S::State> for 
 
     fn event(&mut self, hit: &EventHit<f64, S::State>) -> Result<(), Error> {
         // the section is the run's only non-terminal event
-        if self.section.is_some_and(|s| s.admits(hit.y.as_slice())) {
-            self.out.event(hit)?;
+        let y = self.setup.model.scene_state(&hit.y);
+        if self.section.is_some_and(|s| s.admits(y.as_slice())) {
+            match y {
+                Cow::Borrowed(_) => self.out.event(hit)?,
+                Cow::Owned(y) => self.out.event(&EventHit {
+                    index: hit.index,
+                    t: hit.t,
+                    y,
+                })?,
+            }
         }
         Ok(())
     }

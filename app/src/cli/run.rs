@@ -7,6 +7,7 @@ use super::section::{Section, WithSection};
 use anyhow::anyhow;
 use std::io::Write;
 use std::path::{Path, PathBuf};
+use stormer::models::KeplerCoordinates;
 use stormer::{Error, ImplicitOptions, Stats, Tolerances};
 use stormer_app::scenes::{self, Scene, SceneVisitor, Setup};
 
@@ -64,6 +65,12 @@ pub struct RunArgs {
     /// 0 backward Euler, 1/2 trapezoidal [default: 0.5].
     #[arg(long, value_name = "A", allow_negative_numbers = true)]
     pub alpha: Option<f64>,
+    /// Run an n-body scene in the Wisdom-Holman split: every body's Kepler orbit about the
+    /// dominant one as the drift, their interaction as the kick (kepler-jacobi: Jacobi
+    /// coordinates, every method keeps its order; kepler-democratic: democratic
+    /// heliocentric, order 2) [default: the scene's `split`, else none].
+    #[arg(long, value_name = "SPLIT", value_parser = ["kepler-jacobi", "kepler-democratic"])]
+    pub split: Option<String>,
     /// Compensated (Kahan) summation of each step's increment, for long runs with small
     /// steps: round-off per step of order eps*h instead of eps (Runge-Kutta methods,
     /// splittings and compositions).
@@ -129,7 +136,11 @@ fn flag_hint(e: Error) -> anyhow::Error {
 /// Runs a scene.
 pub fn run(args: &RunArgs) -> anyhow::Result<()> {
     check(args)?;
-    scenes::load(&args.scene)?.visit(Runner { args })
+    let mut scene = scenes::load(&args.scene)?;
+    if let Some(split) = &args.split {
+        scene = scene.with_split(KeplerCoordinates::named(split)?)?;
+    }
+    scene.visit(Runner { args })
 }
 
 /// The run, generic over the scene's model.
@@ -264,7 +275,10 @@ impl SceneVisitor for Runner<'_> {
         flushed?;
         section_flushed?;
         let summary = summary(
-            &format!("{} on {}", method.name(), setup.name),
+            &match setup.run.split {
+                Some(split) => format!("{} on {} ({split})", method.name(), setup.name, split = split.name()),
+                None => format!("{} on {}", method.name(), setup.name),
+            },
             stats,
             matches!(options.steps, Steps::Adaptive { .. }),
             track,

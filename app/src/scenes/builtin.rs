@@ -46,6 +46,14 @@ pub const BUILTIN: &[BuiltinScene] = &[
         text: include_str!("../../../scenes/outer-solar-system.toml"),
     },
     BuiltinScene {
+        name: "outer-solar-system-6",
+        text: include_str!("../../../scenes/outer-solar-system-6.toml"),
+    },
+    BuiltinScene {
+        name: "solar-system-8",
+        text: include_str!("../../../scenes/solar-system-8.toml"),
+    },
+    BuiltinScene {
         name: "coulomb-magnetic",
         text: include_str!("../../../scenes/coulomb-magnetic.toml"),
     },
@@ -173,7 +181,13 @@ pub fn parse(text: &str, origin: &str, name: &str) -> Result<AnyScene, Error> {
         DampedOscillator::MODEL => AnyScene::DampedOscillator(parse_as(&src, name)?),
         Pendulum::MODEL => AnyScene::Pendulum(parse_as(&src, name)?),
         CentralForce::<f64, DVector<f64>>::MODEL => AnyScene::CentralForce(parse_as(&src, name)?),
-        NBody::<f64, DVector<f64>>::MODEL => AnyScene::NBody(parse_as(&src, name)?),
+        NBody::<f64, DVector<f64>>::MODEL => {
+            let setup = parse_as::<NBody<f64, DVector<f64>>>(&src, name)?;
+            match setup.run.split {
+                Some(split) => AnyScene::NBody(setup).with_split(split)?,
+                None => AnyScene::NBody(setup),
+            }
+        }
         ChargedScene::MODEL => AnyScene::ChargedParticles(parse_as(&src, name)?),
         Charged::<RestrictedThreeBody>::MODEL => AnyScene::RestrictedThreeBody(parse_as(&src, name)?),
         SpinningBall::MODEL => AnyScene::SpinningBall(parse_as(&src, name)?),
@@ -201,6 +215,8 @@ mod tests {
             ("kepler", "n-body"),
             ("kepler-e06", "central-force"),
             ("outer-solar-system", "n-body"),
+            ("outer-solar-system-6", "n-body"),
+            ("solar-system-8", "n-body"),
             ("coulomb-magnetic", "charged-particles"),
             ("cyclotron", "charged-particles"),
             ("exb-drift", "charged-particles"),

@@ -80,6 +80,8 @@ pub struct RunSettings {
     pub t_end: f64,
     /// Record every `every` steps (`>= 1`).
     pub every: u64,
+    /// The Wisdom-Holman split an n-body scene runs in (`split = "kepler-jacobi"`), if any.
+    pub split: Option<stormer::models::KeplerCoordinates>,
 }
 
 /// The units a scene file names (its optional `[units]` table), for the pictures' axis
@@ -149,6 +151,8 @@ struct RunTable {
     t_end: Number,
     #[serde(default)]
     every: Option<Spanned<u64>>,
+    #[serde(default)]
+    split: Option<Spanned<String>>,
 }
 
 impl RunTable {
@@ -168,6 +172,16 @@ impl RunTable {
             t0: self.t0.as_ref().map_or(Ok(0.0), |t| src.finite("run.t0", t))?,
             t_end: src.finite("run.t_end", &self.t_end)?,
             every,
+            split: self
+                .split
+                .as_ref()
+                .map(|s| {
+                    stormer::models::KeplerCoordinates::named(s.get_ref()).map_err(|e| {
+                        let reason = e.to_string();
+                        src.error_at(s.span(), format!("run.{}", reason.trim_start_matches("invalid ")))
+                    })
+                })
+                .transpose()?,
         })
     }
 }
@@ -204,6 +218,15 @@ pub(super) fn parse_as<S: Scene>(src: &Source<'_>, name: &str) -> Result<Setup<S
     let initial = file
         .initial
         .ok_or_else(|| src.error(format!("missing {} (the initial state)", S::INITIAL)))?;
+    if let Some(split) = file.run.split.as_ref().filter(|_| S::MODEL != "n-body") {
+        return Err(src.error_at(
+            split.span(),
+            format!(
+                "run.split is for n-body scenes with one dominant body, and this scene's model is {}",
+                S::MODEL
+            ),
+        ));
+    }
     let (model, y0) = S::build(file.parameters, initial, src)?;
     let run = file.run.check(src)?;
     Ok(Setup {

@@ -50,6 +50,7 @@ mod file;
 mod free_kick;
 mod harmonic;
 mod henon_heiles;
+mod kepler_split_file;
 mod nbody_file;
 mod pendulum;
 
@@ -62,6 +63,7 @@ pub use file::{Number, RunSettings, Source, Units};
 pub use free_kick::{KickInitial, SpinningBall, SpinningBallParameters};
 pub use harmonic::{Harmonic, HarmonicParameters, OscillatorInitial};
 pub use henon_heiles::{HenonHeiles, HenonHeilesInitial, HenonHeilesParameters, DEFAULT_ENERGY};
+pub use kepler_split_file::SplitBodies;
 pub use nbody_file::{BodyEntry, GravityParameters};
 pub use pendulum::{NoParameters, Pendulum, PendulumInitial, PENDULUM_PERIOD_45_DEGREES};
 
@@ -114,6 +116,13 @@ pub trait Scene: Problem<Scalar = f64> + Sized + 'static {
     /// ([`Driver::stop_when`](stormer::Driver::stop_when)).
     fn stop(&self) -> Option<Stop<Self>> {
         None
+    }
+
+    /// The state `y` of a run in the scene's coordinates, what its records show; the
+    /// identity for every model but one whose stepper runs in other coordinates (the
+    /// Wisdom-Holman split, [`SplitBodies`]).
+    fn scene_state<'a>(&self, y: &'a Self::State) -> std::borrow::Cow<'a, Self::State> {
+        std::borrow::Cow::Borrowed(y)
     }
 }
 
@@ -208,6 +217,9 @@ pub enum AnyScene {
     SpinningBall(Setup<SpinningBall>),
     /// `model = "henon-heiles"`: the Henon-Heiles system.
     HenonHeiles(Setup<HenonHeiles>),
+    /// `model = "n-body"` run in the Wisdom-Holman split (`split` in `[run]`, or
+    /// [`AnyScene::with_split`]).
+    KeplerSplit(Setup<SplitBodies>),
 }
 
 /// The model names a scene file can give, in the order of [`AnyScene`].
@@ -236,6 +248,7 @@ macro_rules! each {
             AnyScene::RestrictedThreeBody($s) => $body,
             AnyScene::SpinningBall($s) => $body,
             AnyScene::HenonHeiles($s) => $body,
+            AnyScene::KeplerSplit($s) => $body,
         }
     };
 }
@@ -254,6 +267,11 @@ impl AnyScene {
     /// The scene's name.
     pub fn name(&self) -> &str {
         each!(self, s => &s.name)
+    }
+
+    /// Where it was read from: `built-in` or the file's path.
+    pub fn origin(&self) -> &str {
+        each!(self, s => &s.origin)
     }
 
     /// The scene's run settings.
