@@ -23,6 +23,7 @@ mod central_force;
 mod charged_particles;
 mod nbody;
 mod nbody_shape;
+mod nbody_tiles;
 mod orbit;
 
 pub use central_force::CentralForce;
