@@ -16,11 +16,12 @@
 //!   its contributions round after round, in an order fixed by the blocks alone.
 //! - **Test particles** (the bodies from `active` on) feel the active bodies and pull none:
 //!   each one's row over the active bodies, in registers, without third law (`O(N M)`).
-//! - **SIMD.** The lane loops are plain Rust over `[F; L]` arrays (`L` = 4 for `f64`, 8 for
-//!   `f32`: one 256-bit register), which LLVM vectorizes; `multiversion` compiles them for
-//!   AVX2 and AVX too and picks the best at run time (a default x86-64 build has only
-//!   SSE2). There is no fused multiply-add (Rust does not contract `a * b + c`), so every
-//!   version rounds alike: the forces do not depend on the CPU's features either.
+//! - **SIMD.** Chunks of `L` bodies (`L` = 4 for `f64`, 8 for `f32`: one 256-bit register).
+//!   The hot loop runs in AVX2 registers through `pulp` (a safe API; the CPU's AVX2 and FMA
+//!   found at run time, as a default x86-64 build has only SSE2); elsewhere the same loop in
+//!   plain Rust over `[F; L]` arrays, which the compiler vectorizes for the build's target.
+//!   Neither uses a fused multiply-add: both round alike, so the forces do not depend on the
+//!   CPU's features either (a unit test compares the two loops bit for bit).
 //! - **Memory.** The blocks live in a scratch kept per thread (grown on the first call, never
 //!   per step): `2 D + 2` numbers per body slot.
 
@@ -520,6 +521,19 @@ fn pull_chunks<F: Lane, const D: usize, const L: usize>(
         None if F::pull_chunks_avx2(qi, gmi, (position, mass), fi, None) => return,
         None => None,
     };
+    pull_chunks_portable(qi, gmi, (position, mass), fi, fj)
+}
+
+/// [`pull_chunks`]'s loop in plain Rust over the lanes (vectorized by the compiler for the
+/// build's target: SSE2 on a default x86-64 build).
+#[inline(always)]
+fn pull_chunks_portable<F: Lane, const D: usize, const L: usize>(
+    qi: &[F; D],
+    gmi: F,
+    (position, mass): (&[Chunk<F, D, L>], &[[F; L]]),
+    fi: &mut Chunk<F, D, L>,
+    fj: Option<&mut [Chunk<F, D, L>]>,
+) {
     let chunks = position.iter().zip(mass);
     match fj {
         Some(fj) => {
@@ -656,6 +670,61 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// The AVX2 loop and the portable one give the same bits (where this CPU has AVX2).
+    fn same_bits_on_both_loops<F: Lane, const L: usize>() {
+        let frac = |x: f64| F::from_f64(x - x.floor());
+        let chunks = 37;
+        let position: Vec<Chunk<F, 3, L>> = (0..chunks)
+            .map(|k| {
+                core::array::from_fn(|c| {
+                    core::array::from_fn(|l| frac(((k * 3 + c) * L + l) as f64 * 0.7548776662466927))
+                })
+            })
+            .collect();
+        let mass: Vec<[F; L]> = (0..chunks)
+            .map(|k| core::array::from_fn(|l| frac((k * L + l) as f64 * 0.6180339887498949)))
+            .collect();
+        let qi = [F::from_f64(0.25), F::from_f64(-0.5), F::from_f64(1.5)];
+        for third_law in [true, false] {
+            let (mut fi_a, mut fi_b) = ([[F::ZERO; L]; 3], [[F::ZERO; L]; 3]);
+            let (mut fj_a, mut fj_b) = (vec![[[F::ONE; L]; 3]; chunks], vec![[[F::ONE; L]; 3]; chunks]);
+            fn lend<T>(f: &mut [T], on: bool) -> Option<&mut [T]> {
+                on.then_some(f)
+            }
+            if !F::pull_chunks_avx2(
+                &qi,
+                F::from_f64(0.3),
+                (&position, &mass),
+                &mut fi_a,
+                lend(&mut fj_a, third_law),
+            ) {
+                return; // no AVX2 here
+            }
+            pull_chunks_portable(
+                &qi,
+                F::from_f64(0.3),
+                (&position, &mass),
+                &mut fi_b,
+                lend(&mut fj_b, third_law),
+            );
+            let bits = |v: &[Chunk<F, 3, L>]| {
+                v.iter()
+                    .flatten()
+                    .flatten()
+                    .map(|x| x.to_f64().to_bits())
+                    .collect::<Vec<_>>()
+            };
+            assert_eq!(bits(&[fi_a]), bits(&[fi_b]));
+            assert_eq!(bits(&fj_a), bits(&fj_b));
+        }
+    }
+
+    #[test]
+    fn the_avx2_and_the_portable_loops_give_the_same_bits() {
+        same_bits_on_both_loops::<f64, 4>();
+        same_bits_on_both_loops::<f32, 8>();
     }
 
     #[test]
