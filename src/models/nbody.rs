@@ -14,7 +14,9 @@ use core::marker::PhantomData;
 ///
 /// Each pair is computed once and its force added to one body and subtracted from the
 /// other (Newton's third law), so the forces sum to zero up to the rounding of those
-/// additions. The kinetic energy is quadratic: every splitting and composition applies,
+/// additions. From 16 bodies (`f64`, `f32`) the pairs are computed in SIMD registers, from
+/// 256 on rayon's threads, with the same bits on any number of threads; the first
+/// [`NBody::active`] bodies pull, the others are test particles ([`NBody::with_active`]). The kinetic energy is quadratic: every splitting and composition applies,
 /// Runge-Kutta-Nystrom methods included, and every Runge-Kutta method runs on the
 /// first-order form.
 ///
@@ -83,7 +85,7 @@ impl<T: Real, S, K> core::fmt::Debug for NBody<T, S, K> {
 
 /// Fewest bodies for the SIMD blocks (fewer: the unrolled kernels up to 6 bodies, the loops
 /// beyond), measured in `benches/nbody_scaling.rs`.
-pub(super) const SIMD_MIN: usize = 8;
+pub(super) const SIMD_MIN: usize = 16;
 
 /// Fewest bodies for rayon's threads (fewer: one thread, the same forces bit for bit),
 /// measured in `benches/nbody_scaling.rs`.

@@ -245,7 +245,8 @@ impl Layout {
     pub(super) fn new(n: usize, active: usize, lanes: usize) -> Self {
         let up = |x: usize, m: usize| x.div_ceil(m) * m;
         // at most MAX_BLOCKS - 2 blocks' worth of bodies: the two kinds round up once each
-        let block = up(BLOCK_MIN.max(n.div_ceil(MAX_BLOCKS - 2)), lanes.max(8));
+        // (fewer bodies than BLOCK_MIN: one block just large enough)
+        let block = up(BLOCK_MIN.min(n).max(n.div_ceil(MAX_BLOCKS - 2)), lanes.max(8));
         Layout {
             n,
             active,
@@ -381,6 +382,16 @@ type Tile<'a, F, const D: usize, const L: usize> = (usize, usize, &'a mut [Chunk
 /// Triangles, then tiles round by round, then the test particles' rows.
 fn schedule<F: Lane, const D: usize, const L: usize>(layout: Layout, scratch: &mut Scratch<F, D, L>, parallel: bool) {
     let per = layout.block / L;
+    if layout.blocks() == 1 && layout.test_blocks == 0 {
+        // one block, its triangle: what the rounds below come to, without their arrays
+        let block = Block {
+            position: &scratch.position,
+            mass: &scratch.mass,
+            gm: &scratch.gm,
+            filled: layout.n,
+        };
+        return triangle::<F, D, L>(block, &mut scratch.force);
+    }
     let blocks: [Block<'_, F, D, L>; MAX_BLOCKS] = core::array::from_fn(|k| {
         let k = k.min(layout.blocks());
         let range = (k * per).min(scratch.mass.len())..((k + 1) * per).min(scratch.mass.len());
@@ -733,7 +744,7 @@ mod tests {
             for active in [0, 1, n / 3, n - 1, n] {
                 let layout = Layout::new(n, active, 4);
                 assert!(layout.blocks() <= MAX_BLOCKS, "{layout:?}");
-                assert!(layout.block % 8 == 0 && layout.block >= BLOCK_MIN);
+                assert!(layout.block % 8 == 0 && layout.block >= BLOCK_MIN.min(n));
                 let filled: usize = (0..layout.blocks()).map(|k| layout.filled(k)).sum();
                 assert_eq!(filled, n, "{layout:?}");
             }
