@@ -4,13 +4,13 @@
 //! `NBody<T, DVector<T>>`, the scene file's problem, for N = 2 to 10^4, `f64` and `f32`, on a
 //! rayon pool of 1 and of 2 threads.
 //!
-//! 1. criterion: one step per iteration, throughput in pairs (`N (N - 1) / 2` per step), for
+//! 1. memory per body: the bytes held by the problem, the state and the stepper, and by the
+//!    force's scratch blocks, over N;
+//! 2. criterion: one step per iteration, throughput in pairs (`N (N - 1) / 2` per step), for
 //!    each precision, thread count and N (`nbody/f64/1/1000` ...);
-//! 2. a table, interleaved (each round times 1 and 2 threads one after the other, so that a
+//! 3. a table, interleaved (each round times 1 and 2 threads one after the other, so that a
 //!    change of load falls on both): ns per step and per pair, min over the rounds, and the
-//!    ratio 1 thread / 2 threads;
-//! 3. memory per body: the bytes held by the problem, the state, the stepper and the force's
-//!    scratch blocks, over N.
+//!    ratio 1 thread / 2 threads.
 //!
 //! Run: `cargo bench --bench nbody_scaling` (the table alone: `cargo bench --bench nbody_scaling -- --table`)
 
@@ -135,23 +135,34 @@ fn table() {
     }
 }
 
-/// Bytes held per body by the problem, the state, the stepper and the scratch of one force
-/// evaluation on this thread (its first: the scratch grows to fit).
+/// Bytes held per body: by the problem, the state and the stepper; and by the force's scratch
+/// blocks (one per thread that evaluates forces), grown by a first evaluation. Run first, on
+/// a thread of its own, before any pool or scratch exists.
 fn memory() {
-    println!("\nmemory per body (problem + state + velocity Verlet stepper + force scratch, f64, 3-D):");
-    for n in [1000, 10_000, 100_000] {
-        let before = HELD.load(Ordering::Relaxed);
-        let (nb, y, st) = setup::<f64>(n);
-        let mut f = vec![0.0; 3 * n];
-        nb.force(0.0, &y.as_slice()[..3 * n], &mut f);
-        drop(f);
-        let held = HELD.load(Ordering::Relaxed) - before;
-        println!("  N = {n}: {:.0} bytes per body", held as f64 / n as f64);
-        black_box((nb, y, st));
-    }
+    println!("\nmemory per body (f64, 3-D, velocity Verlet; scratch: per thread that evaluates forces):");
+    std::thread::spawn(|| {
+        for n in [1000, 10_000] {
+            let before = HELD.load(Ordering::Relaxed);
+            let (nb, y, st) = setup::<f64>(n);
+            let held = HELD.load(Ordering::Relaxed) - before;
+            let mut f = vec![0.0; 3 * n];
+            let before = HELD.load(Ordering::Relaxed);
+            nb.force(0.0, &y.as_slice()[..3 * n], &mut f);
+            let scratch = HELD.load(Ordering::Relaxed) - before;
+            println!(
+                "  N = {n}: problem + state + stepper {:.0} bytes per body, force scratch {:.0} bytes per body",
+                held as f64 / n as f64,
+                scratch as f64 / n as f64
+            );
+            black_box((nb, y, st, f));
+        }
+    })
+    .join()
+    .unwrap();
 }
 
 fn main() {
+    memory();
     let table_only = std::env::args().any(|a| a == "--table");
     if !table_only {
         let mut c = Criterion::default()
@@ -163,5 +174,4 @@ fn main() {
         c.final_summary();
     }
     table();
-    memory();
 }
