@@ -158,8 +158,8 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> NBody<T, S, K> {
     /// use stormer::models::NBody;
     /// use stormer::Hamiltonian;
     /// // a star and a test particle one unit away, G = 1: the star feels nothing
-    /// let nb = NBody::<f64, Vec<f64>>::new(1.0, &[1.0, 1e-3], 1).unwrap().with_active(1).unwrap();
-    /// let mut f = vec![0.0; 2];
+    /// let nb = NBody::<f64, [f64; 4]>::new(1.0, &[1.0, 1e-3], 1).unwrap().with_active(1).unwrap();
+    /// let mut f = [0.0; 2];
     /// nb.force(0.0, &[0.0, 1.0], &mut f);
     /// assert_eq!(f, [0.0, -1e-3]);
     /// ```
