@@ -12,7 +12,7 @@
 //!    change of load falls on both): ns per step and per pair, min over the rounds, and the
 //!    ratio 1 thread / 2 threads.
 //!
-//! Run: `cargo bench --bench nbody_scaling` (the table alone: `cargo bench --bench nbody_scaling -- --table`)
+//! Run: `cargo bench --features parallel --bench nbody_scaling` (memory and the table alone: `... -- --table`)
 
 #[path = "support/star_and_disc.rs"]
 mod star_and_disc;

@@ -3,8 +3,8 @@
 //! beside REBOUND, and the figures of docs/benchmarks.md ("Many bodies").
 //!
 //! ```text
-//! cargo run --release --example nbody_timing -- time N [--threads T] [--f32] [--steps S] [--reps R] [--active M]
-//! cargo run --release --example nbody_timing -- state N     # the initial values, for REBOUND
+//! cargo run --release --features parallel --example nbody_timing -- time N [--threads T] [--f32] [--steps S] [--reps R] [--active M]
+//! cargo run --release --features parallel --example nbody_timing -- state N     # the initial values, for REBOUND
 //! ```
 //!
 //! `time` prints `{"n", "active", "threads", "precision", "steps", "ns_per_step", "ns_per_pair"}`,

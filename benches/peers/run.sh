@@ -20,7 +20,7 @@ if ! "$venv/bin/python" -c "import rebound" 2>/dev/null; then
 fi
 if [ "${1:-}" = nbody ]; then
     shift
-    cargo build --release --example nbody_timing
+    cargo build --release --example nbody_timing --features parallel
     exec "$venv/bin/python" benches/peers/nbody.py "$@"
 fi
 cargo build --release --example outer_solar_front

@@ -87,8 +87,10 @@ impl<T: Real, S, K> core::fmt::Debug for NBody<T, S, K> {
 /// beyond), measured in `benches/nbody_scaling.rs`.
 pub(super) const SIMD_MIN: usize = 16;
 
-/// Fewest bodies for rayon's threads (fewer: one thread, the same forces bit for bit),
-/// measured in `benches/nbody_scaling.rs`.
+/// Fewest bodies for rayon's threads (fewer: one thread, the same forces bit for bit): two
+/// blocks, the fewest with tiles to share. Not yet confirmed by a timing on two free cores
+/// (`benches/nbody_scaling.rs`, docs/benchmarks.md "Many bodies").
+#[cfg_attr(not(feature = "parallel"), allow(dead_code))]
 pub(super) const PARALLEL_MIN: usize = 256;
 
 impl<T: Real, S: State<Scalar = T>, K: Shape> NBody<T, S, K> {
@@ -455,13 +457,16 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> NBody<T, S, K> {
 
     /// The forces in blocks of SIMD lanes ([`super::nbody_tiles`]) when the scalar is `f64`
     /// or `f32` and the dimension 1 to 3 (`false` otherwise, nothing written). On rayon's
-    /// threads from [`PARALLEL_MIN`] bodies: the blocks depend on the bodies alone, so the
+    /// threads from [`PARALLEL_MIN`] bodies (feature `parallel`): the blocks depend on the bodies alone, so the
     /// forces are the same bits on one thread or many.
     fn simd_forces(&self, q: &[T], f: &mut [T]) -> bool {
         use super::nbody_tiles::{forces, Lane, Layout};
         use core::any::TypeId;
         let n = self.masses.len();
+        #[cfg(feature = "parallel")]
         let parallel = n >= PARALLEL_MIN && rayon::current_num_threads() > 1;
+        #[cfg(not(feature = "parallel"))]
+        let parallel = false;
         macro_rules! blocks {
             ($f:ty, $lanes:literal) => {{
                 let layout = Layout::new(n, self.active, $lanes);

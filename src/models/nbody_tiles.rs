@@ -28,6 +28,7 @@
 use core::any::Any;
 use core::cell::RefCell;
 use core::ops::{Add, Div, Mul, Sub};
+#[cfg(feature = "parallel")]
 use rayon::prelude::*;
 
 /// Most blocks of one problem: bounds the stack arrays of block slices (no allocation).
@@ -360,13 +361,15 @@ pub(super) fn forces<T: Copy, F: Lane, const D: usize, const L: usize>(
     })
 }
 
-/// Runs `work` on every item, on rayon's threads when `parallel`.
+/// Runs `work` on every item, on rayon's threads when `parallel` (and feature `parallel`).
 fn each<I: Send>(items: &mut [I], parallel: bool, work: impl Fn(&mut I) + Sync + Send) {
+    #[cfg(feature = "parallel")]
     if parallel {
-        items.par_iter_mut().with_max_len(1).for_each(work)
-    } else {
-        items.iter_mut().for_each(work)
+        return items.par_iter_mut().with_max_len(1).for_each(work);
     }
+    #[cfg(not(feature = "parallel"))]
+    let _ = parallel;
+    items.iter_mut().for_each(work)
 }
 
 /// The pairs of round `r` of a round-robin tournament of `teams` (even) teams: every pair
