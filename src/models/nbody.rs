@@ -15,10 +15,11 @@ use core::marker::PhantomData;
 /// Each pair is computed once and its force added to one body and subtracted from the
 /// other (Newton's third law), so the forces sum to zero up to the rounding of those
 /// additions. From 16 bodies (`f64`, `f32`) the pairs are computed in SIMD registers, from
-/// 256 on rayon's threads, with the same bits on any number of threads; the first
-/// [`NBody::active`] bodies pull, the others are test particles ([`NBody::with_active`]). The kinetic energy is quadratic: every splitting and composition applies,
-/// Runge-Kutta-Nystrom methods included, and every Runge-Kutta method runs on the
-/// first-order form.
+/// 256 on rayon's threads (feature `parallel`), with the same bits on any number of
+/// threads; the first [`NBody::active`] bodies pull, the others are test particles
+/// ([`NBody::with_active`]). The kinetic energy is quadratic: every splitting and
+/// composition applies, Runge-Kutta-Nystrom methods included, and every Runge-Kutta method
+/// runs on the first-order form.
 ///
 /// Generic over the scalar and the state: `[f64; 24]` for the four-body outer solar system
 /// in a benchmark (no heap allocation per step), `DVector<f64>` for a scene file with any
