@@ -28,6 +28,7 @@ mod jacobi;
 mod kepler_split;
 mod nbody;
 mod nbody_shape;
+mod nbody_tiles;
 mod orbit;
 
 pub use central_force::CentralForce;
