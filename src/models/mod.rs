@@ -1,7 +1,8 @@
 //! Generic problems that many simulations share, in any scalar and state type: gravitating
 //! bodies ([`NBody`], with [`Orbit`] for the two-body solution), one body around a fixed
 //! centre ([`CentralForce`]) and charged particles in electric and magnetic fields
-//! ([`ChargedParticles`], run through [`crate::magnetic::Charged`]).
+//! ([`ChargedParticles`], run through [`crate::magnetic::Charged`]; at speeds close to
+//! light, [`RelativisticParticles`]).
 //!
 //! The application's scene files build these; a program uses them directly:
 //!
@@ -21,15 +22,21 @@
 
 mod central_force;
 mod charged_particles;
+mod external_fields;
+mod magnetic_field;
 mod nbody;
 mod nbody_shape;
 mod orbit;
+mod relativistic_particles;
 
 pub use central_force::CentralForce;
-pub use charged_particles::{ChargedParticles, MagneticField};
+pub use charged_particles::ChargedParticles;
+pub use external_fields::ExternalFields;
+pub use magnetic_field::MagneticField;
 pub use nbody::NBody;
 pub use nbody_shape::{AnyShape, Bodies, Shape};
 pub use orbit::{eccentric_anomaly, Orbit};
+pub use relativistic_particles::RelativisticParticles;
 
 /// `names` if there is one per member (`count` of them, called `what`: "bodies",
 /// "particles"), else an error saying how many of each there are.
