@@ -1,11 +1,13 @@
 //! Pushing particles that do not interact, chunk by chunk: in parallel on every core
-//! (rayon) above [`PARALLEL_FROM`] particles, one after the other below.
+//! (rayon, with the crate's feature `parallel`) above [`PARALLEL_FROM`] particles, one
+//! after the other below (and always without the feature).
 //!
 //! The chunks are fixed ([`CHUNK`] particles each, whatever the number of threads) and
 //! each particle's push reads only its own state and the fields, so the result is bitwise
 //! the same on 1 thread or many (`tests/many_particles.rs`).
 
 use crate::Error;
+#[cfg(feature = "parallel")]
 use rayon::prelude::*;
 
 /// Particles per chunk, the unit of work of a thread (a few thousand: enough to hide the
@@ -25,16 +27,16 @@ where
     T: Send,
     F: Fn(usize, &mut [T], &mut [T]) -> Result<(), Error> + Sync,
 {
-    let particles = q.len() / 3;
-    if particles < PARALLEL_FROM {
+    #[cfg(feature = "parallel")]
+    if q.len() / 3 >= PARALLEL_FROM {
         return q
-            .chunks_mut(3 * CHUNK)
-            .zip(v.chunks_mut(3 * CHUNK))
+            .par_chunks_mut(3 * CHUNK)
+            .zip(v.par_chunks_mut(3 * CHUNK))
             .enumerate()
             .try_for_each(|(c, (q, v))| push(c * CHUNK, q, v));
     }
-    q.par_chunks_mut(3 * CHUNK)
-        .zip(v.par_chunks_mut(3 * CHUNK))
+    q.chunks_mut(3 * CHUNK)
+        .zip(v.chunks_mut(3 * CHUNK))
         .enumerate()
         .try_for_each(|(c, (q, v))| push(c * CHUNK, q, v))
 }
