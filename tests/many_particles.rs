@@ -31,7 +31,7 @@ impl Sample {
     }
 }
 
-/// `n` particles of two species in a magnetic bottle and a uniform E: positions in a box,
+/// `n` particles of two species (ratios -1 and 1/2) in a magnetic bottle and a uniform E: positions in a box,
 /// velocities up to 1.
 fn bottle(n: usize) -> (ChargedParticles<f64, DVector<f64>>, DVector<f64>) {
     let masses: Vec<f64> = (0..n).map(|k| if k % 2 == 0 { 1.0 } else { 4.0 }).collect();
@@ -81,14 +81,24 @@ fn boris_steps<L: Lorentz<Scalar = f64, State = DVector<f64>>>(
 
 #[test]
 fn boris_pushes_independent_particles_with_the_numbers_of_its_general_loop() {
-    let (model, y0) = bottle(1000);
-    assert!(model.external_fields().is_some());
-    for rotation in [BorisRotation::Cayley, BorisRotation::ExactPhase] {
-        let fast = boris_steps(rotation, &Charged(model.clone()), &y0, 50);
-        let general = boris_steps(rotation, &Charged(Coupled(model.clone())), &y0, 50);
-        assert!(fast.iter().zip(&general).all(|(a, b)| a.to_bits() == b.to_bits()), "{rotation:?}");
-        assert!(fast != y0);
+    // 1003 particles: lanes of 4 in a uniform field, and 3 pushed one by one
+    let (bottled, y0) = bottle(1003);
+    assert!(bottled.external_fields().is_some());
+    let uniform = bottled.clone().with_field(MagneticField::uniform_b([0.3, -0.2, 1.1]));
+    let none = bottled.clone().with_field(MagneticField::None);
+    for model in [bottled.clone(), uniform, none] {
+        for rotation in [BorisRotation::Cayley, BorisRotation::ExactPhase] {
+            let fast = boris_steps(rotation, &Charged(model.clone()), &y0, 50);
+            let general = boris_steps(rotation, &Charged(Coupled(model.clone())), &y0, 50);
+            assert!(
+                fast.iter().zip(&general).all(|(a, b)| a.to_bits() == b.to_bits()),
+                "{rotation:?} in {:?}",
+                model.field()
+            );
+            assert!(fast != y0);
+        }
     }
+    let model = bottled;
     // a centre (or a quadrupole, or interaction) couples them to more than the fields
     assert!(model.clone().with_centre(1.0).external_fields().is_none());
 }

@@ -1,6 +1,7 @@
 //! The Boris-Buneman method for charged particles, with the classic Cayley rotation or
 //! with the exact rotation angle.
 
+use super::boris_lanes::push_lanes;
 use super::particle_chunks::try_for_each_chunk;
 use super::{Counters, ParticleMethod, Stepper};
 use crate::hamiltonian::halves_mut;
@@ -193,7 +194,8 @@ impl<S: State> Boris<S> {
 
 /// One Boris step of particles `first, first + 1, ...` (positions `q`, velocities `v`)
 /// that feel only the external `fields`: the same operations, in the same order, as
-/// [`Boris::advance`]'s general loop, particle by particle.
+/// [`Boris::advance`]'s general loop, particle by particle (in a uniform field, lanes of
+/// particles at once, [`push_lanes`], then the rest one by one).
 #[inline(always)]
 fn push_each<T: Real>(
     rotation: BorisRotation,
@@ -204,6 +206,12 @@ fn push_each<T: Real>(
     q: &mut [T],
     v: &mut [T],
 ) -> Result<(), Error> {
+    let (q, v, first) = if rotation == BorisRotation::Cayley && fields.magnetic().is_uniform() {
+        let done = push_lanes(fields, h, first, q, v);
+        (&mut q[3 * done..], &mut v[3 * done..], first + done)
+    } else {
+        (q, v, first)
+    };
     let half = lit::<T>(0.5) * h;
     for (j, (qk, vk)) in q.chunks_exact_mut(3).zip(v.chunks_exact_mut(3)).enumerate() {
         let k = first + j;

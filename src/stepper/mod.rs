@@ -3,6 +3,7 @@
 //! A stepper owns its stage buffers, so stepping never allocates for static states.
 
 mod boris;
+mod boris_lanes;
 mod compensated;
 mod composed;
 mod error_norm;
