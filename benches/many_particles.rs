@@ -144,10 +144,31 @@ fn main() {
             kernel("boris", &classical, boris(), &y0, steps, &one),
             kernel("boris (all threads)", &classical, boris(), &y0, steps, &all),
             kernel("exact gyration (verlet)", &classical, verlet(), &y0, steps, &one),
-            kernel("boris_relativistic", &relativistic, push(RelativisticMethod::BorisRelativistic), &y0, steps, &one),
+            kernel(
+                "boris_relativistic",
+                &relativistic,
+                push(RelativisticMethod::BorisRelativistic),
+                &y0,
+                steps,
+                &one,
+            ),
             kernel("vay", &relativistic, push(RelativisticMethod::Vay), &y0, steps, &one),
-            kernel("higuera_cary", &relativistic, push(RelativisticMethod::HigueraCary), &y0, steps, &one),
-            kernel("higuera_cary (all threads)", &relativistic, push(RelativisticMethod::HigueraCary), &y0, steps, &all),
+            kernel(
+                "higuera_cary",
+                &relativistic,
+                push(RelativisticMethod::HigueraCary),
+                &y0,
+                steps,
+                &one,
+            ),
+            kernel(
+                "higuera_cary (all threads)",
+                &relativistic,
+                push(RelativisticMethod::HigueraCary),
+                &y0,
+                steps,
+                &all,
+            ),
         ];
         let mut wall = vec![f64::INFINITY; kernels.len()];
         let mut cpu = vec![0.0; kernels.len()];
@@ -161,7 +182,11 @@ fn main() {
         let pushes = (steps * n) as f64;
         println!("\nN = {n} ({steps} steps per run, {rounds} rounds): ns per push, min wall and CPU");
         for (k, (name, _)) in kernels.iter().enumerate() {
-            println!("  {name:<30} {:7.2} {:7.2}", wall[k] / pushes, cpu[k] / (rounds as f64 * pushes));
+            println!(
+                "  {name:<30} {:7.2} {:7.2}",
+                wall[k] / pushes,
+                cpu[k] / (rounds as f64 * pushes)
+            );
         }
         n *= 10;
     }

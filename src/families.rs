@@ -186,15 +186,19 @@ impl<T: Real, S: State<Scalar = T> + 'static> Families<RelativisticParticles<T, 
     /// sentence saying why.
     pub fn relativistic_particles() -> Self {
         Families {
-            splitting: Err("the particles are relativistic (state x, u = gamma v): the drift and kick of the \
+            splitting: Err(
+                "the particles are relativistic (state x, u = gamma v): the drift and kick of the \
                             splittings are those of non-relativistic particles; use boris_relativistic, vay or \
                             higuera_cary"
-                .into()),
+                    .into(),
+            ),
             quadratic_kinetic: Err(NOT_QUADRATIC),
-            particle: Err("it is a non-relativistic pusher (state q, v, speeds unbounded), and the particles of \
+            particle: Err(
+                "it is a non-relativistic pusher (state q, v, speeds unbounded), and the particles of \
                            this scene are relativistic (state x, u = gamma v, speed of light c); use \
                            boris_relativistic, vay or higuera_cary"
-                .into()),
+                    .into(),
+            ),
             relativistic: Ok(|method, y0| method.stepper::<T, S>(y0)),
         }
     }
@@ -226,10 +230,12 @@ impl<L: Lorentz + 'static> Families<Charged<L>> {
                  Runge-Kutta method",
             ),
             particle: Ok(|method, y0| method.stepper::<L>(y0)),
-            relativistic: Err("it is a relativistic pusher (state x, u = gamma v, with a speed of light c), and the \
+            relativistic: Err(
+                "it is a relativistic pusher (state x, u = gamma v, with a speed of light c), and the \
                                particles of this problem are non-relativistic (state q, v); use boris, \
                                boris_exact_phase or a splitting, or a scene of model \"relativistic-particles\""
-                .into()),
+                    .into(),
+            ),
         }
     }
 }

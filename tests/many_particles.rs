@@ -105,7 +105,11 @@ fn boris_pushes_independent_particles_with_the_numbers_of_its_general_loop() {
 
 /// `f` run in a pool of `threads` threads.
 fn with_threads<R: Send>(threads: usize, f: impl FnOnce() -> R + Send) -> R {
-    rayon::ThreadPoolBuilder::new().num_threads(threads).build().unwrap().install(f)
+    rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .build()
+        .unwrap()
+        .install(f)
 }
 
 #[test]
@@ -131,14 +135,19 @@ fn one_thread_or_two_give_bitwise_the_same_states() {
                 let mut stepper = RelativisticPush::new(method, &y1).unwrap();
                 let mut y = y1.clone();
                 for n in 0..20 {
-                    stepper.step_in_place(&relativistic, n as f64 * 0.05, 0.05, &mut y).unwrap();
+                    stepper
+                        .step_in_place(&relativistic, n as f64 * 0.05, 0.05, &mut y)
+                        .unwrap();
                 }
                 y
             })
         };
         let (one, two) = (push(1), push(2));
         assert!(one.iter().all(|x| x.is_finite()));
-        assert!(one.iter().zip(&two).all(|(a, b)| a.to_bits() == b.to_bits()), "{method:?}");
+        assert!(
+            one.iter().zip(&two).all(|(a, b)| a.to_bits() == b.to_bits()),
+            "{method:?}"
+        );
     }
 }
 
@@ -173,5 +182,8 @@ fn a_step_of_many_particles_allocates_nothing() {
     assert_eq!(allocations_in_steps(PARALLEL_FROM - 1, 100), 0);
     let steps = 2 * 63 * 5;
     let parallel = allocations_in_steps(PARALLEL_FROM + 1, steps / 2);
-    assert!(parallel <= steps / 63 + 1, "{parallel} allocations in {steps} parallel steps");
+    assert!(
+        parallel <= steps / 63 + 1,
+        "{parallel} allocations in {steps} parallel steps"
+    );
 }

@@ -88,7 +88,10 @@ fn the_mean_velocity_in_crossed_fields_is_the_drift() {
         let t = h * steps as f64;
         let mean = path.last().unwrap()[0] / t;
         assert!((mean - drift).abs() < 2e-3, "{method:?}: {mean}");
-        assert!(path.last().unwrap()[1].abs() < 1.0, "{method:?}: bounded across the drift");
+        assert!(
+            path.last().unwrap()[1].abs() < 1.0,
+            "{method:?}: bounded across the drift"
+        );
         // the energy: what E gives is what the motion along E takes (E . x changes, gamma too)
         let energy = |y: &[f64; 6]| model.energy(0.0, y).unwrap();
         let worst = path.iter().map(|y| (energy(y) - energy(&y0)).abs()).fold(0.0, f64::max);
@@ -229,7 +232,9 @@ fn pushers_run_only_on_their_own_particles() {
         assert!(build(name).is_ok(), "{name}");
     }
     assert!(build("boris").unwrap_err().contains("non-relativistic pusher"));
-    assert!(build("velocity_verlet_kdk").unwrap_err().contains("use boris_relativistic, vay or higuera_cary"));
+    assert!(build("velocity_verlet_kdk")
+        .unwrap_err()
+        .contains("use boris_relativistic, vay or higuera_cary"));
     let classical = Charged(
         ChargedParticles::<f64, [f64; 6]>::new(&[1.0], &[1.0])
             .unwrap()
@@ -241,9 +246,15 @@ fn pushers_run_only_on_their_own_particles() {
         .err()
         .unwrap()
         .to_string();
-    assert!(refusal.contains("relativistic pusher") && refusal.contains("use boris"), "{refusal}");
+    assert!(
+        refusal.contains("relativistic pusher") && refusal.contains("use boris"),
+        "{refusal}"
+    );
     // dop853 on the relativistic problem follows the exact gyration
-    let mut dop = Method::resolve("dop853").unwrap().stepper_for(&relativistic, &y0, &Default::default()).unwrap();
+    let mut dop = Method::resolve("dop853")
+        .unwrap()
+        .stepper_for(&relativistic, &y0, &Default::default())
+        .unwrap();
     let sol = Driver::fixed(0.01).run(&relativistic, &mut dop, 0.0, &y0, 5.0).unwrap();
     let exact = relativistic.exact_state(&y0, 5.0).unwrap();
     assert!(distance(sol.y.last().unwrap(), &exact) < 1e-12);

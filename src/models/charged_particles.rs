@@ -2,8 +2,8 @@
 //! `charged-particles` scenes (`coulomb-magnetic`, `cyclotron`, `exb-drift`,
 //! `penning-trap`, `magnetic-bottle`).
 
-use crate::hamiltonian::{halves, halves_mut};
 use super::{ExternalFields, MagneticField};
+use crate::hamiltonian::{halves, halves_mut};
 use crate::magnetic::{cross, Gyration, Lorentz};
 #[allow(unused_imports)]
 use crate::real::ops::*;

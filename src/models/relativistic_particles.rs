@@ -246,7 +246,8 @@ impl<T: Real, S: State<Scalar = T>> Problem for RelativisticParticles<T, S> {
             // c^2 (gamma - 1) = |u|^2 / (gamma + 1), without cancellation at low speed
             let g = self.gamma(uk);
             let kinetic = self.masses[k] * norm2(uk) / (g + T::one());
-            let potential = self.charges[k] * (self.electric[0] * xk[0] + self.electric[1] * xk[1] + self.electric[2] * xk[2]);
+            let potential =
+                self.charges[k] * (self.electric[0] * xk[0] + self.electric[1] * xk[1] + self.electric[2] * xk[2]);
             e += kinetic - potential;
         }
         Some(e)

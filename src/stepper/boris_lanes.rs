@@ -90,7 +90,13 @@ fn step_group<T: Real>(c: &Constants<T>, h: T, qg: &mut [T], vg: &mut [T]) {
 /// so the numbers are bitwise the same. When all the particles have one charge-to-mass
 /// ratio (one species), the constants of the step are computed once.
 #[inline(always)]
-pub(crate) fn push_lanes<T: Real>(fields: &ExternalFields<'_, T>, h: T, first: usize, q: &mut [T], v: &mut [T]) -> usize {
+pub(crate) fn push_lanes<T: Real>(
+    fields: &ExternalFields<'_, T>,
+    h: T,
+    first: usize,
+    q: &mut [T],
+    v: &mut [T],
+) -> usize {
     let half = lit::<T>(0.5) * h;
     let pushed = q.len() / (3 * LANES) * LANES;
     let mut c = Constants {

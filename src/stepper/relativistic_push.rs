@@ -87,8 +87,8 @@ fn push_each<T: Real>(
         let drift = k.half / (T::one() + (up[0] * up[0] + up[1] * up[1] + up[2] * up[2]) * k.inv_c2).sqrt();
         for i in 0..3 {
             xk[i] += drift * up[i];
-            uk[i] = up[i];
         }
+        uk.copy_from_slice(&up);
     }
 }
 
