@@ -160,7 +160,13 @@ fn methods_json_lists_the_catalog() {
     let dir = workdir("methods");
     let list = json(&dir, &["methods", "--format", "json"]);
     let list = list.as_array().unwrap();
-    assert_eq!(list.len(), 31 + 37 + 21 + 3);
+    // tableaus, splittings, compositions, charged-particle and relativistic pushers
+    assert_eq!(list.len(), 31 + 37 + 21 + 3 + 3);
+    let vay = list.iter().find(|m| m["name"] == "vay").unwrap();
+    assert_eq!(
+        (vay["family"].as_str(), vay["order"].as_u64(), vay["symmetric"].as_bool()),
+        (Some("relativistic-particle"), Some(2), Some(true))
+    );
     for m in list {
         for key in [
             "name",
