@@ -164,7 +164,11 @@ fn methods_json_lists_the_catalog() {
     assert_eq!(list.len(), 31 + 37 + 21 + 3 + 3);
     let vay = list.iter().find(|m| m["name"] == "vay").unwrap();
     assert_eq!(
-        (vay["family"].as_str(), vay["order"].as_u64(), vay["symmetric"].as_bool()),
+        (
+            vay["family"].as_str(),
+            vay["order"].as_u64(),
+            vay["symmetric"].as_bool()
+        ),
         (Some("relativistic-particle"), Some(2), Some(true))
     );
     for m in list {
@@ -208,8 +212,13 @@ fn methods_json_lists_the_catalog() {
         (verlet["fsal"].as_bool(), verlet["symplectic"].as_bool()),
         (Some(true), Some(true))
     );
-    // the charged-particle steppers close the list
-    let particle: Vec<(&str, u64, bool)> = list[list.len() - 3..]
+    // the charged-particle steppers, then the relativistic pushers, close the list
+    let relativistic: Vec<&str> = list[list.len() - 3..]
+        .iter()
+        .map(|m| m["name"].as_str().unwrap())
+        .collect();
+    assert_eq!(relativistic, ["boris_relativistic", "vay", "higuera_cary"]);
+    let particle: Vec<(&str, u64, bool)> = list[list.len() - 6..list.len() - 3]
         .iter()
         .map(|m| {
             assert_eq!(m["family"], "charged-particle");
