@@ -71,7 +71,7 @@ impl RelativisticKick {
     /// use stormer::magnetic::RelativisticKick;
     /// // no electric field: every kick turns u and keeps |u| (so gamma) unchanged
     /// for kick in [RelativisticKick::Boris, RelativisticKick::Vay, RelativisticKick::HigueraCary] {
-    ///     let mut u = [3.0, 4.0, 1.0];
+    ///     let mut u = [3.0f64, 4.0, 1.0];
     ///     kick.apply(&mut u, &[0.0; 3], &[0.1, -0.2, 0.7], 0.5, 0.25);
     ///     let u2 = u[0] * u[0] + u[1] * u[1] + u[2] * u[2];
     ///     assert!((u2 - 26.0).abs() < 1e-13, "{kick:?}");
