@@ -37,7 +37,7 @@ struct Cli {
 #[derive(Debug, Subcommand)]
 enum Command {
     /// List the methods of the catalog with their order, stages and derived flags, and the
-    /// charged-particle steppers (Boris, Euler-Cromer).
+    /// charged-particle steppers (Boris, Euler-Cromer) and the relativistic pushers (Boris, Vay, Higuera-Cary).
     Methods {
         /// Output format.
         #[arg(long, value_enum, default_value_t = TableFormat::Table)]
