@@ -83,11 +83,15 @@ fn label_area(range: (f64, f64)) -> u32 {
 /// Draws `map` into the SVG file `path`.
 pub fn draw(path: &Path, map: &HeatMap) -> anyhow::Result<()> {
     let finite: Vec<f64> = map.values.iter().flatten().copied().filter(|v| v.is_finite()).collect();
-    let (lo, hi) = finite
-        .iter()
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &v| (lo.min(v), hi.max(v)));
+    let (lo, hi) = finite.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &v| {
+        (lo.min(v), hi.max(v))
+    });
     // the bar spans the values; a flat or empty map gets the padded range of a line chart
-    let bar_range = if lo < hi { (lo, hi) } else { range(finite.iter().copied(), Scale::Linear) };
+    let bar_range = if lo < hi {
+        (lo, hi)
+    } else {
+        range(finite.iter().copied(), Scale::Linear)
+    };
     let colour = |v: Option<f64>| match v.filter(|v| v.is_finite()) {
         Some(v) if hi > lo => viridis((v - lo) / (hi - lo)),
         Some(_) => viridis(0.5),
@@ -146,7 +150,11 @@ pub fn draw(path: &Path, map: &HeatMap) -> anyhow::Result<()> {
             b0 + (b1 - b0) * f64::from(k) / f64::from(steps),
             b0 + (b1 - b0) * f64::from(k + 1) / f64::from(steps),
         );
-        let fill = if hi > lo { viridis((0.5 * (a + b) - lo) / (hi - lo)) } else { viridis(0.5) };
+        let fill = if hi > lo {
+            viridis((0.5 * (a + b) - lo) / (hi - lo))
+        } else {
+            viridis(0.5)
+        };
         Rectangle::new([(0.0, a), (1.0, b)], fill.filled())
     }))
     .map_err(plot_error)?;

@@ -12,7 +12,7 @@ use super::job::{self, SceneText};
 use super::scene_numbers::{self, Numbers};
 use super::vary::{self, Axis, Vary};
 use crate::cli::output::one_line;
-use crate::cli::pipeline::{Options, SceneRun};
+use crate::cli::pipeline::{Options, SceneRun, Steps};
 use anyhow::{anyhow, bail, Context};
 use rayon::prelude::*;
 use serde::Deserialize;
@@ -30,11 +30,19 @@ pub struct EnsembleArgs {
     /// A number of the scene file and its values: its key (`initial.alpha`, or `alpha`
     /// when no other key ends so), COUNT values evenly spaced from START to END. Repeat
     /// for a grid (the first one varies slowest).
-    #[arg(long, value_name = "NAME=START:END:COUNT", required = true, allow_hyphen_values = true)]
+    #[arg(
+        long,
+        value_name = "NAME=START:END:COUNT",
+        required = true,
+        allow_hyphen_values = true
+    )]
     pub vary: Vec<String>,
     /// The method [default: the scene's].
     #[arg(long, short, value_name = "NAME|FILE")]
     pub method: Option<String>,
+    /// Fixed step size (> 0) [default: the scene's].
+    #[arg(long, value_name = "H", allow_negative_numbers = true)]
+    pub dt: Option<f64>,
     /// End time [default: the scene's].
     #[arg(long, value_name = "T", allow_negative_numbers = true)]
     pub t_end: Option<f64>,
@@ -61,6 +69,7 @@ struct Members<'a> {
     varied: Vec<&'a scene_numbers::Entry>,
     axes: &'a [Axis],
     method: &'a Method,
+    dt: Option<f64>,
     t_end: f64,
 }
 
@@ -78,12 +87,14 @@ impl Members<'_> {
                 .collect();
             Error::invalid("--vary", format!("member {m} ({}) is refused: {e}", given.join(", ")))
         };
-        let pairs: Vec<(&scene_numbers::Entry, f64)> = self.varied.iter().copied().zip(values.iter().copied()).collect();
+        let pairs: Vec<(&scene_numbers::Entry, f64)> =
+            self.varied.iter().copied().zip(values.iter().copied()).collect();
         let text = scene_numbers::substitute(&self.scene.text, &pairs)?;
         let scene = scenes::parse(&text, &self.scene.origin, &self.scene.name).map_err(refused)?;
         scene
             .visit(Flight {
                 method: self.method,
+                dt: self.dt,
                 t_end: self.t_end,
                 member: m,
                 values: values.clone(),
@@ -95,6 +106,7 @@ impl Members<'_> {
 /// One member's run, whatever the scene's model.
 struct Flight<'a> {
     method: &'a Method,
+    dt: Option<f64>,
     t_end: f64,
     member: usize,
     values: Vec<f64>,
@@ -105,6 +117,7 @@ impl SceneVisitor for Flight<'_> {
 
     fn visit<S: Scene>(self, setup: Setup<S>) -> Result<Member, Error> {
         let options = Options {
+            steps: Steps::Fixed(self.dt),
             t_end: Some(self.t_end),
             ..Options::default()
         };
@@ -161,6 +174,9 @@ pub fn ensemble(args: &EnsembleArgs) -> anyhow::Result<()> {
     if let Some(t) = args.t_end.filter(|t| !t.is_finite()) {
         bail!(Error::invalid("--t-end", format!("must be a finite number, got {t}")));
     }
+    if let Some(h) = args.dt.filter(|h| !(h.is_finite() && *h > 0.0)) {
+        bail!(Error::invalid("--dt", format!("must be a finite number > 0, got {h}")));
+    }
     if args.jobs == Some(0) {
         bail!(Error::invalid("--jobs", "must be >= 1, got 0"));
     }
@@ -196,6 +212,7 @@ pub fn ensemble(args: &EnsembleArgs) -> anyhow::Result<()> {
         scene: plan.scene.clone(),
         scene_hash: plan.scene_hash.clone(),
         method: method.name().to_string(),
+        dt: args.dt,
         t_end: plan.t_end,
         axes,
         components: plan.components.clone(),
@@ -209,7 +226,10 @@ pub fn ensemble(args: &EnsembleArgs) -> anyhow::Result<()> {
         Some(name) if columns.contains(name) => name.clone(),
         Some(name) => bail!(Error::invalid(
             "--show",
-            format!("unknown column '{name}'; an ensemble of this scene has {}", columns.join(", "))
+            format!(
+                "unknown column '{name}'; an ensemble of this scene has {}",
+                columns.join(", ")
+            )
         )),
         None => plan.components.first().cloned().unwrap_or_else(|| "t".into()),
     };
@@ -229,6 +249,7 @@ pub fn ensemble(args: &EnsembleArgs) -> anyhow::Result<()> {
         varied,
         axes: &id.axes,
         method,
+        dt: id.dt,
         t_end: id.t_end,
     };
     let mine = super::shard_jobs(size, shard);

@@ -18,6 +18,8 @@ pub struct EnsembleId {
     pub scene_hash: String,
     /// The method's name.
     pub method: String,
+    /// The fixed step size, when not the scene's.
+    pub dt: Option<f64>,
     /// End time, unless the scene's stop condition ends a run before.
     pub t_end: f64,
     /// The varied numbers; the members are their grid, the first axis slowest.
@@ -131,12 +133,16 @@ impl Sharded for EnsemblePart {
             ("scene", a.scene == b.scene),
             ("scene_hash (the scene file's text)", a.scene_hash == b.scene_hash),
             ("method", a.method == b.method),
+            ("dt", a.dt.map(f64::to_bits) == b.dt.map(f64::to_bits)),
             ("t_end", a.t_end.to_bits() == b.t_end.to_bits()),
             ("axes (the varied numbers and their ranges)", a.axes == b.axes),
             ("components", a.components == b.components),
             ("stop", a.stop == b.stop),
             ("energy", a.energy == b.energy),
-            ("show (the column drawn)", a.show == b.show && a.show_label == b.show_label),
+            (
+                "show (the column drawn)",
+                a.show == b.show && a.show_label == b.show_label,
+            ),
         ];
         same.into_iter().find(|(_, same)| !same).map(|(field, _)| field)
     }
@@ -151,6 +157,9 @@ pub fn check(part: &EnsemblePart) -> Result<(), String> {
     }
     if !id.t_end.is_finite() {
         return Err(format!("ensemble.t_end: must be a finite number, got {}", id.t_end));
+    }
+    if let Some(h) = id.dt.filter(|h| !(h.is_finite() && *h > 0.0)) {
+        return Err(format!("ensemble.dt: must be a finite number > 0, got {h}"));
     }
     if id.axes.is_empty() {
         return Err("ensemble.axes: the ensemble varies no number".into());

@@ -164,8 +164,9 @@ pub fn write(part: &EnsemblePart, out: &Path, timing: &str) -> anyhow::Result<()
         .iter()
         .map(|a| format!("{} from {:?} to {:?} ({} values)", a.key, a.start, a.end, a.count))
         .collect();
+    let step = id.dt.map_or_else(String::new, |h| format!(" at dt = {h:?}"));
     let mut text = format!(
-        "{}: {} with {}, {}; {timing}\n",
+        "{}: {} with {}{step}, {}; {timing}\n",
         id.prefix(),
         id.scene,
         id.method,

@@ -69,7 +69,8 @@ impl Numbers {
             .entries
             .iter()
             .map(|e| {
-                let distance = strsim::damerau_levenshtein(name, &e.key).min(strsim::damerau_levenshtein(name, &last(&e.key)));
+                let distance =
+                    strsim::damerau_levenshtein(name, &e.key).min(strsim::damerau_levenshtein(name, &last(&e.key)));
                 (distance, e)
             })
             .filter(|(d, _)| *d <= 2)
@@ -124,7 +125,10 @@ fn written(entry: &Entry, x: f64) -> Result<String, Error> {
     } else {
         Err(Error::invalid(
             "--vary",
-            format!("{} is written as an integer in the scene file; {x:?} is not one", entry.key),
+            format!(
+                "{} is written as an integer in the scene file; {x:?} is not one",
+                entry.key
+            ),
         ))
     }
 }
@@ -176,9 +180,15 @@ mod tests {
         assert_eq!(numbers.find("1.mass").unwrap().key, "bodies.1.mass");
         assert!(numbers.find("E.1").unwrap().integer);
         let ambiguous = numbers.find("mass").unwrap_err().to_string();
-        assert!(ambiguous.contains("'mass' names 2 numbers") && ambiguous.contains("bodies.0.mass"), "{ambiguous}");
+        assert!(
+            ambiguous.contains("'mass' names 2 numbers") && ambiguous.contains("bodies.0.mass"),
+            "{ambiguous}"
+        );
         let unknown = numbers.find("alpah").unwrap_err().to_string();
-        assert!(unknown.contains("unknown key 'alpah': did you mean 'initial.alpha'?"), "{unknown}");
+        assert!(
+            unknown.contains("unknown key 'alpah': did you mean 'initial.alpha'?"),
+            "{unknown}"
+        );
         // a key that is not a number is not a number to vary
         assert!(numbers.find("model").is_err() && numbers.find("lpha").is_err());
     }

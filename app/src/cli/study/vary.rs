@@ -59,12 +59,12 @@ impl Vary {
         if count == 0 {
             return Err(bad("COUNT must be >= 1, got 0".into()));
         }
-        if start > end || (start == end && count > 1) {
+        if start > end || (start >= end && count > 1) {
             return Err(bad(format!(
                 "the range {start:?}:{end:?} is empty: END must be above START (or equal to it, with COUNT 1)"
             )));
         }
-        if count == 1 && start != end {
+        if count == 1 && start < end {
             return Err(bad(format!(
                 "COUNT 1 is one value, but {start:?}:{end:?} is a range: give START = END, or COUNT >= 2"
             )));
@@ -85,6 +85,9 @@ impl Axis {
         if self.count <= 1 {
             return self.start;
         }
+        if k + 1 >= self.count {
+            return self.end;
+        }
         let n = (self.count - 1) as f64;
         let k = k as f64;
         let x = (self.start * (n - k) + self.end * k) / n;
@@ -92,7 +95,8 @@ impl Axis {
         if x.is_finite() {
             x
         } else {
-            self.start + (self.end - self.start) * (k / n)
+            let f = k / n;
+            self.start * (1.0 - f) + self.end * f
         }
     }
 
