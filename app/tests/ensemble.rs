@@ -65,6 +65,14 @@ fn the_free_kick_study_runs_1681_flights_and_its_shards_merge_to_the_same_rows()
         let x: Vec<f64> = (0..41).map(|s| rows[alpha * 41 + s][4].parse().unwrap()).collect();
         assert!(x.windows(2).all(|w| w[1] < w[0]), "alpha {}: {x:?}", 10 + alpha);
     }
+    // and moves the best angle up: 41 degrees without spin (drag keeps it below 45), the
+    // top of the grid, 50, at 20 rad/s (docs/ensembles.md)
+    let best = |spin: usize| {
+        (0..41)
+            .max_by(|&a, &b| rows[a * 41 + spin][4].parse::<f64>().unwrap().total_cmp(&rows[b * 41 + spin][4].parse().unwrap()))
+            .map(|a| a + 10)
+    };
+    assert_eq!((best(0), best(40)), (Some(41), Some(50)));
     let svg = read(&dir.join(PICTURE));
     for label in [
         "initial.alpha",
