@@ -69,7 +69,12 @@ fn the_free_kick_study_runs_1681_flights_and_its_shards_merge_to_the_same_rows()
     // top of the grid, 50, at 20 rad/s (docs/ensembles.md)
     let best = |spin: usize| {
         (0..41)
-            .max_by(|&a, &b| rows[a * 41 + spin][4].parse::<f64>().unwrap().total_cmp(&rows[b * 41 + spin][4].parse().unwrap()))
+            .max_by(|&a, &b| {
+                rows[a * 41 + spin][4]
+                    .parse::<f64>()
+                    .unwrap()
+                    .total_cmp(&rows[b * 41 + spin][4].parse().unwrap())
+            })
             .map(|a| a + 10)
     };
     assert_eq!((best(0), best(40)), (Some(41), Some(50)));
