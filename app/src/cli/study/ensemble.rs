@@ -70,7 +70,7 @@ struct Members<'a> {
     axes: &'a [Axis],
     method: &'a Method,
     dt: Option<f64>,
-    t_end: f64,
+    t_end: Option<f64>,
 }
 
 impl Members<'_> {
@@ -107,7 +107,7 @@ impl Members<'_> {
 struct Flight<'a> {
     method: &'a Method,
     dt: Option<f64>,
-    t_end: f64,
+    t_end: Option<f64>,
     member: usize,
     values: Vec<f64>,
 }
@@ -118,7 +118,7 @@ impl SceneVisitor for Flight<'_> {
     fn visit<S: Scene>(self, setup: Setup<S>) -> Result<Member, Error> {
         let options = Options {
             steps: Steps::Fixed(self.dt),
-            t_end: Some(self.t_end),
+            t_end: self.t_end,
             ..Options::default()
         };
         let mut run = SceneRun::new(&setup, self.method, &options)?;
@@ -213,7 +213,7 @@ pub fn ensemble(args: &EnsembleArgs) -> anyhow::Result<()> {
         scene_hash: plan.scene_hash.clone(),
         method: method.name().to_string(),
         dt: args.dt,
-        t_end: plan.t_end,
+        t_end: args.t_end,
         axes,
         components: plan.components.clone(),
         stop: plan.stop.map(String::from),

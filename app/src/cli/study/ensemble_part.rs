@@ -20,8 +20,9 @@ pub struct EnsembleId {
     pub method: String,
     /// The fixed step size, when not the scene's.
     pub dt: Option<f64>,
-    /// End time, unless the scene's stop condition ends a run before.
-    pub t_end: f64,
+    /// The end time given on the command line (`None`: each member's file's), unless
+    /// the scene's stop condition ends a run before.
+    pub t_end: Option<f64>,
     /// The varied numbers; the members are their grid, the first axis slowest.
     pub axes: Vec<Axis>,
     /// The names of the state's components.
@@ -134,7 +135,7 @@ impl Sharded for EnsemblePart {
             ("scene_hash (the scene file's text)", a.scene_hash == b.scene_hash),
             ("method", a.method == b.method),
             ("dt", a.dt.map(f64::to_bits) == b.dt.map(f64::to_bits)),
-            ("t_end", a.t_end.to_bits() == b.t_end.to_bits()),
+            ("t_end", a.t_end.map(f64::to_bits) == b.t_end.map(f64::to_bits)),
             ("axes (the varied numbers and their ranges)", a.axes == b.axes),
             ("components", a.components == b.components),
             ("stop", a.stop == b.stop),
@@ -155,8 +156,8 @@ pub fn check(part: &EnsemblePart) -> Result<(), String> {
     if n == 0 || !(1..=n).contains(&i) {
         return Err(format!("shard: [{i}, {n}] is not the I-th of N parts (1 <= I <= N)"));
     }
-    if !id.t_end.is_finite() {
-        return Err(format!("ensemble.t_end: must be a finite number, got {}", id.t_end));
+    if let Some(t) = id.t_end.filter(|t| !t.is_finite()) {
+        return Err(format!("ensemble.t_end: must be a finite number, got {t}"));
     }
     if let Some(h) = id.dt.filter(|h| !(h.is_finite() && *h > 0.0)) {
         return Err(format!("ensemble.dt: must be a finite number > 0, got {h}"));

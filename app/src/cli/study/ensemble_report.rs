@@ -72,9 +72,10 @@ pub fn csv(part: &EnsemblePart) -> String {
 
 /// `free-kick, rk4: x at the landing`.
 fn title(id: &EnsembleId) -> String {
-    let at = match &id.stop {
-        Some(event) => format!("at the {event}"),
-        None => format!("at t = {}", id.t_end),
+    let at = match (&id.stop, id.t_end) {
+        (Some(event), _) => format!("at the {event}"),
+        (None, Some(t)) => format!("at t = {t}"),
+        (None, None) => "at the end".into(),
     };
     format!("{}, {}: {} {at}", id.scene, id.method, id.show)
 }
