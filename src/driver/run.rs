@@ -332,16 +332,18 @@ fn steps_in_place<P: Problem, St: Stepper<P> + ?Sized>(
     // on a local copy: the compiler keeps a local state's parts in registers across steps,
     // which it does not do through the caller's reference
     let mut local = y.clone();
-    let mut result = Ok(());
-    for i in range {
-        result = step_checked(stepper, p, t0 + lit::<P::Scalar>(i as f64) * h, h, i, &mut local);
-        if result.is_err() {
-            break;
+    let start = range.start;
+    for i in range.clone() {
+        if let Err(e) = step_checked(stepper, p, t0 + lit::<P::Scalar>(i as f64) * h, h, i, &mut local) {
+            // the steps before the failed one, and the state they reached
+            *steps += i - start;
+            *y = local;
+            return Err(e);
         }
-        *steps += 1;
     }
+    *steps += range.end - start;
     *y = local;
-    result
+    Ok(())
 }
 
 /// Step `i`, from `t` by `h`, in place; an error when the state is no longer finite.
