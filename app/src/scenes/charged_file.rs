@@ -18,8 +18,8 @@
 //! ```
 
 use super::file::{Number, Source};
-use super::nbody_file::{column, Taken};
-use super::particle_list::{read_particles, ParticleList};
+use super::nbody_file::Taken;
+use super::particle_list::{particle_columns, read_particles, ParticleList};
 use super::{Built, Scene};
 use nalgebra::DVector;
 use serde::Deserialize;
@@ -310,22 +310,7 @@ impl Scene for ChargedScene {
     /// `<name>_x, <name>_y, <name>_z` for every particle, then `<name>_vx, ...`; a single
     /// particle has `x, y, z, vx, vy, vz`.
     fn components(&self, _y0: &DVector<f64>) -> Vec<String> {
-        let single = self.0.particles() == 1;
-        let prefix = |n: &String| {
-            if single {
-                String::new()
-            } else {
-                format!("{}_", column(n))
-            }
-        };
-        let names = self.0.names();
-        let q = names
-            .iter()
-            .flat_map(|n| ["x", "y", "z"].map(|a| format!("{}{a}", prefix(n))));
-        let v = names
-            .iter()
-            .flat_map(|n| ["vx", "vy", "vz"].map(|a| format!("{}{a}", prefix(n))));
-        q.chain(v).collect()
+        particle_columns(self.0.names(), "v")
     }
 
     /// Known for independent particles in uniform fields ([`ChargedParticles::exact_state`]).
