@@ -322,10 +322,9 @@ impl Scene for ChargedScene {
 #[cfg(test)]
 #[allow(clippy::float_cmp)] // values read from a file are compared exactly
 mod tests {
-    use crate::scenes::{parse, AnyScene, Scene};
+    use crate::scenes::{bad_line, parse, AnyScene, Scene};
     use stormer::magnetic::Lorentz;
     use stormer::models::MagneticField;
-    use stormer::Error;
 
     const GOOD: &str = "model = \"charged-particles\"\n\
                         [parameters]\n\
@@ -348,18 +347,6 @@ mod tests {
                         method = \"boris\"\n\
                         dt = 0.01\n\
                         t_end = 1.0\n";
-
-    /// The error message for `GOOD` with line `line` (1-based) replaced.
-    fn error_with(line: usize, text: &str) -> String {
-        let mut lines: Vec<&str> = GOOD.lines().collect();
-        lines[line - 1] = text;
-        let err = parse(&lines.join("\n"), "ions.toml", "ions").unwrap_err();
-        assert!(matches!(err, Error::Scene { .. }), "{err:?}");
-        let message = err.to_string();
-        assert!(message.starts_with("scene ions.toml: "), "{message}");
-        assert!(!message.contains('\n'), "one line: {message}");
-        message
-    }
 
     #[test]
     fn the_good_file_parses() {
@@ -464,10 +451,7 @@ mod tests {
                 "line 14: particles[1].name \"a\" is already the name of particles[0]",
             ),
         ];
-        for (line, text, expected) in cases {
-            let message = error_with(line, text);
-            assert!(message.contains(expected), "{text}: {message}");
-        }
+        bad_line::assert_bad_lines(GOOD, "ions.toml", &cases);
         // a particle at the Coulomb centre
         let text = GOOD
             .replace("interaction = 1.0", "mu = 1.0")
