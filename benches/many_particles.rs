@@ -20,25 +20,17 @@ use std::time::Instant;
 use stormer::catalog::VelocityVerletKdk;
 use stormer::magnetic::{Charged, GyrationCache};
 use stormer::models::{ChargedParticles, MagneticField, RelativisticParticles};
+use stormer::splitmix64::SplitMix64;
 use stormer::stepper::{Boris, BorisRotation, RelativisticMethod, RelativisticPush};
 use stormer::{SplittingStepper, Stepper};
 
 type Classical = Charged<ChargedParticles<f64, DVector<f64>>>;
 type Relativistic = RelativisticParticles<f64, DVector<f64>>;
 
-/// SplitMix64 in `[-1, 1)`: the particles' positions and velocities, the same every run.
+/// `n` numbers in `[-1, 1)` from `seed`: the particles' positions and velocities, the
+/// same every run.
 fn sample(n: usize, seed: u64) -> Vec<f64> {
-    let mut s = seed;
-    (0..n)
-        .map(|_| {
-            s = s.wrapping_add(0x9E37_79B9_7F4A_7C15);
-            let mut z = s;
-            z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-            z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-            z ^= z >> 31;
-            (z >> 11) as f64 / (1u64 << 52) as f64 - 1.0
-        })
-        .collect()
+    SplitMix64::new(seed).take(n).collect()
 }
 
 /// `n` unit particles in `B = (0, 0, 1)` and `E = (0.1, 0, 0)`, speeds below 1.

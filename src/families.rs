@@ -152,21 +152,22 @@ impl<P: Problem> Families<P> {
 
     /// A charged-particle pusher, or the sentence saying why it does not apply.
     pub fn particle(&self, method: ParticleMethod, y0: &P::State) -> BuildResult<P> {
-        let build = self.particle.as_ref().map_err(|why| Error::Unsupported {
-            name: method.name().to_string(),
-            reason: why.clone(),
-        })?;
-        build(method, y0)
+        admitted(&self.particle, method.name())?(method, y0)
     }
 
     /// A relativistic pusher, or the sentence saying why it does not apply.
     pub fn relativistic(&self, method: RelativisticMethod, y0: &P::State) -> BuildResult<P> {
-        let build = self.relativistic.as_ref().map_err(|why| Error::Unsupported {
-            name: method.name().to_string(),
-            reason: why.clone(),
-        })?;
-        build(method, y0)
+        admitted(&self.relativistic, method.name())?(method, y0)
     }
+}
+
+/// The builder of a family of pushers, or, for the method `name`, the sentence saying why
+/// the problem refuses the family.
+fn admitted<B: Copy>(family: &Result<B, String>, name: &str) -> Result<B, Error> {
+    family.as_ref().copied().map_err(|why| Error::Unsupported {
+        name: name.to_string(),
+        reason: why.clone(),
+    })
 }
 
 const NOT_QUADRATIC: &str = "it reaches its order only when the kinetic energy is quadratic in p (a \

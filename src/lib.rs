@@ -18,6 +18,7 @@ pub mod models;
 mod problem;
 mod real;
 pub mod registry;
+pub mod splitmix64;
 mod state;
 pub mod stepper;
 pub mod verify;

@@ -9,27 +9,9 @@ use counting_alloc::allocations;
 use nalgebra::DVector;
 use stormer::magnetic::{Charged, Lorentz};
 use stormer::models::{ChargedParticles, MagneticField, RelativisticParticles};
+use stormer::splitmix64::SplitMix64;
 use stormer::stepper::{Boris, BorisRotation, RelativisticPush, PARALLEL_FROM, RELATIVISTIC_METHODS};
 use stormer::Stepper;
-
-/// SplitMix64: a deterministic sequence of numbers in `[-1, 1)`.
-struct Sample(u64);
-
-impl Sample {
-    fn next(&mut self) -> f64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^= z >> 31;
-        (z >> 11) as f64 / (1u64 << 52) as f64 - 1.0
-    }
-
-    /// `n` values scaled by `scale`.
-    fn take(&mut self, n: usize, scale: f64) -> Vec<f64> {
-        (0..n).map(|_| scale * self.next()).collect()
-    }
-}
 
 /// `n` particles of two species (ratios -1 and 1/2) in a magnetic bottle and a uniform E: positions in a box,
 /// velocities up to 1.
@@ -40,10 +22,14 @@ fn bottle(n: usize) -> (ChargedParticles<f64, DVector<f64>>, DVector<f64>) {
         .unwrap()
         .with_field(MagneticField::Bottle { b0: 1.0, length: 3.0 })
         .with_electric_field([0.05, 0.0, 0.01]);
-    let mut sample = Sample(7);
+    let mut sample = SplitMix64::new(7);
     let mut y0 = DVector::zeros(6 * n);
     model
-        .set_state(&sample.take(3 * n, 1.0), &sample.take(3 * n, 1.0), &mut y0)
+        .set_state(
+            &sample.by_ref().take(3 * n).collect::<Vec<_>>(),
+            &sample.by_ref().take(3 * n).collect::<Vec<_>>(),
+            &mut y0,
+        )
         .unwrap();
     (model, y0)
 }

@@ -160,20 +160,27 @@ fn bottle(e: [f64; 3], b0: f64) -> One {
         .with_electric_field(e)
 }
 
+/// A bottle of any strength in any uniform E, a particle anywhere near the axis with any
+/// momentum, and a step: the cases of the property tests.
+fn bottle_case() -> impl Strategy<Value = (One, [f64; 6], f64)> {
+    (
+        prop::array::uniform3(-1.0f64..1.0),
+        0.2f64..3.0,
+        prop::array::uniform3(-1.0f64..1.0),
+        prop::array::uniform3(-3.0f64..3.0),
+        0.05f64..1.0,
+    )
+        .prop_map(|(e, b0, x, u, h)| (bottle(e, b0), [x[0], x[1], x[2], u[0], u[1], u[2]], h))
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(64))]
 
     /// Boris and Higuera-Cary preserve phase-space volume for any fields and step.
     #[test]
     fn boris_and_higuera_cary_preserve_volume(
-        e in prop::array::uniform3(-1.0f64..1.0),
-        b0 in 0.2f64..3.0,
-        x in prop::array::uniform3(-1.0f64..1.0),
-        u in prop::array::uniform3(-3.0f64..3.0),
-        h in 0.05f64..1.0,
+        (model, y0, h) in bottle_case(),
     ) {
-        let model = bottle(e, b0);
-        let y0 = [x[0], x[1], x[2], u[0], u[1], u[2]];
         for method in [RelativisticMethod::BorisRelativistic, RelativisticMethod::HigueraCary] {
             let det = volume_change(method, &model, y0, h);
             prop_assert!((det - 1.0).abs() < 1e-6, "{:?}: det {}", method, det);
@@ -183,14 +190,8 @@ proptest! {
     /// Every pusher is time-symmetric: a step of `h` then of `-h` comes back.
     #[test]
     fn every_pusher_steps_back(
-        e in prop::array::uniform3(-1.0f64..1.0),
-        b0 in 0.2f64..3.0,
-        x in prop::array::uniform3(-1.0f64..1.0),
-        u in prop::array::uniform3(-3.0f64..3.0),
-        h in 0.05f64..1.0,
+        (model, y0, h) in bottle_case(),
     ) {
-        let model = bottle(e, b0);
-        let y0 = [x[0], x[1], x[2], u[0], u[1], u[2]];
         for &method in RELATIVISTIC_METHODS {
             let mut stepper = RelativisticPush::new(method, &y0).unwrap();
             let mut y = y0;

@@ -37,6 +37,23 @@ fn expected() -> HashMap<String, String> {
 
 /// Every bad file: non-zero exit, one line on stderr with what EXPECTED.txt says it must
 /// get, no panic.
+/// Runs the binary with `args` in `dir` and checks the refusal every bad input gets (`what`
+/// names the case in a failure): exit code 1, no panic, one line starting `error: `, which
+/// it returns.
+fn refusal(dir: &Path, args: &[&str], what: &str) -> String {
+    let out = Command::new(env!("CARGO_BIN_EXE_stormer"))
+        .args(args)
+        .current_dir(dir)
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
+    assert_eq!(out.status.code(), Some(1), "{what}: exit code\n{stderr}");
+    assert!(!stderr.contains("panicked"), "{what}: {stderr}");
+    assert_eq!(stderr.trim().lines().count(), 1, "{what}: not one line:\n{stderr}");
+    assert!(stderr.starts_with("error: "), "{what}: {stderr}");
+    stderr
+}
+
 #[test]
 fn the_binary_refuses_every_bad_file_without_panicking() {
     let files = corpus();
@@ -55,16 +72,7 @@ fn the_binary_refuses_every_bad_file_without_panicking() {
         } else {
             vec!["verify", &path]
         };
-        let out = Command::new(env!("CARGO_BIN_EXE_stormer"))
-            .args(&args)
-            .current_dir(&dir)
-            .output()
-            .unwrap();
-        let stderr = String::from_utf8_lossy(&out.stderr);
-        assert_eq!(out.status.code(), Some(1), "{name}: exit code\n{stderr}");
-        assert!(!stderr.contains("panicked"), "{name}: {stderr}");
-        assert_eq!(stderr.trim().lines().count(), 1, "{name}: not one line:\n{stderr}");
-        assert!(stderr.starts_with("error: "), "{name}: {stderr}");
+        let stderr = refusal(&dir, &args, &name);
         let must = expected
             .get(&name)
             .unwrap_or_else(|| panic!("{name} is not in EXPECTED.txt"));
@@ -160,19 +168,8 @@ fn the_binary_refuses_bad_vary_flags_without_panicking() {
             "more than the 10000000 members an ensemble runs",
         ),
     ] {
-        let out = Command::new(env!("CARGO_BIN_EXE_stormer"))
-            .args(["ensemble", "free-kick", "--vary", vary])
-            .current_dir(&dir)
-            .output()
-            .unwrap();
-        let stderr = String::from_utf8_lossy(&out.stderr);
-        assert_eq!(out.status.code(), Some(1), "{vary}: exit code\n{stderr}");
-        assert!(!stderr.contains("panicked"), "{vary}: {stderr}");
-        assert_eq!(stderr.trim().lines().count(), 1, "{vary}: not one line:\n{stderr}");
-        assert!(
-            stderr.starts_with("error: ") && stderr.contains(must),
-            "{vary}: {stderr}"
-        );
+        let stderr = refusal(&dir, &["ensemble", "free-kick", "--vary", vary], vary);
+        assert!(stderr.contains(must), "{vary}: {stderr}");
     }
     assert!(!dir.join("out").exists(), "no output for a refused ensemble");
     std::fs::remove_dir_all(&dir).unwrap();

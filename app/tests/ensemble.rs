@@ -5,10 +5,18 @@
 #![allow(clippy::float_cmp)] // the grid's values are exact, and compared so
 
 use std::path::Path;
+use std::process::Output;
 
 #[path = "support/binary.rs"]
 mod binary;
 use binary::{stderr, stdout, stormer, stormer_ok, workdir};
+
+/// `stormer ensemble ARGUMENTS` in `dir` (`arguments`: without spaces, separated by
+/// spaces), asserted to succeed.
+fn ensemble_ok(dir: &Path, arguments: &str) -> Output {
+    let args: Vec<&str> = ["ensemble"].into_iter().chain(arguments.split_whitespace()).collect();
+    stormer_ok(dir, &args)
+}
 
 const STUDY: [&str; 6] = [
     "ensemble",
@@ -165,10 +173,7 @@ fn a_member_is_the_scene_run_alone() {
     stormer_ok(&dir, &["run", "free-kick", "--dt", "0.001", "--out", "run.csv"]);
     let run = read(&dir.join("run.csv"));
     let last: Vec<&str> = run.lines().last().unwrap().split(',').collect();
-    stormer_ok(
-        &dir,
-        &["ensemble", "free-kick", "--vary", "alpha=30:30:1", "--dt", "0.001"],
-    );
+    ensemble_ok(&dir, "free-kick --vary alpha=30:30:1 --dt 0.001");
     let table = read(&dir.join("out/ensemble-free-kick-alpha.csv"));
     let row: Vec<&str> = table.lines().nth(1).unwrap().split(',').collect();
     // t, x, z, vx, vz of the run's last record and of the member
@@ -185,19 +190,7 @@ fn a_member_is_the_scene_run_alone() {
 #[test]
 fn any_number_of_any_scene_can_be_varied() {
     let dir = workdir("ensemble", "any-scene");
-    let out = stormer_ok(
-        &dir,
-        &[
-            "ensemble",
-            "pendulum",
-            "--vary",
-            "initial.theta=0.1:1.5:8",
-            "--t-end",
-            "2",
-            "--show",
-            "t",
-        ],
-    );
+    let out = ensemble_ok(&dir, "pendulum --vary initial.theta=0.1:1.5:8 --t-end 2 --show t");
     assert!(stdout(&out).contains("8 runs in"), "{}", stdout(&out));
     let table = read(&dir.join("out/ensemble-pendulum-theta.csv"));
     assert!(
@@ -205,23 +198,11 @@ fn any_number_of_any_scene_can_be_varied() {
         "{table}"
     );
     assert_eq!(table.lines().count(), 9);
-    stormer_ok(&dir, &["ensemble", "pendulum", "--vary", "every=1:3:3", "--t-end", "1"]);
+    ensemble_ok(&dir, "pendulum --vary every=1:3:3 --t-end 1");
     let table = read(&dir.join("out/ensemble-pendulum-every.csv"));
     assert!(table.lines().nth(3).unwrap().starts_with("2,3.0,"), "{table}");
     // more than two numbers: the table, no picture
-    let out = stormer_ok(
-        &dir,
-        &[
-            "ensemble",
-            "harmonic",
-            "--vary",
-            "x=0:1:2",
-            "--vary",
-            "v=0:1:2",
-            "--vary",
-            "t_end=1:2:2",
-        ],
-    );
+    let out = ensemble_ok(&dir, "harmonic --vary x=0:1:2 --vary v=0:1:2 --vary t_end=1:2:2");
     assert!(
         stderr(&out).contains("no picture for more than two"),
         "{}",

@@ -105,7 +105,7 @@ where
         y: &S,
         y_new: &S,
     ) -> Result<Option<StopEvent<T, S>>, Error> {
-        let inside = self.take(between, t, end, y, y_new)?;
+        let inside = self.take(between, (t, y), (end, y_new))?;
         match inside.stop {
             Some(stop) => self.stop_at(stop, inside.last_recorded).map(Some),
             None => Ok(None),
@@ -123,20 +123,19 @@ where
         between: Option<&mut Between<'_, '_, T, S>>,
     ) -> Result<Option<StopEvent<T, S>>, Error> {
         // the stepper's last step is the one that located the stop: from `y` to it
-        let inside = self.take(between, t, event.t, y, &event.y)?;
+        let inside = self.take(between, (t, y), (event.t, &event.y))?;
         self.stop_at(inside.stop.unwrap_or(event), inside.last_recorded)
             .map(Some)
     }
 
-    /// Records what lies inside the step `(t, y) -> (end, y_new)`, accepts and counts it.
+    /// Records what lies inside the step `from = (t, y) -> to = (end, y_new)`, accepts and
+    /// counts it.
     #[inline]
     fn take(
         &mut self,
         between: Option<&mut Between<'_, '_, T, S>>,
-        t: T,
-        end: T,
-        y: &S,
-        y_new: &S,
+        (t, y): (T, &S),
+        (end, y_new): (T, &S),
     ) -> Result<Inside<T, S>, Error> {
         let inside = match between {
             Some(b) => b.record_step(self.p, &mut *self.stepper, t, end, y, y_new, &mut *self.out, self.stats)?,

@@ -114,6 +114,34 @@ fn separation<T: Real>(q: &[T], k: usize, l: usize) -> [T; 3] {
     ]
 }
 
+/// Writes `particles` particles in 3-D at `positions` into the first half of `y` and the
+/// `rates` (velocities or momenta, `name` in the error) into the second half, `3N` values
+/// each: the states of both charged-particle models.
+pub(super) fn write_particles<T: Real, S: State<Scalar = T>>(
+    particles: usize,
+    positions: &[T],
+    (rates, name): (&[T], &str),
+    y: &mut S,
+) -> Result<(), Error> {
+    let len = 3 * particles;
+    if positions.len() != len || rates.len() != len || y.dim() != 2 * len {
+        return Err(Error::invalid(
+            "state",
+            format!(
+                "{particles} particles need {len} positions, {len} {name} and a state of {}, got {}, {} and {}",
+                2 * len,
+                positions.len(),
+                rates.len(),
+                y.dim()
+            ),
+        ));
+    }
+    let (q, v) = y.as_mut_slice().split_at_mut(len);
+    q.copy_from_slice(positions);
+    v.copy_from_slice(rates);
+    Ok(())
+}
+
 #[inline(always)]
 fn dot<T: Real>(x: &[T], y: &[T]) -> T {
     x[0] * y[0] + x[1] * y[1] + x[2] * y[2]
@@ -266,24 +294,7 @@ impl<T: Real, S: State<Scalar = T>> ChargedParticles<T, S> {
     /// Writes the particles at `positions` moving at `velocities` (`3N` values each,
     /// particle by particle) into `y`.
     pub fn set_state(&self, positions: &[T], velocities: &[T], y: &mut S) -> Result<(), Error> {
-        let len = 3 * self.masses.len();
-        if positions.len() != len || velocities.len() != len || y.dim() != 2 * len {
-            return Err(Error::invalid(
-                "state",
-                format!(
-                    "{} particles need {len} positions, {len} velocities and a state of {}, got {}, {} and {}",
-                    self.masses.len(),
-                    2 * len,
-                    positions.len(),
-                    velocities.len(),
-                    y.dim()
-                ),
-            ));
-        }
-        let (q, v) = y.as_mut_slice().split_at_mut(len);
-        q.copy_from_slice(positions);
-        v.copy_from_slice(velocities);
-        Ok(())
+        write_particles(self.masses.len(), positions, (velocities, "velocities"), y)
     }
 
     /// True when the particles move independently in uniform fields (no centre, no

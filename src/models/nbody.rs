@@ -8,6 +8,21 @@ use crate::real::ops::*;
 use crate::{lit, to_f64, Error, Families, Hamiltonian, QuadraticKinetic, Real, State};
 use core::marker::PhantomData;
 
+/// `q_k - q_l` in dimension `D` and its squared length, the loops unrolled: the start of
+/// every pair's force.
+#[inline(always)]
+fn separation<T: Real, const D: usize>(qk: &[T], ql: &[T]) -> ([T; D], T) {
+    let mut d = [T::zero(); D];
+    for c in 0..D {
+        d[c] = qk[c] - ql[c];
+    }
+    let mut r2 = d[0] * d[0];
+    for c in 1..D {
+        r2 += d[c] * d[c];
+    }
+    (d, r2)
+}
+
 /// `n` bodies attracting each other by Newtonian gravity in `dim` dimensions, on
 /// phase-space states `S = (q, p)`: the positions of body 0, body 1, ..., then their
 /// momenta `p_k = m_k v_k` in the same order (length `2 n dim`).
@@ -308,14 +323,7 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> NBody<T, S, K> {
                 .zip(tail.chunks_exact_mut(D))
                 .zip(&self.masses[k + 1..active])
             {
-                let mut d = [T::zero(); D];
-                for c in 0..D {
-                    d[c] = qk[c] - ql[c];
-                }
-                let mut r2 = d[0] * d[0];
-                for c in 1..D {
-                    r2 += d[c] * d[c];
-                }
+                let (d, r2) = separation::<T, D>(qk, ql);
                 let s = gmk * ml / (r2 * r2.sqrt());
                 for c in 0..D {
                     let x = s * d[c];
@@ -332,14 +340,7 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> NBody<T, S, K> {
             let ql = &q[l * D..(l + 1) * D];
             let mut fl = [T::zero(); D];
             for (qk, &gmk) in q[..active * D].chunks_exact(D).zip(&self.gm) {
-                let mut d = [T::zero(); D];
-                for c in 0..D {
-                    d[c] = qk[c] - ql[c];
-                }
-                let mut r2 = d[0] * d[0];
-                for c in 1..D {
-                    r2 += d[c] * d[c];
-                }
+                let (d, r2) = separation::<T, D>(qk, ql);
                 let s = gmk * self.masses[l] / (r2 * r2.sqrt());
                 for c in 0..D {
                     fl[c] += s * d[c];

@@ -566,6 +566,24 @@ fn pull_chunks_portable<F: Lane, const D: usize, const L: usize>(
     }
 }
 
+/// Row `i`'s pulls from chunk `from` to the end of a block: the whole chunks, then the
+/// last chunk masked if it is partly filled.
+#[inline(always)]
+fn pull_to_end<F: Lane, const D: usize, const L: usize>(
+    qi: &[F; D],
+    gmi: F,
+    cols: Block<'_, F, D, L>,
+    from: usize,
+    fi: &mut Chunk<F, D, L>,
+    mut fj: Option<&mut [Chunk<F, D, L>]>,
+) {
+    let (whole, used) = (cols.filled / L, cols.filled.div_ceil(L));
+    pull_chunks(qi, gmi, cols, (from, whole.max(from)), fi, fj.as_deref_mut());
+    if used > whole {
+        pull_edge(qi, gmi, cols, (whole, 0, cols.filled), fi, fj);
+    }
+}
+
 /// Row `i`'s pull from chunk `k` of a block, masked to slots `lo .. hi`.
 #[inline(always)]
 fn pull_edge<F: Lane, const D: usize, const L: usize>(
@@ -605,17 +623,14 @@ fn settle<F: Lane, const D: usize, const L: usize>(force: &mut [Chunk<F, D, L>],
 /// The pairs inside one block (`j > i`), third law: per row, the chunk holding `i + 1`
 /// masked, the whole chunks after it, the last chunk masked if partly filled.
 fn triangle<F: Lane, const D: usize, const L: usize>(block: Block<'_, F, D, L>, force: &mut [Chunk<F, D, L>]) {
-    let (whole, used) = (block.filled / L, block.filled.div_ceil(L));
+    let used = block.filled.div_ceil(L);
     for i in 0..block.filled.saturating_sub(1) {
         let (qi, gmi) = (block.point(i), block.gm[i / L][i % L]);
         let mut fi = [[F::ZERO; L]; D];
         let first = (i + 1) / L;
         pull_edge(&qi, gmi, block, (first, i + 1, block.filled), &mut fi, Some(force));
         if first + 1 < used {
-            pull_chunks(&qi, gmi, block, (first + 1, whole.max(first + 1)), &mut fi, Some(force));
-            if used > whole {
-                pull_edge(&qi, gmi, block, (whole, 0, block.filled), &mut fi, Some(force));
-            }
+            pull_to_end(&qi, gmi, block, first + 1, &mut fi, Some(force));
         }
         settle(force, i, &fi);
     }
@@ -628,14 +643,10 @@ fn tile<F: Lane, const D: usize, const L: usize>(
     cols: Block<'_, F, D, L>,
     cols_force: &mut [Chunk<F, D, L>],
 ) {
-    let (whole, used) = (cols.filled / L, cols.filled.div_ceil(L));
     for i in 0..rows.filled {
         let (qi, gmi) = (rows.point(i), rows.gm[i / L][i % L]);
         let mut fi = [[F::ZERO; L]; D];
-        pull_chunks(&qi, gmi, cols, (0, whole), &mut fi, Some(cols_force));
-        if used > whole {
-            pull_edge(&qi, gmi, cols, (whole, 0, cols.filled), &mut fi, Some(cols_force));
-        }
+        pull_to_end(&qi, gmi, cols, 0, &mut fi, Some(cols_force));
         settle(rows_force, i, &fi);
     }
 }
@@ -651,11 +662,7 @@ fn field<F: Lane, const D: usize, const L: usize>(
         let (qi, gmi) = (rows.point(i), rows.gm[i / L][i % L]);
         let mut fi = [[F::ZERO; L]; D];
         for &cols in sources {
-            let (whole, used) = (cols.filled / L, cols.filled.div_ceil(L));
-            pull_chunks(&qi, gmi, cols, (0, whole), &mut fi, None);
-            if used > whole {
-                pull_edge(&qi, gmi, cols, (whole, 0, cols.filled), &mut fi, None);
-            }
+            pull_to_end(&qi, gmi, cols, 0, &mut fi, None);
         }
         settle(force, i, &fi);
     }

@@ -2,13 +2,13 @@
 //! model of the relativistic particle-in-cell pushers (`boris_relativistic`, `vay`,
 //! `higuera_cary`).
 
-use super::{ExternalFields, MagneticField};
+use super::charged_particles::write_particles;
+use super::{ChargedParticles, ExternalFields, MagneticField};
 use crate::hamiltonian::{halves, halves_mut};
 use crate::magnetic::{cross, Gyration};
 #[allow(unused_imports)]
 use crate::real::ops::*;
 use crate::{to_f64, Error, Families, Problem, Real, State};
-use core::marker::PhantomData;
 
 /// `N` charged particles moving at relativistic speeds in a uniform electric field `E` and
 /// a magnetic field `B` ([`MagneticField`]: uniform, a bottle, a dipole), with the speed
@@ -42,38 +42,28 @@ use core::marker::PhantomData;
 /// # Ok::<(), stormer::Error>(())
 /// ```
 pub struct RelativisticParticles<T, S> {
-    names: Vec<String>,
-    masses: Vec<T>,
-    charges: Vec<T>,
-    ratios: Vec<T>,
+    /// The particles and fields, as in the non-relativistic model (with no centre, no
+    /// quadrupole, no interaction): its checks, names and builders serve both.
+    particles: ChargedParticles<T, S>,
     c: T,
-    field: MagneticField<T>,
-    electric: [T; 3],
-    state: PhantomData<fn() -> S>,
 }
 
 impl<T: Real, S> Clone for RelativisticParticles<T, S> {
     fn clone(&self) -> Self {
         RelativisticParticles {
-            names: self.names.clone(),
-            masses: self.masses.clone(),
-            charges: self.charges.clone(),
-            ratios: self.ratios.clone(),
+            particles: self.particles.clone(),
             c: self.c,
-            field: self.field,
-            electric: self.electric,
-            state: PhantomData,
         }
     }
 }
 
-impl<T: Real, S> core::fmt::Debug for RelativisticParticles<T, S> {
+impl<T: Real, S: State<Scalar = T>> core::fmt::Debug for RelativisticParticles<T, S> {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         f.debug_struct("RelativisticParticles")
-            .field("particles", &self.masses.len())
+            .field("particles", &self.particles.masses().len())
             .field("c", &self.c)
-            .field("field", &self.field)
-            .field("electric", &self.electric)
+            .field("field", &self.particles.field())
+            .field("electric", &self.particles.electric_field())
             .finish_non_exhaustive()
     }
 }
@@ -94,56 +84,46 @@ impl<T: Real, S: State<Scalar = T>> RelativisticParticles<T, S> {
                 format!("must be a finite number > 0, got {}", to_f64(c)),
             ));
         }
-        // the same checks as the non-relativistic particles'
-        let checked = super::ChargedParticles::<T, S>::new(masses, charges)?;
-        Ok(RelativisticParticles {
-            names: checked.names().to_vec(),
-            masses: masses.to_vec(),
-            charges: charges.to_vec(),
-            ratios: checked.ratios().to_vec(),
-            c,
-            field: MagneticField::None,
-            electric: [T::zero(); 3],
-            state: PhantomData,
-        })
+        let particles = ChargedParticles::new(masses, charges)?;
+        Ok(RelativisticParticles { particles, c })
     }
 
     /// The same particles with names (one per particle; they name the CSV columns).
-    pub fn with_names(mut self, names: Vec<String>) -> Result<Self, Error> {
-        self.names = super::one_name_each(names, self.masses.len(), "particles")?;
-        Ok(self)
+    pub fn with_names(self, names: Vec<String>) -> Result<Self, Error> {
+        let particles = self.particles.with_names(names)?;
+        Ok(RelativisticParticles { particles, ..self })
     }
 
     /// In the magnetic field `field`.
-    pub fn with_field(mut self, field: MagneticField<T>) -> Self {
-        self.field = field;
-        self
+    pub fn with_field(self, field: MagneticField<T>) -> Self {
+        let particles = self.particles.with_field(field);
+        RelativisticParticles { particles, ..self }
     }
 
     /// In the uniform electric field `e`.
-    pub fn with_electric_field(mut self, e: [T; 3]) -> Self {
-        self.electric = e;
-        self
+    pub fn with_electric_field(self, e: [T; 3]) -> Self {
+        let particles = self.particles.with_electric_field(e);
+        RelativisticParticles { particles, ..self }
     }
 
     /// Number of particles.
     pub fn particles(&self) -> usize {
-        self.masses.len()
+        self.particles.particles()
     }
 
     /// The names of the particles.
     pub fn names(&self) -> &[String] {
-        &self.names
+        self.particles.names()
     }
 
     /// The masses.
     pub fn masses(&self) -> &[T] {
-        &self.masses
+        self.particles.masses()
     }
 
     /// The charge-to-mass ratios.
     pub fn ratios(&self) -> &[T] {
-        &self.ratios
+        self.particles.ratios()
     }
 
     /// The speed of light.
@@ -153,17 +133,18 @@ impl<T: Real, S: State<Scalar = T>> RelativisticParticles<T, S> {
 
     /// The magnetic field.
     pub fn field(&self) -> MagneticField<T> {
-        self.field
+        self.particles.field()
     }
 
     /// The uniform electric field (zero when there is none).
     pub fn electric_field(&self) -> [T; 3] {
-        self.electric
+        self.particles.electric_field()
     }
 
     /// The fields and ratios, as the pushers read them.
     pub fn fields(&self) -> ExternalFields<'_, T> {
-        ExternalFields::new(&self.ratios, self.electric, self.field)
+        let p = &self.particles;
+        ExternalFields::new(p.ratios(), p.electric_field(), p.field())
     }
 
     /// `gamma = sqrt(1 + |u|^2/c^2)` of a momentum per unit mass `u` (3 components).
@@ -175,24 +156,7 @@ impl<T: Real, S: State<Scalar = T>> RelativisticParticles<T, S> {
     /// Writes the particles at `positions` with momenta per unit mass `momenta`
     /// (`u = gamma v`; `3N` values each, particle by particle) into `y`.
     pub fn set_state(&self, positions: &[T], momenta: &[T], y: &mut S) -> Result<(), Error> {
-        let len = 3 * self.masses.len();
-        if positions.len() != len || momenta.len() != len || y.dim() != 2 * len {
-            return Err(Error::invalid(
-                "state",
-                format!(
-                    "{} particles need {len} positions, {len} momenta and a state of {}, got {}, {} and {}",
-                    self.masses.len(),
-                    2 * len,
-                    positions.len(),
-                    momenta.len(),
-                    y.dim()
-                ),
-            ));
-        }
-        let (x, u) = y.as_mut_slice().split_at_mut(len);
-        x.copy_from_slice(positions);
-        u.copy_from_slice(momenta);
-        Ok(())
+        write_particles(self.particles(), positions, (momenta, "momenta"), y)
     }
 
     /// The state at time `t` after `y0` in a uniform magnetic field and no electric field:
@@ -200,7 +164,7 @@ impl<T: Real, S: State<Scalar = T>> RelativisticParticles<T, S> {
     /// `r |B| / gamma` (the non-relativistic gyration of `(x, u/gamma)` with `omega / gamma`);
     /// `None` in any other field.
     pub fn exact_state(&self, y0: &S, t: T) -> Option<S> {
-        if !self.field.is_uniform() || self.electric.iter().any(|&e| e != T::zero()) {
+        if !self.field().is_uniform() || self.electric_field().iter().any(|&e| e != T::zero()) {
             return None;
         }
         let mut y = y0.clone();
@@ -230,10 +194,11 @@ impl<T: Real, S: State<Scalar = T>> Problem for RelativisticParticles<T, S> {
             let g = self.gamma(uk);
             let v = [uk[0] / g, uk[1] / g, uk[2] / g];
             let r = fields.ratio(k);
-            let force = cross(&v, &self.field.b(xk));
+            let force = cross(&v, &self.field().b(xk));
+            let electric = self.electric_field();
             for i in 0..3 {
                 dx[3 * k + i] = v[i];
-                du[3 * k + i] = r * (self.electric[i] + force[i]);
+                du[3 * k + i] = r * (electric[i] + force[i]);
             }
         }
     }
@@ -241,13 +206,13 @@ impl<T: Real, S: State<Scalar = T>> Problem for RelativisticParticles<T, S> {
     /// `sum m_k c^2 (gamma_k - 1) - c_k E . x_k`.
     fn energy(&self, _t: T, y: &S) -> Option<T> {
         let (x, u) = halves(y.as_slice());
+        let (masses, charges, electric) = (self.masses(), self.particles.charges(), self.electric_field());
         let mut e = T::zero();
         for (k, (xk, uk)) in x.chunks_exact(3).zip(u.chunks_exact(3)).enumerate() {
             // c^2 (gamma - 1) = |u|^2 / (gamma + 1), without cancellation at low speed
             let g = self.gamma(uk);
-            let kinetic = self.masses[k] * norm2(uk) / (g + T::one());
-            let potential =
-                self.charges[k] * (self.electric[0] * xk[0] + self.electric[1] * xk[1] + self.electric[2] * xk[2]);
+            let kinetic = masses[k] * norm2(uk) / (g + T::one());
+            let potential = charges[k] * (electric[0] * xk[0] + electric[1] * xk[1] + electric[2] * xk[2]);
             e += kinetic - potential;
         }
         Some(e)

@@ -2,7 +2,7 @@
 //! with the exact rotation angle.
 
 use super::boris_lanes::push_lanes;
-use super::particle_chunks::try_for_each_chunk;
+use super::particle_chunks::{check_particles_in_3d, try_for_each_chunk};
 use super::{Counters, ParticleMethod, Stepper};
 use crate::hamiltonian::halves_mut;
 use crate::magnetic::{cross, Charged, Lorentz};
@@ -78,19 +78,11 @@ pub struct Boris<S> {
 impl<S: State> Boris<S> {
     /// A stepper with buffers shaped like `y0 = (q, v)`, of length `6N`.
     pub fn new(rotation: BorisRotation, y0: &S) -> Result<Self, Error> {
-        if y0.dim() == 0 || y0.dim() % 6 != 0 {
-            let method = match rotation {
-                BorisRotation::Cayley => ParticleMethod::Boris,
-                BorisRotation::ExactPhase => ParticleMethod::BorisExactPhase,
-            };
-            return Err(Error::Unsupported {
-                name: method.name().into(),
-                reason: format!(
-                    "it moves particles in 3-D: the state (q, v) needs 6 components per particle, not {}",
-                    y0.dim()
-                ),
-            });
-        }
+        let method = match rotation {
+            BorisRotation::Cayley => ParticleMethod::Boris,
+            BorisRotation::ExactPhase => ParticleMethod::BorisExactPhase,
+        };
+        check_particles_in_3d(method.name(), "(q, v)", y0.dim())?;
         Ok(Boris {
             rotation,
             work: y0.zeros_like(),

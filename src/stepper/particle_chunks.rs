@@ -18,6 +18,18 @@ pub const CHUNK: usize = 4096;
 /// threads outweighs the work: measured in docs/benchmarks.md, "Many charged particles").
 pub const PARALLEL_FROM: usize = 16_384;
 
+/// Refuses, for the pusher `name`, a state of `dim` components that is not particles in
+/// 3-D: `halves` (`(q, v)`, `(x, u)`) with 6 components per particle, at least one.
+pub(crate) fn check_particles_in_3d(name: &str, halves: &str, dim: usize) -> Result<(), Error> {
+    if dim == 0 || dim % 6 != 0 {
+        return Err(Error::Unsupported {
+            name: name.into(),
+            reason: format!("it moves particles in 3-D: the state {halves} needs 6 components per particle, not {dim}"),
+        });
+    }
+    Ok(())
+}
+
 /// Calls `push(first, q, v)` on every chunk of particles: `q` and `v` are the chunk's
 /// positions and velocities (3 components per particle, particle after particle; `q`
 /// and `v` the two halves of a state), `first` the index of its first particle. Stops at

@@ -7,7 +7,7 @@
 use super::{RelativisticPush, Stepper};
 use crate::magnetic::RelativisticKick;
 use crate::models::RelativisticParticles;
-use crate::registry::normalize;
+use crate::registry::find_named;
 use crate::{Error, Flags, MethodInfo, Real, State};
 
 /// A relativistic pusher, chosen by name.
@@ -48,8 +48,7 @@ impl RelativisticMethod {
 
     /// The method called `name` (`-`, `_`, spaces and case as in [`crate::registry::lookup`]).
     pub fn find(name: &str) -> Option<Self> {
-        let key = normalize(name);
-        RELATIVISTIC_METHODS.iter().copied().find(|m| m.name() == key)
+        find_named(RELATIVISTIC_METHODS, Self::name, name)
     }
 
     /// Its momentum update.

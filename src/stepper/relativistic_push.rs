@@ -1,7 +1,7 @@
 //! The relativistic pushers' step: drift half a step, kick, drift half a step, particle
 //! by particle, in parallel chunks.
 
-use super::particle_chunks::try_for_each_chunk;
+use super::particle_chunks::{check_particles_in_3d, try_for_each_chunk};
 use super::{Counters, RelativisticMethod, Stepper};
 use crate::hamiltonian::halves_mut;
 use crate::models::{ExternalFields, RelativisticParticles};
@@ -35,15 +35,7 @@ pub struct RelativisticPush<S> {
 impl<S: State> RelativisticPush<S> {
     /// The stepper of `method` for states shaped like `y0 = (x, u)`, of length `6N`.
     pub fn new(method: RelativisticMethod, y0: &S) -> Result<Self, Error> {
-        if y0.dim() == 0 || y0.dim() % 6 != 0 {
-            return Err(Error::Unsupported {
-                name: method.name().into(),
-                reason: format!(
-                    "it moves particles in 3-D: the state (x, u) needs 6 components per particle, not {}",
-                    y0.dim()
-                ),
-            });
-        }
+        check_particles_in_3d(method.name(), "(x, u)", y0.dim())?;
         Ok(RelativisticPush {
             method,
             counters: Counters::default(),

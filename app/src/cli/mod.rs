@@ -15,6 +15,7 @@ mod run;
 mod sample;
 mod save_at;
 mod scene;
+mod scene_overrides;
 mod section;
 mod study;
 mod tour;

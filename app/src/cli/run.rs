@@ -3,6 +3,7 @@
 use super::choice;
 use super::output::{file_safe, CsvRecorder};
 use super::pipeline::{Options, SceneRun, Steps, Track};
+use super::scene_overrides::SceneOverrides;
 use super::section::{Section, WithSection};
 use anyhow::anyhow;
 use std::io::Write;
@@ -16,16 +17,8 @@ use stormer_app::scenes::{self, Scene, SceneVisitor, Setup};
 pub struct RunArgs {
     /// A built-in scene (see `stormer scene list`) or a path to a scene file (.toml).
     pub scene: String,
-    /// The method: a catalog name (`stormer methods`), a TOML method file, or `theta`
-    /// [default: the scene's].
-    #[arg(long, short, value_name = "NAME|FILE")]
-    pub method: Option<String>,
-    /// Step size (> 0) [default: the scene's]; with --rtol/--atol, the first step.
-    #[arg(long, value_name = "H", allow_negative_numbers = true)]
-    pub dt: Option<f64>,
-    /// End time [default: the scene's].
-    #[arg(long, value_name = "T", allow_negative_numbers = true)]
-    pub t_end: Option<f64>,
+    #[command(flatten)]
+    pub overrides: SceneOverrides,
     /// Write one record every N steps (the first and last are always written)
     /// [default: the scene's].
     #[arg(long, value_name = "N")]
@@ -89,22 +82,13 @@ pub enum SolverArg {
 
 /// The arguments' own domains, checked before anything runs.
 fn check(args: &RunArgs) -> Result<(), Error> {
-    let positive = |what: &str, x: Option<f64>| match x {
-        Some(v) if !(v.is_finite() && v > 0.0) => {
-            Err(Error::invalid(what, format!("must be a finite number > 0, got {v}")))
-        }
-        _ => Ok(()),
-    };
     let non_negative = |what: &str, x: Option<f64>| match x {
         Some(v) if !(v.is_finite() && v >= 0.0) => {
             Err(Error::invalid(what, format!("must be a finite number >= 0, got {v}")))
         }
         _ => Ok(()),
     };
-    positive("--dt", args.dt)?;
-    if let Some(t) = args.t_end.filter(|t| !t.is_finite()) {
-        return Err(Error::invalid("--t-end", format!("must be a finite number, got {t}")));
-    }
+    args.overrides.check()?;
     if args.every == Some(0) {
         return Err(Error::invalid("--every", "must be >= 1, got 0"));
     }
@@ -165,14 +149,14 @@ impl Runner<'_> {
             let atol = args.atol.or(args.rtol).unwrap_or_default();
             Steps::Adaptive {
                 tol: Tolerances::new(rtol, atol),
-                h0: args.dt,
+                h0: args.overrides.dt,
             }
         } else {
-            Steps::Fixed(args.dt)
+            Steps::Fixed(args.overrides.dt)
         };
         Ok(Options {
             steps,
-            t_end: args.t_end,
+            t_end: args.overrides.t_end,
             every: args.every,
             save_at,
             section: None,
@@ -189,7 +173,7 @@ impl SceneVisitor for Runner<'_> {
 
     fn visit<S: Scene>(self, setup: Setup<S>) -> anyhow::Result<()> {
         let args = self.args;
-        let method_name = args.method.as_deref().unwrap_or(&setup.run.method);
+        let method_name = args.overrides.method.as_deref().unwrap_or(&setup.run.method);
         let method = choice::resolve(method_name, args.alpha)?;
         let mut options = self.options()?;
         let section = args
@@ -202,7 +186,7 @@ impl SceneVisitor for Runner<'_> {
         let default_path =
             PathBuf::from("out").join(format!("{}-{}.csv", file_safe(&setup.name), file_safe(method.name())));
         let path = args.out.clone().unwrap_or_else(|| default_path.clone());
-        let inputs: Vec<&Path> = [Some(args.scene.as_str()), args.method.as_deref()]
+        let inputs: Vec<&Path> = [Some(args.scene.as_str()), args.overrides.method.as_deref()]
             .into_iter()
             .flatten()
             .map(Path::new)

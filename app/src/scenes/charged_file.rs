@@ -18,8 +18,8 @@
 //! ```
 
 use super::file::{Number, Source};
-use super::nbody_file::{column, Taken};
-use super::particle_list::{read_particles, ParticleList};
+use super::nbody_file::Taken;
+use super::particle_list::{particle_columns, read_particles, ParticleList};
 use super::{Built, Scene};
 use nalgebra::DVector;
 use serde::Deserialize;
@@ -310,22 +310,7 @@ impl Scene for ChargedScene {
     /// `<name>_x, <name>_y, <name>_z` for every particle, then `<name>_vx, ...`; a single
     /// particle has `x, y, z, vx, vy, vz`.
     fn components(&self, _y0: &DVector<f64>) -> Vec<String> {
-        let single = self.0.particles() == 1;
-        let prefix = |n: &String| {
-            if single {
-                String::new()
-            } else {
-                format!("{}_", column(n))
-            }
-        };
-        let names = self.0.names();
-        let q = names
-            .iter()
-            .flat_map(|n| ["x", "y", "z"].map(|a| format!("{}{a}", prefix(n))));
-        let v = names
-            .iter()
-            .flat_map(|n| ["vx", "vy", "vz"].map(|a| format!("{}{a}", prefix(n))));
-        q.chain(v).collect()
+        particle_columns(self.0.names(), "v")
     }
 
     /// Known for independent particles in uniform fields ([`ChargedParticles::exact_state`]).
@@ -337,10 +322,9 @@ impl Scene for ChargedScene {
 #[cfg(test)]
 #[allow(clippy::float_cmp)] // values read from a file are compared exactly
 mod tests {
-    use crate::scenes::{parse, AnyScene, Scene};
+    use crate::scenes::{bad_line, parse, AnyScene, Scene};
     use stormer::magnetic::Lorentz;
     use stormer::models::MagneticField;
-    use stormer::Error;
 
     const GOOD: &str = "model = \"charged-particles\"\n\
                         [parameters]\n\
@@ -363,18 +347,6 @@ mod tests {
                         method = \"boris\"\n\
                         dt = 0.01\n\
                         t_end = 1.0\n";
-
-    /// The error message for `GOOD` with line `line` (1-based) replaced.
-    fn error_with(line: usize, text: &str) -> String {
-        let mut lines: Vec<&str> = GOOD.lines().collect();
-        lines[line - 1] = text;
-        let err = parse(&lines.join("\n"), "ions.toml", "ions").unwrap_err();
-        assert!(matches!(err, Error::Scene { .. }), "{err:?}");
-        let message = err.to_string();
-        assert!(message.starts_with("scene ions.toml: "), "{message}");
-        assert!(!message.contains('\n'), "one line: {message}");
-        message
-    }
 
     #[test]
     fn the_good_file_parses() {
@@ -479,10 +451,7 @@ mod tests {
                 "line 14: particles[1].name \"a\" is already the name of particles[0]",
             ),
         ];
-        for (line, text, expected) in cases {
-            let message = error_with(line, text);
-            assert!(message.contains(expected), "{text}: {message}");
-        }
+        bad_line::assert_bad_lines(GOOD, "ions.toml", &cases);
         // a particle at the Coulomb centre
         let text = GOOD
             .replace("interaction = 1.0", "mu = 1.0")

@@ -42,6 +42,8 @@
 //! ```
 
 mod arenstorf;
+#[cfg(test)]
+mod bad_line;
 mod builtin;
 mod central_force_file;
 mod charged_file;

@@ -213,8 +213,7 @@ impl Scene for NBody<f64, DVector<f64>> {
 #[cfg(test)]
 #[allow(clippy::float_cmp)] // values read from a file are compared exactly
 mod tests {
-    use crate::scenes::{load, parse, AnyScene, Scene};
-    use stormer::Error;
+    use crate::scenes::{bad_line, load, parse, AnyScene, Scene};
 
     const GOOD: &str = "model = \"n-body\"\n\
                         [parameters]\n\
@@ -233,18 +232,6 @@ mod tests {
                         method = \"rk4\"\n\
                         dt = 0.01\n\
                         t_end = 1.0\n";
-
-    /// The error message for `GOOD` with line `line` (1-based) replaced.
-    fn error_with(line: usize, text: &str) -> String {
-        let mut lines: Vec<&str> = GOOD.lines().collect();
-        lines[line - 1] = text;
-        let err = parse(&lines.join("\n"), "bodies.toml", "bodies").unwrap_err();
-        assert!(matches!(err, Error::Scene { .. }), "{err:?}");
-        let message = err.to_string();
-        assert!(message.starts_with("scene bodies.toml: "), "{message}");
-        assert!(!message.contains('\n'), "one line: {message}");
-        message
-    }
 
     #[test]
     fn the_good_file_parses() {
@@ -318,10 +305,7 @@ mod tests {
                 "line 12, column 12: invalid type: string \"here\"",
             ),
         ];
-        for (line, text, expected) in cases {
-            let message = error_with(line, text);
-            assert!(message.contains(expected), "{text}: {message}");
-        }
+        bad_line::assert_bad_lines(GOOD, "bodies.toml", &cases);
     }
 
     #[test]

@@ -15,7 +15,8 @@
 
 use super::charged_file::{mass_and_charge, vector3, ParticleEntry};
 use super::file::Source;
-use super::nbody_file::Taken;
+use super::nbody_file::{column, Taken};
+use stormer::splitmix64::SplitMix64;
 use stormer::Error;
 use toml::Spanned;
 
@@ -34,24 +35,30 @@ pub(super) struct ParticleList {
 /// At most this many particles in one scene (10^8: 4.8 GB per state in `f64`).
 const MOST_PARTICLES: u64 = 100_000_000;
 
-/// SplitMix64 (Steele, Lea and Flood 2014): a 64-bit state, numbers in `[-1, 1)` with 53
-/// bits, the same sequence on every platform.
-struct SplitMix64(u64);
+/// A point of the box `centre +- spread`, drawn from `sample`.
+fn in_box(sample: &mut SplitMix64, centre: &[f64; 3], spread: &[f64; 3]) -> [f64; 3] {
+    [0, 1, 2].map(|i| centre[i] + spread[i] * sample.draw())
+}
 
-impl SplitMix64 {
-    fn next(&mut self) -> f64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^= z >> 31;
-        (z >> 11) as f64 / (1u64 << 52) as f64 - 1.0
-    }
-
-    /// A point of the box `centre +- spread`.
-    fn in_box(&mut self, centre: &[f64; 3], spread: &[f64; 3]) -> [f64; 3] {
-        [0, 1, 2].map(|i| centre[i] + spread[i] * self.next())
-    }
+/// The CSV columns of particles in 3-D named `names`: `<name>_x, <name>_y, <name>_z` for
+/// every particle, then `<name>_<rate>x, ...` (`rate` is `v` for velocities, `u` for
+/// momenta per unit mass); a single particle has `x, y, z, <rate>x, <rate>y, <rate>z`.
+pub(super) fn particle_columns(names: &[String], rate: &str) -> Vec<String> {
+    let single = names.len() == 1;
+    let prefix = |n: &String| {
+        if single {
+            String::new()
+        } else {
+            format!("{}_", column(n))
+        }
+    };
+    let q = names
+        .iter()
+        .flat_map(|n| ["x", "y", "z"].map(|a| format!("{}{a}", prefix(n))));
+    let v = names
+        .iter()
+        .flat_map(|n| ["x", "y", "z"].map(|a| format!("{}{rate}{a}", prefix(n))));
+    q.chain(v).collect()
 }
 
 /// Reads the list, calling `check(entry, name, position, entry's span)` on every particle
@@ -121,10 +128,10 @@ pub(super) fn read_particles(
                 ),
             ));
         }
-        let mut sample = SplitMix64(p.seed.as_ref().map_or(1, |s| *s.get_ref()));
+        let mut sample = SplitMix64::new(p.seed.as_ref().map_or(1, |s| *s.get_ref()));
         list.reserve(n as usize);
         for j in 0..n {
-            let (qj, vj) = (sample.in_box(&q, &q_spread), sample.in_box(&v, &v_spread));
+            let (qj, vj) = (in_box(&mut sample, &q, &q_spread), in_box(&mut sample, &v, &v_spread));
             let name_j = format!("{name}_{j}");
             check(k, &name_j, &qj, &list)?;
             list.push(name_j, mass, charge, qj, vj);
@@ -148,20 +155,5 @@ impl ParticleList {
         self.charges.reserve(n);
         self.positions.reserve(3 * n);
         self.velocities.reserve(3 * n);
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::SplitMix64;
-
-    /// The first outputs of SplitMix64 from seed 0 (the reference C code's `next()` with
-    /// `x = 0`: 0xE220A8397B1DCDAF, 0x6E789E6AA1B965F4), in `[-1, 1)`.
-    #[test]
-    fn the_generator_is_splitmix64() {
-        let mut s = SplitMix64(0);
-        let expect = |bits: u64| (bits >> 11) as f64 / (1u64 << 52) as f64 - 1.0;
-        assert_eq!(s.next().to_bits(), expect(0xE220_A839_7B1D_CDAF).to_bits());
-        assert_eq!(s.next().to_bits(), expect(0x6E78_9E6A_A1B9_65F4).to_bits());
     }
 }

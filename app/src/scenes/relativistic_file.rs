@@ -16,8 +16,7 @@
 
 use super::charged_file::{magnetic_field, vector3, BottleTable, DipoleTable, FieldKeys, ParticleEntry};
 use super::file::{Number, Source};
-use super::nbody_file::column;
-use super::particle_list::{read_particles, ParticleList};
+use super::particle_list::{particle_columns, read_particles, ParticleList};
 use super::{Built, Scene};
 use nalgebra::DVector;
 use serde::Deserialize;
@@ -111,23 +110,7 @@ impl Scene for RelativisticScene {
     /// `<name>_x, ...` for every particle, then `<name>_ux, ...` (`u = gamma v`); a single
     /// particle has `x, y, z, ux, uy, uz`.
     fn components(&self, _y0: &DVector<f64>) -> Vec<String> {
-        let single = self.particles() == 1;
-        let prefix = |n: &String| {
-            if single {
-                String::new()
-            } else {
-                format!("{}_", column(n))
-            }
-        };
-        let q = self
-            .names()
-            .iter()
-            .flat_map(|n| ["x", "y", "z"].map(|a| format!("{}{a}", prefix(n))));
-        let u = self
-            .names()
-            .iter()
-            .flat_map(|n| ["ux", "uy", "uz"].map(|a| format!("{}{a}", prefix(n))));
-        q.chain(u).collect()
+        particle_columns(self.names(), "u")
     }
 
     /// Known in a uniform magnetic field alone ([`RelativisticParticles::exact_state`]).

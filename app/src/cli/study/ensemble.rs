@@ -13,6 +13,7 @@ use super::scene_numbers::{self, Numbers};
 use super::vary::{self, Axis, Vary};
 use crate::cli::output::one_line;
 use crate::cli::pipeline::{Options, SceneRun, Steps};
+use crate::cli::scene_overrides::SceneOverrides;
 use anyhow::{anyhow, bail, Context};
 use rayon::prelude::*;
 use serde::Deserialize;
@@ -37,15 +38,8 @@ pub struct EnsembleArgs {
         allow_hyphen_values = true
     )]
     pub vary: Vec<String>,
-    /// The method [default: the scene's].
-    #[arg(long, short, value_name = "NAME|FILE")]
-    pub method: Option<String>,
-    /// Fixed step size (> 0) [default: the scene's].
-    #[arg(long, value_name = "H", allow_negative_numbers = true)]
-    pub dt: Option<f64>,
-    /// End time [default: the scene's].
-    #[arg(long, value_name = "T", allow_negative_numbers = true)]
-    pub t_end: Option<f64>,
+    #[command(flatten)]
+    pub overrides: SceneOverrides,
     /// The column drawn: t, a component of the state, energy_error, steps or evaluations
     /// [default: the state's first component].
     #[arg(long, value_name = "COLUMN")]
@@ -171,12 +165,7 @@ fn column_label(column: &str, units: &Units) -> String {
 
 /// `stormer ensemble`.
 pub fn ensemble(args: &EnsembleArgs) -> anyhow::Result<()> {
-    if let Some(t) = args.t_end.filter(|t| !t.is_finite()) {
-        bail!(Error::invalid("--t-end", format!("must be a finite number, got {t}")));
-    }
-    if let Some(h) = args.dt.filter(|h| !(h.is_finite() && *h > 0.0)) {
-        bail!(Error::invalid("--dt", format!("must be a finite number > 0, got {h}")));
-    }
+    args.overrides.check()?;
     if args.jobs == Some(0) {
         bail!(Error::invalid("--jobs", "must be >= 1, got 0"));
     }
@@ -202,18 +191,18 @@ pub fn ensemble(args: &EnsembleArgs) -> anyhow::Result<()> {
         })
         .collect();
     let size = vary::member_count(&axes)?;
-    let method_name = match &args.method {
+    let method_name = match &args.overrides.method {
         Some(m) => m.clone(),
         None => scene.parse()?.run().method.clone(),
     };
-    let plan = job::plan(&scene, std::slice::from_ref(&method_name), args.t_end)?;
+    let plan = job::plan(&scene, std::slice::from_ref(&method_name), args.overrides.t_end)?;
     let method = plan.resolved.first().context("no method")?;
     let mut id = EnsembleId {
         scene: plan.scene.clone(),
         scene_hash: plan.scene_hash.clone(),
         method: method.name().to_string(),
-        dt: args.dt,
-        t_end: args.t_end,
+        dt: args.overrides.dt,
+        t_end: args.overrides.t_end,
         axes,
         components: plan.components.clone(),
         stop: plan.stop.map(String::from),
@@ -239,7 +228,7 @@ pub fn ensemble(args: &EnsembleArgs) -> anyhow::Result<()> {
         (1, 1) => super::ensemble_report::outputs(&id, &args.out),
         _ => vec![part_path(&id, &args.out, shard)],
     };
-    let inputs = [Some(args.scene.as_str()), args.method.as_deref()];
+    let inputs = [Some(args.scene.as_str()), args.overrides.method.as_deref()];
     let inputs: Vec<&Path> = inputs.into_iter().flatten().map(Path::new).collect();
     for output in &outputs {
         crate::cli::output::refuse_overwriting(output, &inputs)?;
@@ -326,16 +315,7 @@ pub fn merge(texts: &[(&PathBuf, String)], out: &Path) -> anyhow::Result<()> {
         ensemble_part::check(&part).map_err(|reason| anyhow!("{file}: {reason}"))?;
         parts.push((*path, part));
     }
-    super::check_parts(&parts)?;
-    let mut rows: Vec<Member> = parts.iter().flat_map(|(_, p)| p.rows.iter().cloned()).collect();
-    rows.sort_by_key(|r| r.member);
-    let mut whole = parts
-        .into_iter()
-        .next()
-        .map(|(_, p)| p)
-        .context("no partial tables given")?;
-    whole.rows = rows;
-    whole.shard = (1, 1);
+    let whole = super::join(parts)?;
     let inputs: Vec<&Path> = texts.iter().map(|(p, _)| p.as_path()).collect();
     for output in super::ensemble_report::outputs(&whole.ensemble, out) {
         crate::cli::output::refuse_overwriting(&output, &inputs)?;

@@ -125,8 +125,19 @@ impl Sharded for EnsemblePart {
     fn size(&self) -> usize {
         member_count(&self.ensemble.axes).unwrap_or(0)
     }
-    fn indices(&self) -> Vec<usize> {
-        self.rows.iter().map(|r| r.member).collect()
+    type Row = Member;
+    fn rows(&self) -> &[Member] {
+        &self.rows
+    }
+    fn index(row: &Member) -> usize {
+        row.member
+    }
+    fn into_whole(self, rows: Vec<Member>) -> Self {
+        EnsemblePart {
+            rows,
+            shard: (1, 1),
+            ..self
+        }
     }
     fn differing_field(&self, other: &Self) -> Option<&'static str> {
         let (a, b) = (&self.ensemble, &other.ensemble);

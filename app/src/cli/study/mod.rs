@@ -498,8 +498,18 @@ pub(super) trait Sharded {
     fn shard(&self) -> (usize, usize);
     /// The size of the whole work list.
     fn size(&self) -> usize;
+    /// A row of the table: one job or member's results.
+    type Row: Clone;
+    /// This part's rows.
+    fn rows(&self) -> &[Self::Row];
+    /// A row's index in the work list.
+    fn index(row: &Self::Row) -> usize;
+    /// This part's description with `rows` as its rows: the whole table, shard 1 of 1.
+    fn into_whole(self, rows: Vec<Self::Row>) -> Self;
     /// The indices in the work list of this part's rows, in order.
-    fn indices(&self) -> Vec<usize>;
+    fn indices(&self) -> Vec<usize> {
+        self.rows().iter().map(Self::index).collect()
+    }
     /// The first field that makes `self` and `other` parts of different work lists.
     fn differing_field(&self, other: &Self) -> Option<&'static str>;
 }
@@ -512,8 +522,19 @@ impl Sharded for Part {
     fn size(&self) -> usize {
         self.study.jobs.len()
     }
-    fn indices(&self) -> Vec<usize> {
-        self.rows.iter().map(|r| r.job).collect()
+    type Row = Row;
+    fn rows(&self) -> &[Row] {
+        &self.rows
+    }
+    fn index(row: &Row) -> usize {
+        row.job
+    }
+    fn into_whole(self, rows: Vec<Row>) -> Self {
+        Part {
+            rows,
+            shard: (1, 1),
+            ..self
+        }
     }
     fn differing_field(&self, other: &Self) -> Option<&'static str> {
         part_check::differing_field(&self.study, &other.study)
@@ -579,20 +600,18 @@ pub(super) fn check_parts<P: Sharded>(parts: &[(&PathBuf, P)]) -> anyhow::Result
     Ok(())
 }
 
-/// Joins the parts of one study, checking that they belong together and that none is
-/// missing or given twice.
-fn join(parts: Vec<(&PathBuf, Part)>) -> anyhow::Result<Part> {
+/// Joins the parts of one work list (a study's, an ensemble's), checking that they belong
+/// together and that none is missing or given twice.
+pub(super) fn join<P: Sharded>(parts: Vec<(&PathBuf, P)>) -> anyhow::Result<P> {
     check_parts(&parts)?;
-    let mut rows: Vec<Row> = parts.iter().flat_map(|(_, p)| p.rows.iter().cloned()).collect();
-    rows.sort_by_key(|r| r.job);
-    let mut whole = parts
+    let mut rows: Vec<P::Row> = parts.iter().flat_map(|(_, p)| p.rows().iter().cloned()).collect();
+    rows.sort_by_key(P::index);
+    let first = parts
         .into_iter()
         .next()
         .map(|(_, p)| p)
         .context("no partial tables given")?;
-    whole.rows = rows;
-    whole.shard = (1, 1);
-    Ok(whole)
+    Ok(first.into_whole(rows))
 }
 
 /// `[0, 3, 6]`, shortened after 8 entries.
