@@ -1,5 +1,5 @@
 //! Symplectic correctors ([`stormer::corrector`]) on the Wisdom-Holman split of the outer
-//! solar system, and the generalized orders of the near-integrable methods on that split.
+//! solar system, and the generalized orders of the near-integrable methods on the split.
 
 use stormer::corrector::{Corrected, CorrectorData};
 use stormer::models::{KeplerCoordinates, KeplerSplit, NBody};
@@ -279,5 +279,145 @@ fn a_collision_course_with_correctors_ends_cleanly() {
                 e.error
             ),
         }
+    }
+}
+
+/// A star and two planets on circular orbits at 1 and 3 in the plane (G = 1), of masses
+/// `eps` and `eps`.
+fn two_planets(eps: f64) -> (KeplerSplit<f64, [f64; 12]>, [f64; 12]) {
+    let bodies = NBody::<f64, [f64; 12]>::new(1.0, &[1.0, eps, eps], 2).unwrap();
+    let mut y = [0.0; 12];
+    let v2 = (1.0f64 / 3.0).sqrt();
+    bodies
+        .set_state(
+            &[0.0, 0.0, 1.0, 0.0, -3.0, 0.0],
+            &[0.0, 0.0, 0.0, 1.0, 0.0, -v2],
+            &mut y,
+        )
+        .unwrap();
+    let split = KeplerSplit::new(bodies, KeplerCoordinates::Jacobi).unwrap();
+    let y0 = split.from_scene(&y);
+    (split, y0)
+}
+
+fn two_planet_error(method: &Method, eps: f64, h: f64, t_end: f64) -> f64 {
+    let (split, y0) = two_planets(eps);
+    let mut stepper = method.stepper_for(&split, &y0, &ImplicitOptions::default()).unwrap();
+    let run = Driver::fixed(h)
+        .compensated()
+        .run(&split, &mut stepper, 0.0, &y0, t_end)
+        .unwrap();
+    let e0 = run.energy[0];
+    run.energy.iter().map(|e| ((e - e0) / e0).abs()).fold(0.0, f64::max)
+}
+
+/// The steps (in units of the inner planet's period over 2 pi) and the planets' masses
+/// of the scans.
+const STEPS: [f64; 8] = [0.1, 0.141, 0.2, 0.283, 0.4, 0.566, 0.8, 1.13];
+const MASSES: [f64; 5] = [1e-2, 1e-3, 1e-4, 1e-5, 1e-6];
+
+/// `(eps, h, largest relative energy error)` of `method` over the scan, compensated,
+/// over 300 time units (48 inner periods).
+fn scan(method: &str) -> Vec<(f64, f64, f64)> {
+    let method = Method::named(method).unwrap();
+    let mut points = Vec::new();
+    for eps in MASSES {
+        for h in STEPS {
+            points.push((eps, h, two_planet_error(&method, eps, h, 300.0)));
+        }
+    }
+    points
+}
+
+/// The exponents `(a, p)` of `c eps^a h^p` fitted to `points` by least squares in the
+/// logarithms.
+fn fit(points: &[(f64, f64, f64)]) -> (f64, f64) {
+    assert!(
+        points.len() >= 3,
+        "too few points above the round-off floor: {points:?}"
+    );
+    // normal equations of sum (ln c + a ln eps + p ln h - ln e)^2
+    let (mut m, mut r) = ([[0.0; 3]; 3], [0.0; 3]);
+    for &(eps, h, e) in points {
+        let x = [1.0, eps.ln(), h.ln()];
+        for k in 0..3 {
+            r[k] += x[k] * e.ln();
+            for l in 0..3 {
+                m[k][l] += x[k] * x[l];
+            }
+        }
+    }
+    let det = |m: [[f64; 3]; 3]| {
+        m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
+            + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0])
+    };
+    let solve = |k: usize| {
+        let mut mk = m;
+        for (row, &r) in mk.iter_mut().zip(&r) {
+            row[k] = r;
+        }
+        det(mk) / det(m)
+    };
+    (solve(1), solve(2))
+}
+
+/// The round-off floor of the scans' energy errors (compensated runs): a point counts when
+/// it is 20 times above it.
+const FLOOR: f64 = 2e-15;
+
+/// The slope of `log e` against `log h` between the points at `h0` and `h1` for `eps`.
+fn slope(points: &[(f64, f64, f64)], eps: f64, h0: f64, h1: f64) -> f64 {
+    let at = |h: f64| points.iter().find(|p| p.0 == eps && p.1 == h).unwrap().2;
+    (at(h1) / at(h0)).ln() / (h1 / h0).ln()
+}
+
+/// The generalized orders on the Kepler split: the energy error of a near-integrable
+/// method scales as `eps h^p1 + eps^2 h^p2`. Scanned over the planets' masses `eps` (1e-2
+/// to 1e-6) and the step `h` (0.1 to 1.13 of the inner planet's period over 2 pi) on a star
+/// and two planets on circular orbits at 1 and 3, compensated, and each term fitted as
+/// `c eps^a h^p` where it dominates, with the step in the asymptotic regime (h <= 0.4):
+///
+/// * the `eps h^p1` term, at the two smallest masses: saba2 (a, p) = (1.00, 4.05), saba3
+///   (0.99, 6.26), both within 0.3 of (1, p1);
+/// * the `eps^2 h^p2` term, at the three largest masses: saba4 (1.95, 2.02), within 0.3 of
+///   (2, 2).
+///
+/// saba4's `eps h^8` and aba864's whole `eps h^8 + eps^2 h^6 + eps^3 h^4` stay below 20
+/// times the round-off floor wherever the step is in its asymptotic regime, so their `p1`
+/// shows only beyond it (h from 0.8 to 1.13): there their error is linear in `eps` and
+/// steeper than `h^8` (measured slopes 10.75 for both), which the test asserts, with the
+/// error at h = 0.4 and eps = 1e-6 below 1e-14 (saba3's `eps h^6` is 6e-14 there).
+#[test]
+fn the_near_integrable_methods_reach_their_generalized_orders() {
+    let regime = |points: &[(f64, f64, f64)], masses: &[f64]| -> Vec<(f64, f64, f64)> {
+        points
+            .iter()
+            .copied()
+            .filter(|p| p.1 <= 0.4 && masses.contains(&p.0) && p.2 > 20.0 * FLOOR)
+            .collect()
+    };
+    for (method, p1) in [("saba2", 4.0), ("saba3", 6.0)] {
+        let (a, p) = fit(&regime(&scan(method), &[1e-5, 1e-6]));
+        eprintln!("{method}: the eps term fitted as eps^{a:.2} h^{p:.2}, declared eps h^{p1}");
+        assert!(
+            (a - 1.0).abs() <= 0.3 && (p - p1).abs() <= 0.3,
+            "{method}: eps^{a} h^{p}"
+        );
+    }
+    let saba4 = scan("saba4");
+    let (a, p) = fit(&regime(&saba4, &[1e-2, 1e-3, 1e-4]));
+    eprintln!("saba4: the eps^2 term fitted as eps^{a:.2} h^{p:.2}, declared eps^2 h^2");
+    assert!((a - 2.0).abs() <= 0.3 && (p - 2.0).abs() <= 0.3, "saba4: eps^{a} h^{p}");
+    let aba864 = scan("aba864");
+    for (name, points) in [("saba4", &saba4), ("aba864", &aba864)] {
+        let at = |eps: f64, h: f64| points.iter().find(|p| p.0 == eps && p.1 == h).unwrap().2;
+        assert!(at(1e-6, 0.4) < 1e-14, "{name}: {:e}", at(1e-6, 0.4));
+        for h in [0.8, 1.13] {
+            let in_eps = (at(1e-5, h) / at(1e-6, h)).log10();
+            assert!((in_eps - 1.0).abs() <= 0.3, "{name} at {h}: eps^{in_eps}");
+        }
+        let p1 = slope(points, 1e-6, 0.8, 1.13);
+        eprintln!("{name}: the eps term's slope from h = 0.8 to 1.13: {p1:.2}");
+        assert!(p1 >= 7.7, "{name}: {p1}");
     }
 }
