@@ -34,7 +34,7 @@ impl Kernel {
     /// use stormer::Method;
     /// let kernel = |name| Kernel::of(&Method::named(name).unwrap());
     /// assert_eq!(kernel("wisdom_holman").unwrap(), Kernel::DriftKickDrift);
-    /// assert_eq!(kernel("leapfrog KDK").unwrap(), Kernel::KickDriftKick);
+    /// assert_eq!(kernel("velocity_verlet_kdk").unwrap(), Kernel::KickDriftKick);
     /// assert!(kernel("saba4").unwrap_err().to_string().contains("wisdom_holman"));
     /// ```
     pub fn of(method: &Method) -> Result<Kernel, Error> {
