@@ -426,3 +426,30 @@ fn the_near_integrable_methods_reach_their_generalized_orders() {
         assert!(p1 >= 7.7, "{name}: {p1}");
     }
 }
+
+/// A last step shortened to land on `t_end` (10 days that do not divide 10005) is not the
+/// kernel the corrector was built for: its record is less accurate than the others, by one
+/// step's error, not accumulated (measured 2.7e-11 against at most 7.6e-12 before, and 5.2e-9
+/// uncorrected), and the next run starts afresh.
+#[test]
+fn a_shortened_last_step_keeps_the_correction() {
+    let method = Method::named("wisdom_holman").unwrap();
+    let (split, y0) = split(1.0);
+    let data = CorrectorData::of_order(11).unwrap();
+    let problem = Corrected::new(split, data, &method, 10.0).unwrap();
+    let start = problem.to_mapping(0.0, &y0);
+    let mut stepper = method
+        .stepper_for(&problem, &start, &ImplicitOptions::default())
+        .unwrap();
+    let run = Driver::fixed(10.0)
+        .run(&problem, &mut stepper, 0.0, &start, 10005.0)
+        .unwrap();
+    let e0 = problem.problem().energy(0.0, &y0).unwrap();
+    let errors: Vec<f64> = run.energy.iter().map(|e| ((e - e0) / e0).abs()).collect();
+    let (last, before) = errors.split_last().unwrap();
+    let worst = before.iter().fold(0.0f64, |m, &e| m.max(e));
+    assert!(
+        *last < 10.0 * worst && worst < 2e-11,
+        "last {last:e}, worst before {worst:e}"
+    );
+}
