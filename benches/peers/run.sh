@@ -2,9 +2,11 @@
 # Benchmarks against peers, in one command:
 #   bash benches/peers/run.sh            # REBOUND vs stormer on the outer solar system
 #   bash benches/peers/run.sh --rounds 3 # any option of rebound.py
+#   bash benches/peers/run.sh nbody      # REBOUND vs stormer on 10 to 3000 bodies (nbody.py)
+#   bash benches/peers/run.sh nbody --sizes 1000 --rounds 5
 # Installs what it needs: a virtual environment under target/peers/venv with REBOUND
 # (PyPI package `rebound`); our side is `app/examples/outer_solar_front.rs` (release build).
-# Results: out/peers/rebound.md, rebound_front.json, rebound_front.svg.
+# Results: out/peers/rebound.md, rebound_front.json, rebound_front.svg; out/peers/nbody.md.
 # The ode_solvers comparison (free kick) is a criterion bench: cargo bench --bench free_kick_peers
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
@@ -15,6 +17,11 @@ if [ ! -x "$venv/bin/python" ]; then
 fi
 if ! "$venv/bin/python" -c "import rebound" 2>/dev/null; then
     "$venv/bin/pip" install --quiet "rebound>=4.4"
+fi
+if [ "${1:-}" = nbody ]; then
+    shift
+    cargo build --release --example nbody_timing --features parallel
+    exec "$venv/bin/python" benches/peers/nbody.py "$@"
 fi
 cargo build --release --example outer_solar_front
 exec "$venv/bin/python" benches/peers/rebound.py "$@"

@@ -3,7 +3,7 @@
 
 use super::file::{model_name, parse_as, Source};
 use super::{AnyScene, ChargedScene, DampedOscillator, Harmonic, Pendulum, Scene, MODELS};
-use super::{HenonHeiles, RestrictedThreeBody, SpinningBall};
+use super::{HenonHeiles, RelativisticScene, RestrictedThreeBody, SpinningBall};
 use nalgebra::DVector;
 use std::path::Path;
 use stormer::magnetic::Charged;
@@ -189,6 +189,7 @@ pub fn parse(text: &str, origin: &str, name: &str) -> Result<AnyScene, Error> {
             }
         }
         ChargedScene::MODEL => AnyScene::ChargedParticles(parse_as(&src, name)?),
+        RelativisticScene::MODEL => AnyScene::RelativisticParticles(parse_as(&src, name)?),
         Charged::<RestrictedThreeBody>::MODEL => AnyScene::RestrictedThreeBody(parse_as(&src, name)?),
         SpinningBall::MODEL => AnyScene::SpinningBall(parse_as(&src, name)?),
         HenonHeiles::MODEL => AnyScene::HenonHeiles(parse_as(&src, name)?),
