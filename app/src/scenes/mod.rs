@@ -67,7 +67,7 @@ pub use file::{Number, RunSettings, Source, Units};
 pub use free_kick::{KickInitial, SpinningBall, SpinningBallParameters};
 pub use harmonic::{Harmonic, HarmonicParameters, OscillatorInitial};
 pub use henon_heiles::{HenonHeiles, HenonHeilesInitial, HenonHeilesParameters, DEFAULT_ENERGY};
-pub use kepler_split_file::SplitBodies;
+pub use kepler_split_file::{CorrectedBodies, SplitBodies};
 pub use nbody_file::{BodyEntry, GravityParameters};
 pub use pendulum::{NoParameters, Pendulum, PendulumInitial, PENDULUM_PERIOD_45_DEGREES};
 pub use relativistic_file::{RelativisticParameters, RelativisticScene};
@@ -227,6 +227,9 @@ pub enum AnyScene {
     /// `model = "n-body"` run in the Wisdom-Holman split (`split` in `[run]`, or
     /// [`AnyScene::with_split`]).
     KeplerSplit(Setup<SplitBodies>),
+    /// `model = "n-body"` run in the Wisdom-Holman split with a symplectic corrector
+    /// ([`AnyScene::with_corrector`]).
+    CorrectedSplit(Setup<CorrectedBodies>),
 }
 
 /// The model names a scene file can give, in the order of [`AnyScene`].
@@ -258,6 +261,7 @@ macro_rules! each {
             AnyScene::SpinningBall($s) => $body,
             AnyScene::HenonHeiles($s) => $body,
             AnyScene::KeplerSplit($s) => $body,
+            AnyScene::CorrectedSplit($s) => $body,
         }
     };
 }
