@@ -1,52 +1,13 @@
 //! Symplectic correctors ([`stormer::corrector`]) on the Wisdom-Holman split of the outer
 //! solar system, and the generalized orders of the near-integrable methods on the split.
 
+#[path = "support/outer_solar_system.rs"]
+mod outer_solar_system;
+use outer_solar_system::{outer_solar_system, Outer};
+
 use stormer::corrector::{Corrected, CorrectorData};
 use stormer::models::{KeplerCoordinates, KeplerSplit, NBody};
 use stormer::{Driver, ImplicitOptions, Method, Problem};
-
-type Outer = [f64; 24];
-
-/// Sun, Jupiter, Saturn, Uranus (the outer-solar-system scene, GNI I.2.4), AU and days,
-/// the planets' masses times `scale`.
-fn outer_solar_system(scale: f64) -> (NBody<f64, Outer>, Outer) {
-    let mut masses = [1.00000597682, 0.000954786104043, 0.000285583733151, 0.0000437273164546];
-    for m in &mut masses[1..] {
-        *m *= scale;
-    }
-    let q = [
-        0.0,
-        0.0,
-        0.0,
-        -3.5023653,
-        -3.8169847,
-        -1.5507963,
-        9.0755314,
-        -3.0458353,
-        -1.6483708,
-        8.3101420,
-        -16.2901086,
-        -7.2521278,
-    ];
-    let v = [
-        0.0,
-        0.0,
-        0.0,
-        0.00565429,
-        -0.00412490,
-        -0.00190589,
-        0.00168318,
-        0.00483525,
-        0.00192462,
-        0.00354178,
-        0.00137102,
-        0.00055029,
-    ];
-    let bodies = NBody::new(2.95912208286e-4, &masses, 3).unwrap();
-    let mut y = [0.0; 24];
-    bodies.set_state(&q, &v, &mut y).unwrap();
-    (bodies, y)
-}
 
 fn split(scale: f64) -> (KeplerSplit<f64, Outer>, Outer) {
     let (bodies, y) = outer_solar_system(scale);

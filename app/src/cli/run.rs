@@ -138,8 +138,11 @@ pub fn run(args: &RunArgs) -> anyhow::Result<()> {
             )
             .into());
         }
-        let method = choice::resolve(args.method.as_deref().unwrap_or(&scene.run().method), args.alpha)?;
-        let dt = args.dt.unwrap_or(scene.run().dt);
+        let method = choice::resolve(
+            args.overrides.method.as_deref().unwrap_or(&scene.run().method),
+            args.alpha,
+        )?;
+        let dt = args.overrides.dt.unwrap_or(scene.run().dt);
         scene = scene.with_corrector(order, &method, dt)?;
     }
     scene.visit(Runner { args })
