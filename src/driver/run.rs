@@ -184,12 +184,12 @@ where
             let end = next_record.min(next_check).min(n);
             let steps = &mut self.stats.steps;
             if end > whole {
-                steps_in_place(&mut *self.stepper, self.p, t0, h, i..whole, y, steps)?;
+                self.stepper.run_in_place(self.p, t0, h, i..whole, y, steps)?;
                 let t = t0 + lit::<T>(whole as f64) * h;
                 step_checked(&mut *self.stepper, self.p, t, t_end - t, whole, y)?;
                 *steps += 1;
             } else {
-                steps_in_place(&mut *self.stepper, self.p, t0, h, i..end, y, steps)?;
+                self.stepper.run_in_place(self.p, t0, h, i..end, y, steps)?;
             }
             i = end;
             if i % driver.every == 0 || i == n {
@@ -319,7 +319,22 @@ where
 /// the outer solar system's Verlet step cost 1.30x the hand-written loop, 1.04x out of
 /// line on a local copy: docs/benchmarks.md).
 #[inline(never)]
-fn steps_in_place<P: Problem, St: Stepper<P> + ?Sized>(
+pub(crate) fn steps_in_place<P: Problem, St: Stepper<P> + ?Sized>(
+    stepper: &mut St,
+    p: &P,
+    t0: P::Scalar,
+    h: P::Scalar,
+    range: core::ops::Range<u64>,
+    y: &mut P::State,
+    steps: &mut u64,
+) -> Result<(), Error> {
+    steps_inline(stepper, p, t0, h, range, y, steps)
+}
+
+/// The loop of [`steps_in_place`], inlined into a stepper's own
+/// [`Stepper::run_in_place`] (which runs it on a local copy of the stepper).
+#[inline(always)]
+pub(crate) fn steps_inline<P: Problem, St: Stepper<P> + ?Sized>(
     stepper: &mut St,
     p: &P,
     t0: P::Scalar,

@@ -101,6 +101,23 @@ pub trait Stepper<P: Problem> {
         false
     }
 
+    /// Steps `range` of the fixed-step driver (step `i` from `t0 + i h`) in place on `y`,
+    /// each checked finite, adding those taken to `steps`. The default loops over
+    /// [`Stepper::step_in_place`] out of line; a stepper may run the same loop on a local
+    /// copy of itself, whose scratch the compiler can then keep in registers.
+    #[doc(hidden)]
+    fn run_in_place(
+        &mut self,
+        p: &P,
+        t0: P::Scalar,
+        h: P::Scalar,
+        range: core::ops::Range<u64>,
+        y: &mut P::State,
+        steps: &mut u64,
+    ) -> Result<(), Error> {
+        crate::driver::steps_in_place(self, p, t0, h, range, y, steps)
+    }
+
     /// One step of size `h` from `(t, y)` that overwrites `y` and is accepted at once
     /// (fixed steps, no error estimate). Only called when [`Stepper::steps_in_place`] is
     /// true; the default refuses.
