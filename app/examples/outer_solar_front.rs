@@ -6,6 +6,7 @@
 //! ```sh
 //! cargo run --release --example outer_solar_front -- time [--span DAYS] [--dt DAYS] [--reps N] [--methods LIST]
 //! cargo run --release --example outer_solar_front -- front [--span DAYS] [--dts LIST] [--cadence DAYS] [--methods LIST]
+//!     [--kepler-dts LIST]
 //! cargo run --release --example outer_solar_front -- plot FRONT.json OUT.svg
 //! ```
 //!
@@ -18,7 +19,8 @@
 //! - `time`: ns per step of each method at one `dt` (default 10 days) over `span` (default
 //!   360000 days), best of `reps` runs (default 3). One call is one round: the script calls
 //!   it between REBOUND's rounds so that the two are interleaved.
-//! - `front`: for each method and each `dt` (default 100, 50, 20, 10, 5, 2, 1 days): max
+//! - `front`: for each method and each `dt` (default 100, 50, 20, 10, 5, 2, 1 days; the
+//!   `kepler/` methods also at the steps of `--kepler-dts`, which may exceed the cadence): max
 //!   |dE/E| sampled every `cadence` days (default 100), the positions at `span` and their
 //!   error against a reference run of ours (Kahan-Li 8 at dt = 10 days; the script measures
 //!   every run, ours and REBOUND's, against REBOUND's IAS15 instead, which has the smaller
@@ -339,6 +341,13 @@ fn front(args: &[String]) {
     let (nb, y0) = problem();
     let span = num(args, "--span", 360000.0);
     let cadence = num(args, "--cadence", 100.0);
+    let kepler_dts: Vec<f64> = arg(args, "--kepler-dts")
+        .map(|list| {
+            list.split(',')
+                .map(|s| s.trim().parse().expect("a list of step sizes"))
+                .collect()
+        })
+        .unwrap_or_default();
     let dts: Vec<f64> = arg(args, "--dts")
         .unwrap_or_else(|| "100,50,20,10,5,2,1".into())
         .split(',')
@@ -357,9 +366,15 @@ fn front(args: &[String]) {
     let coarse = (reference_method.run)(&nb, &y0, 0.5 * h_ref, steps_for(span, 0.5 * h_ref));
     let mut rows = Vec::new();
     for m in &all {
-        for &h in &dts {
+        // the Kepler split's methods also at longer steps (`--kepler-dts`, default none)
+        let longer = if m.name.starts_with("kepler/") {
+            &kepler_dts[..]
+        } else {
+            &[][..]
+        };
+        for &h in longer.iter().chain(&dts) {
             let steps = steps_for(span, h);
-            let every = steps_for(cadence, h);
+            let every = steps_for(cadence.max(h), h);
             let (y, de) = (m.sampled)(&nb, &y0, h, steps, every);
             let secs = best_of(3, || (m.run)(&nb, black_box(&y0), black_box(h), steps));
             rows.push(format!(

@@ -452,6 +452,7 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> KeplerSplit<T, S, K> {
     }
 
     /// The Kepler problems' forces `-mu_k m'_k q_k / |q_k|^3`, added to `f` with `sign`.
+    #[inline(always)]
     fn add_kepler_forces(&self, sign: T, q: &[T], f: &mut [T]) {
         let d = self.bodies.dim();
         for (k, &(mu, mass)) in self.kepler.iter().enumerate().skip(1) {
