@@ -4,7 +4,8 @@
 //! need structure: a splitting or composition needs drift and kick sub-flows
 //! ([`Splittable`]), and reaches its order with a Runge-Kutta-Nystrom method only when the
 //! kinetic energy is quadratic ([`QuadraticKinetic`]); a charged-particle pusher (Boris,
-//! Euler-Cromer) needs a Lorentz-force problem ([`Charged`]). A problem class says which
+//! Euler-Cromer) needs a Lorentz-force problem ([`Charged`]), a relativistic pusher (Boris,
+//! Vay, Higuera-Cary) relativistic particles ([`RelativisticParticles`]). A problem class says which
 //! through [`Problem::families`](crate::Problem::families): every [`crate::SecondOrder`]
 //! problem admits every splitting, every [`crate::Hamiltonian`] the general ones, a
 //! [`Charged`] problem the general ones and the pushers when its field is uniform and the
@@ -15,8 +16,9 @@
 use crate::flows::{QuadraticKinetic, Splittable};
 use crate::magnetic::{Charged, Lorentz};
 use crate::method::SplittingData;
-use crate::stepper::ParticleMethod;
-use crate::{registry, Error, Problem, RuntimeSplitting, Splitting, Stepper};
+use crate::models::RelativisticParticles;
+use crate::stepper::{ParticleMethod, RelativisticMethod};
+use crate::{registry, Error, Problem, Real, RuntimeSplitting, Splitting, State, Stepper};
 
 /// A splitting or composition to build: compiled into the crate (its generated stepper is
 /// used) or held in memory (read from a file, or built with [`Splitting::splitting`]).
@@ -50,6 +52,8 @@ impl SplittingSource<'_> {
 type SplittingBuilder<P> = for<'a> fn(SplittingSource<'a>, &<P as Problem>::State) -> BuildResult<P>;
 /// Builds a charged-particle pusher for problem `P`.
 type ParticleBuilder<P> = fn(ParticleMethod, &<P as Problem>::State) -> BuildResult<P>;
+/// Builds a relativistic pusher for problem `P`.
+type RelativisticBuilder<P> = fn(RelativisticMethod, &<P as Problem>::State) -> BuildResult<P>;
 type BuildResult<P> = Result<Box<dyn Stepper<P>>, Error>;
 
 /// The families of methods a problem admits besides Runge-Kutta, and the reasons for the
@@ -79,6 +83,7 @@ pub struct Families<P: Problem> {
     /// `Err(why)` when Runge-Kutta-Nystrom methods are refused.
     quadratic_kinetic: Result<(), &'static str>,
     particle: Result<ParticleBuilder<P>, String>,
+    relativistic: Result<RelativisticBuilder<P>, String>,
 }
 
 impl<P: Problem> Families<P> {
@@ -89,6 +94,7 @@ impl<P: Problem> Families<P> {
             splitting: Err(why.into()),
             quadratic_kinetic: Err(NOT_QUADRATIC),
             particle: Err(NOT_CHARGED.into()),
+            relativistic: Err(NOT_RELATIVISTIC.into()),
         }
     }
 
@@ -110,6 +116,7 @@ impl<P: Problem> Families<P> {
             splitting: Ok(general::<P>),
             quadratic_kinetic: Err(NOT_QUADRATIC),
             particle: Err(NOT_CHARGED.into()),
+            relativistic: Err(NOT_RELATIVISTIC.into()),
         }
     }
 
@@ -123,6 +130,7 @@ impl<P: Problem> Families<P> {
             splitting: Ok(quadratic::<P>),
             quadratic_kinetic: Ok(()),
             particle: Err(NOT_CHARGED.into()),
+            relativistic: Err(NOT_RELATIVISTIC.into()),
         }
     }
 
@@ -144,12 +152,22 @@ impl<P: Problem> Families<P> {
 
     /// A charged-particle pusher, or the sentence saying why it does not apply.
     pub fn particle(&self, method: ParticleMethod, y0: &P::State) -> BuildResult<P> {
-        let build = self.particle.as_ref().map_err(|why| Error::Unsupported {
-            name: method.name().to_string(),
-            reason: why.clone(),
-        })?;
-        build(method, y0)
+        admitted(&self.particle, method.name())?(method, y0)
     }
+
+    /// A relativistic pusher, or the sentence saying why it does not apply.
+    pub fn relativistic(&self, method: RelativisticMethod, y0: &P::State) -> BuildResult<P> {
+        admitted(&self.relativistic, method.name())?(method, y0)
+    }
+}
+
+/// The builder of a family of pushers, or, for the method `name`, the sentence saying why
+/// the problem refuses the family.
+fn admitted<B: Copy>(family: &Result<B, String>, name: &str) -> Result<B, Error> {
+    family.as_ref().copied().map_err(|why| Error::Unsupported {
+        name: name.to_string(),
+        reason: why.clone(),
+    })
 }
 
 const NOT_QUADRATIC: &str = "it reaches its order only when the kinetic energy is quadratic in p (a \
@@ -158,6 +176,34 @@ const NOT_QUADRATIC: &str = "it reaches its order only when the kinetic energy i
 
 const NOT_CHARGED: &str = "it is a charged-particle method, for Lorentz-force problems (charged particles in a \
                            magnetic field), not for this problem; use a Runge-Kutta method or a splitting";
+
+const NOT_RELATIVISTIC: &str = "it is a relativistic pusher, for relativistic charged particles (state x, u = gamma v, with a \
+                                speed of light c: a scene of model \"relativistic-particles\"), not for this problem; use \
+                                a Runge-Kutta method or a splitting";
+
+impl<T: Real, S: State<Scalar = T> + 'static> Families<RelativisticParticles<T, S>> {
+    /// Relativistic charged particles: the relativistic pushers (and every Runge-Kutta
+    /// method); the non-relativistic pushers and the splittings are refused, each with the
+    /// sentence saying why.
+    pub fn relativistic_particles() -> Self {
+        Families {
+            splitting: Err(
+                "the particles are relativistic (state x, u = gamma v): the drift and kick of the \
+                            splittings are those of non-relativistic particles; use boris_relativistic, vay or \
+                            higuera_cary"
+                    .into(),
+            ),
+            quadratic_kinetic: Err(NOT_QUADRATIC),
+            particle: Err(
+                "it is a non-relativistic pusher (state q, v, speeds unbounded), and the particles of \
+                           this scene are relativistic (state x, u = gamma v, speed of light c); use \
+                           boris_relativistic, vay or higuera_cary"
+                    .into(),
+            ),
+            relativistic: Ok(|method, y0| method.stepper::<T, S>(y0)),
+        }
+    }
+}
 
 impl<L: Lorentz + 'static> Families<Charged<L>> {
     /// A charged-particle problem: the pushers always; in a uniform field every general
@@ -185,6 +231,12 @@ impl<L: Lorentz + 'static> Families<Charged<L>> {
                  Runge-Kutta method",
             ),
             particle: Ok(|method, y0| method.stepper::<L>(y0)),
+            relativistic: Err(
+                "it is a relativistic pusher (state x, u = gamma v, with a speed of light c), and the \
+                               particles of this problem are non-relativistic (state q, v); use boris, \
+                               boris_exact_phase or a splitting, or a scene of model \"relativistic-particles\""
+                    .into(),
+            ),
         }
     }
 }

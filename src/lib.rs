@@ -5,6 +5,7 @@
 extern crate self as stormer;
 
 pub mod catalog;
+pub mod corrector;
 pub mod driver;
 mod error;
 mod families;
@@ -18,6 +19,7 @@ pub mod models;
 mod problem;
 mod real;
 pub mod registry;
+pub mod splitmix64;
 mod state;
 pub mod stepper;
 pub mod verify;

@@ -171,6 +171,13 @@ pub fn normalize(name: &str) -> String {
     name.trim().to_lowercase().replace(['-', ' '], "_")
 }
 
+/// The method of `all` whose `name_of` is the user's `name`, spelled as [`normalize`]
+/// reads it: the lookup of the methods that are named in code, not in the catalog.
+pub(crate) fn find_named<M: Copy>(all: &[M], name_of: fn(M) -> &'static str, name: &str) -> Option<M> {
+    let key = normalize(name);
+    all.iter().copied().find(|&m| name_of(m) == key)
+}
+
 /// Every catalog name, Butcher tableaus first.
 pub fn names() -> impl Iterator<Item = &'static str> {
     BUTCHER.iter().map(|d| d.name).chain(SPLITTING.iter().map(|d| d.name))

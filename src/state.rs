@@ -3,7 +3,8 @@
 #[allow(unused_imports)]
 use crate::real::ops::*;
 use crate::Real;
-use nalgebra::{DVector, SVector};
+use nalgebra::allocator::Allocator;
+use nalgebra::{Const, DefaultAllocator, Dim, Dyn, OVector};
 
 /// A state vector that steppers update in place.
 ///
@@ -102,25 +103,28 @@ impl<T: Real, const N: usize> State for [T; N] {
     }
 }
 
-impl<T: Real, const N: usize> State for SVector<T, N> {
-    type Scalar = T;
-    const LEN: Option<usize> = Some(N);
-    #[inline(always)]
-    fn as_slice(&self) -> &[T] {
-        nalgebra::Matrix::as_slice(self)
-    }
-    #[inline(always)]
-    fn as_mut_slice(&mut self) -> &mut [T] {
-        nalgebra::Matrix::as_mut_slice(self)
-    }
-    #[inline]
-    fn zeros_like(&self) -> Self {
-        SVector::zeros()
-    }
+/// Whether a nalgebra dimension is known when the code is compiled: `Const<N>` for
+/// `SVector<T, N>`, `Dyn` for `DVector<T>`.
+pub trait VectorLength: Dim {
+    /// [`State::LEN`] of the vectors of this dimension.
+    const LEN: Option<usize>;
 }
 
-impl<T: Real> State for DVector<T> {
+impl<const N: usize> VectorLength for Const<N> {
+    const LEN: Option<usize> = Some(N);
+}
+
+impl VectorLength for Dyn {
+    const LEN: Option<usize> = None;
+}
+
+/// `SVector<T, N>` and `DVector<T>`: the same contiguous storage, one impl.
+impl<T: Real, D: VectorLength> State for OVector<T, D>
+where
+    DefaultAllocator: Allocator<D>,
+{
     type Scalar = T;
+    const LEN: Option<usize> = D::LEN;
     #[inline(always)]
     fn as_slice(&self) -> &[T] {
         nalgebra::Matrix::as_slice(self)
@@ -131,13 +135,14 @@ impl<T: Real> State for DVector<T> {
     }
     #[inline]
     fn zeros_like(&self) -> Self {
-        DVector::zeros(self.len())
+        OVector::zeros_generic(self.shape_generic().0, Const::<1>)
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use nalgebra::{DVector, SVector};
 
     fn exercise<S: State<Scalar = f64>>(mut y: S) {
         let x = y.clone();

@@ -154,3 +154,40 @@ fn kepler_split_steps_do_not_allocate() {
         );
     }
 }
+
+/// Velocity Verlet steps in place on `n` bodies read as a scene file reads them
+/// (`NBody<f64, DVector<f64>>`, the first `active` pulling), after one step that lets the
+/// force's scratch blocks grow: the allocations of `steps` more steps.
+fn nbody_allocations_for(n: usize, active: usize, steps: usize) -> usize {
+    use nalgebra::DVector;
+    use stormer::catalog::VelocityVerletKdk;
+    use stormer::models::NBody;
+    let frac = |x: f64| x - x.floor();
+    let q: Vec<f64> = (0..3 * n)
+        .map(|i| 10.0 * frac((i as f64 + 1.0) * 0.754_877_666_246_692_7))
+        .collect();
+    let nb = NBody::<f64, DVector<f64>>::new(1.0, &vec![1e-3; n], 3)
+        .unwrap()
+        .with_active(active)
+        .unwrap();
+    let mut y = DVector::zeros(6 * n);
+    nb.set_state(&q, &vec![0.0; 3 * n], &mut y).unwrap();
+    let mut st = SplittingStepper::<VelocityVerletKdk, DVector<f64>>::new(&y).unwrap();
+    st.step_in_place(&nb, 0.0, 1e-3, &mut y).unwrap();
+    let before = allocations();
+    for i in 0..steps {
+        st.step_in_place(&nb, i as f64 * 1e-3, 1e-3, &mut y).unwrap();
+    }
+    let after = allocations();
+    assert!(y.iter().all(|x| x.is_finite()));
+    after - before
+}
+
+#[test]
+fn many_bodies_step_without_allocating() {
+    // the unrolled kernel, the loops, the SIMD blocks on one thread, on rayon's threads
+    // (the global pool; this thread's allocations), with test particles
+    for (n, active) in [(4, 4), (7, 7), (40, 40), (300, 300), (1000, 1000), (600, 200)] {
+        assert_eq!(nbody_allocations_for(n, active, 3), 0, "{n} bodies, {active} active");
+    }
+}

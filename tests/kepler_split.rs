@@ -2,52 +2,17 @@
 //! round-off, its vector field is the N-body one, its methods reach their orders, every
 //! splitting and composition of the catalog runs on it, and bad systems are errors.
 
+#[path = "support/outer_solar_system.rs"]
+mod outer_solar_system;
+use outer_solar_system::{outer_solar_system, Outer};
+
 use nalgebra::DMatrix;
 use proptest::prelude::*;
 use stormer::models::{DemocraticHeliocentric, Jacobi, KeplerCoordinates, KeplerSplit, NBody};
 use stormer::{registry, Driver, Error, ImplicitOptions, Method, Problem};
 
-type Outer = [f64; 24];
-
-/// Sun, Jupiter, Saturn, Uranus (the outer-solar-system scene, GNI I.2.4), AU and days.
-fn outer_solar_system() -> (NBody<f64, Outer>, Outer) {
-    let masses = [1.00000597682, 0.000954786104043, 0.000285583733151, 0.0000437273164546];
-    let q = [
-        0.0,
-        0.0,
-        0.0,
-        -3.5023653,
-        -3.8169847,
-        -1.5507963,
-        9.0755314,
-        -3.0458353,
-        -1.6483708,
-        8.3101420,
-        -16.2901086,
-        -7.2521278,
-    ];
-    let v = [
-        0.0,
-        0.0,
-        0.0,
-        0.00565429,
-        -0.00412490,
-        -0.00190589,
-        0.00168318,
-        0.00483525,
-        0.00192462,
-        0.00354178,
-        0.00137102,
-        0.00055029,
-    ];
-    let bodies = NBody::new(2.95912208286e-4, &masses, 3).unwrap();
-    let mut y = [0.0; 24];
-    bodies.set_state(&q, &v, &mut y).unwrap();
-    (bodies, y)
-}
-
 fn split(coordinates: KeplerCoordinates) -> (KeplerSplit<f64, Outer>, Outer, Outer) {
-    let (bodies, y) = outer_solar_system();
+    let (bodies, y) = outer_solar_system(1.0);
     let split = KeplerSplit::new(bodies, coordinates).unwrap();
     let y0 = split.from_scene(&y);
     (split, y, y0)
@@ -192,7 +157,7 @@ fn final_positions(split: &KeplerSplit<f64, Outer>, method: &str, y0: &Outer, h:
 /// order 2 (the drift holds the central body's term, and is not an exact flow).
 #[test]
 fn the_measured_orders_are_the_declared_ones() {
-    let (bodies, y) = outer_solar_system();
+    let (bodies, y) = outer_solar_system(1.0);
     let t_end = 2000.0;
     let mut dop853 = Method::named("dop853")
         .unwrap()
@@ -271,7 +236,7 @@ fn every_splitting_of_the_catalog_runs_on_the_kepler_split() {
 /// (the error scales as the planets' masses, ~1e-3, instead of 1).
 #[test]
 fn the_kepler_split_beats_the_free_drift_by_the_mass_ratio() {
-    let (bodies, y) = outer_solar_system();
+    let (bodies, y) = outer_solar_system(1.0);
     let verlet = Method::named("stormer_verlet_dkd").unwrap();
     let mut stepper = verlet.stepper_for(&bodies, &y, &ImplicitOptions::default()).unwrap();
     let run = Driver::fixed(10.0)

@@ -37,6 +37,23 @@ fn expected() -> HashMap<String, String> {
 
 /// Every bad file: non-zero exit, one line on stderr with what EXPECTED.txt says it must
 /// get, no panic.
+/// Runs the binary with `args` in `dir` and checks the refusal every bad input gets (`what`
+/// names the case in a failure): exit code 1, no panic, one line starting `error: `, which
+/// it returns.
+fn refusal(dir: &Path, args: &[&str], what: &str) -> String {
+    let out = Command::new(env!("CARGO_BIN_EXE_stormer"))
+        .args(args)
+        .current_dir(dir)
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
+    assert_eq!(out.status.code(), Some(1), "{what}: exit code\n{stderr}");
+    assert!(!stderr.contains("panicked"), "{what}: {stderr}");
+    assert_eq!(stderr.trim().lines().count(), 1, "{what}: not one line:\n{stderr}");
+    assert!(stderr.starts_with("error: "), "{what}: {stderr}");
+    stderr
+}
+
 #[test]
 fn the_binary_refuses_every_bad_file_without_panicking() {
     let files = corpus();
@@ -55,16 +72,7 @@ fn the_binary_refuses_every_bad_file_without_panicking() {
         } else {
             vec!["verify", &path]
         };
-        let out = Command::new(env!("CARGO_BIN_EXE_stormer"))
-            .args(&args)
-            .current_dir(&dir)
-            .output()
-            .unwrap();
-        let stderr = String::from_utf8_lossy(&out.stderr);
-        assert_eq!(out.status.code(), Some(1), "{name}: exit code\n{stderr}");
-        assert!(!stderr.contains("panicked"), "{name}: {stderr}");
-        assert_eq!(stderr.trim().lines().count(), 1, "{name}: not one line:\n{stderr}");
-        assert!(stderr.starts_with("error: "), "{name}: {stderr}");
+        let stderr = refusal(&dir, &args, &name);
         let must = expected
             .get(&name)
             .unwrap_or_else(|| panic!("{name} is not in EXPECTED.txt"));
@@ -119,6 +127,51 @@ fn the_binary_refuses_bad_output_flags_without_panicking() {
         }
     }
     assert!(!dir.join("out").exists(), "no output for a refused run");
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// Bad `--vary` values of `stormer ensemble` (issue 15): an unknown key, an empty range, a
+/// count of 0, and their kin: one clear line each, exit 1, no panic, nothing written.
+#[test]
+fn the_binary_refuses_bad_vary_flags_without_panicking() {
+    let dir = std::env::temp_dir().join(format!("stormer-bad-vary-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    for (vary, must) in [
+        (
+            "alpah=10:50:41",
+            "invalid --vary: unknown key 'alpah': did you mean 'initial.alpha'? the scene file's numbers are \
+             parameters.g, parameters.rho,",
+        ),
+        ("method=1:2:3", "invalid --vary: unknown key 'method'"),
+        (
+            "alpha=50:10:41",
+            "invalid --vary: the range 50.0:10.0 is empty: END must be above START (or equal to it, with COUNT 1) \
+             (in 'alpha=50:10:41')",
+        ),
+        ("alpha=30:30:5", "the range 30.0:30.0 is empty"),
+        (
+            "alpha=10:50:0",
+            "invalid --vary: COUNT must be >= 1, got 0 (in 'alpha=10:50:0')",
+        ),
+        ("alpha=10:50:many", "COUNT 'many' is not a whole number >= 1"),
+        ("alpha=10:nan:4", "END 'nan' is not a finite number"),
+        (
+            "alpha",
+            "expected NAME=START:END:COUNT, such as alpha=10:50:41 (in 'alpha')",
+        ),
+        (
+            "every=1:2:4",
+            "run.every is written as an integer in the scene file; 1.3333333333333333 is not one",
+        ),
+        (
+            "alpha=10:50:100000000000",
+            "more than the 10000000 members an ensemble runs",
+        ),
+    ] {
+        let stderr = refusal(&dir, &["ensemble", "free-kick", "--vary", vary], vary);
+        assert!(stderr.contains(must), "{vary}: {stderr}");
+    }
+    assert!(!dir.join("out").exists(), "no output for a refused ensemble");
     std::fs::remove_dir_all(&dir).unwrap();
 }
 

@@ -160,7 +160,17 @@ fn methods_json_lists_the_catalog() {
     let dir = workdir("methods");
     let list = json(&dir, &["methods", "--format", "json"]);
     let list = list.as_array().unwrap();
-    assert_eq!(list.len(), 31 + 37 + 21 + 3);
+    // tableaus, splittings, compositions, charged-particle and relativistic pushers
+    assert_eq!(list.len(), 31 + 37 + 21 + 3 + 3);
+    let vay = list.iter().find(|m| m["name"] == "vay").unwrap();
+    assert_eq!(
+        (
+            vay["family"].as_str(),
+            vay["order"].as_u64(),
+            vay["symmetric"].as_bool()
+        ),
+        (Some("relativistic-particle"), Some(2), Some(true))
+    );
     for m in list {
         for key in [
             "name",
@@ -202,8 +212,13 @@ fn methods_json_lists_the_catalog() {
         (verlet["fsal"].as_bool(), verlet["symplectic"].as_bool()),
         (Some(true), Some(true))
     );
-    // the charged-particle steppers close the list
-    let particle: Vec<(&str, u64, bool)> = list[list.len() - 3..]
+    // the charged-particle steppers, then the relativistic pushers, close the list
+    let relativistic: Vec<&str> = list[list.len() - 3..]
+        .iter()
+        .map(|m| m["name"].as_str().unwrap())
+        .collect();
+    assert_eq!(relativistic, ["boris_relativistic", "vay", "higuera_cary"]);
+    let particle: Vec<(&str, u64, bool)> = list[list.len() - 6..list.len() - 3]
         .iter()
         .map(|m| {
             assert_eq!(m["family"], "charged-particle");
@@ -225,8 +240,13 @@ fn methods_json_lists_the_catalog() {
     let table = stormer_ok(&dir, &["methods"]);
     let text = stdout(&table);
     assert!(text.lines().next().unwrap().starts_with("name"));
-    // the header, the methods, a blank line and the note on wisdom_holman
-    assert_eq!(text.lines().count(), 1 + 31 + 37 + 21 + 3 + 2);
+    // the header, the rows, a blank line and the note on wisdom_holman, then a blank line and
+    // what the relativistic pushers conserve
+    assert_eq!(text.lines().count(), 1 + 31 + 37 + 21 + 3 + 3 + 2 + 2 + 3);
+    assert!(
+        text.contains("  higuera_cary         phase-space volume and the force-free E x B drift"),
+        "{text}"
+    );
 }
 
 #[test]

@@ -6,6 +6,8 @@
 #[path = "support/binary.rs"]
 mod binary;
 use binary::{assert_error, stderr, stdout, stormer, stormer_ok, workdir};
+use std::path::Path;
+use std::process::Output;
 
 /// The rows of a CSV as numbers, with its header.
 fn rows(text: &str) -> (String, Vec<Vec<f64>>) {
@@ -15,6 +17,12 @@ fn rows(text: &str) -> (String, Vec<Vec<f64>>) {
         .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
         .collect();
     (header, rows)
+}
+
+/// `stormer run outer-solar-system --method wisdom_holman` followed by `more`, in `dir`.
+fn outer_solar_system(dir: &Path, more: &[&str]) -> Output {
+    let run = ["run", "outer-solar-system", "--method", "wisdom_holman"];
+    stormer_ok(dir, &[&run[..], more].concat())
 }
 
 /// `max |dE/E0| X` from a run's summary.
@@ -30,30 +38,8 @@ fn energy_drift(summary: &str) -> f64 {
 #[test]
 fn the_split_records_in_the_scenes_coordinates() {
     let dir = workdir("kepler_split", "records");
-    let plain = stormer_ok(
-        &dir,
-        &[
-            "run",
-            "outer-solar-system",
-            "--method",
-            "wisdom_holman",
-            "-o",
-            "plain.csv",
-        ],
-    );
-    let split = stormer_ok(
-        &dir,
-        &[
-            "run",
-            "outer-solar-system",
-            "--method",
-            "wisdom_holman",
-            "--split",
-            "kepler-jacobi",
-            "-o",
-            "split.csv",
-        ],
-    );
+    let plain = outer_solar_system(&dir, &["-o", "plain.csv"]);
+    let split = outer_solar_system(&dir, &["--split", "kepler-jacobi", "-o", "split.csv"]);
     assert!(stderr(&split).contains("stormer_verlet_dkd on outer-solar-system (kepler-jacobi)"));
     let (h0, plain_rows) = rows(&std::fs::read_to_string(dir.join("plain.csv")).unwrap());
     let (h1, split_rows) = rows(&std::fs::read_to_string(dir.join("split.csv")).unwrap());
@@ -65,19 +51,7 @@ fn the_split_records_in_the_scenes_coordinates() {
     let (free, kepler) = (energy_drift(&stderr(&plain)), energy_drift(&stderr(&split)));
     assert!(kepler * 500.0 < free, "{kepler:e} vs {free:e}");
     // democratic heliocentric coordinates: the same order of accuracy
-    let democratic = stormer_ok(
-        &dir,
-        &[
-            "run",
-            "outer-solar-system",
-            "--method",
-            "wisdom_holman",
-            "--split",
-            "kepler-democratic",
-            "-o",
-            "dh.csv",
-        ],
-    );
+    let democratic = outer_solar_system(&dir, &["--split", "kepler-democratic", "-o", "dh.csv"]);
     assert!(energy_drift(&stderr(&democratic)) * 100.0 < free);
 }
 

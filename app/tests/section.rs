@@ -4,6 +4,8 @@
 #[path = "support/binary.rs"]
 mod binary;
 use binary::{stderr, stormer_ok, workdir};
+use std::path::Path;
+use std::process::Output;
 
 /// The rows of a CSV as numbers, with its header.
 fn rows(text: &str) -> (Vec<String>, Vec<Vec<f64>>) {
@@ -15,28 +17,24 @@ fn rows(text: &str) -> (Vec<String>, Vec<Vec<f64>>) {
     (header, rows)
 }
 
+/// `stormer run henon-heiles --section SECTION MORE` in `dir` (`more`: arguments without
+/// spaces, separated by spaces).
+fn henon_heiles_section(dir: &Path, section: &str, more: &str) -> Output {
+    let mut args = vec!["run", "henon-heiles", "--section", section];
+    args.extend(more.split_whitespace());
+    stormer_ok(dir, &args)
+}
+
 /// `stormer run henon-heiles --method velocity_verlet_kdk --dt 0.05 --t-end 20000 --section
 /// "x = 0, px > 0"`: every crossing has |x| <= 1e-12 and px > 0, its energy within the
 /// method's bound over the run, the same header as the run's CSV, and a picture.
 #[test]
 fn a_henon_heiles_section_lies_on_the_section() {
     let dir = workdir("section", "henon-heiles");
-    let out = stormer_ok(
+    let out = henon_heiles_section(
         &dir,
-        &[
-            "run",
-            "henon-heiles",
-            "--method",
-            "velocity_verlet_kdk",
-            "--dt",
-            "0.05",
-            "--t-end",
-            "20000",
-            "--every",
-            "1000",
-            "--section",
-            "x = 0, px > 0",
-        ],
+        "x = 0, px > 0",
+        "--method velocity_verlet_kdk --dt 0.05 --t-end 20000 --every 1000",
     );
     let message = stderr(&out);
     let run = std::fs::read_to_string(dir.join("out/henon-heiles-velocity_verlet_kdk.csv")).unwrap();
@@ -73,17 +71,7 @@ fn a_henon_heiles_section_lies_on_the_section() {
 fn a_section_without_a_side_keeps_both_directions() {
     let dir = workdir("section", "both");
     let count = |section: &str| {
-        let args = [
-            "run",
-            "henon-heiles",
-            "--t-end",
-            "500",
-            "--section",
-            section,
-            "--out",
-            "h.csv",
-        ];
-        stormer_ok(&dir, &args);
+        henon_heiles_section(&dir, section, "--t-end 500 --out h.csv");
         let text = std::fs::read_to_string(dir.join("h-section.csv")).unwrap();
         let (_, points) = rows(&text);
         points

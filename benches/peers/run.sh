@@ -4,10 +4,12 @@
 #   bash benches/peers/run.sh --rounds 3    # any option of rebound.py
 #   bash benches/peers/run.sh --whfast-step # a Wisdom-Holman step against WHFast's (whfast_step.py;
 #                                           # the options after it are whfast_step.py's)
+#   bash benches/peers/run.sh nbody         # REBOUND vs stormer on 10 to 3000 bodies (nbody.py)
+#   bash benches/peers/run.sh nbody --sizes 1000 --rounds 5
 # Installs what it needs: a virtual environment under target/peers/venv with REBOUND
 # (PyPI package `rebound`), or the one named by $PEERS_VENV; our side is
 # `app/examples/outer_solar_front.rs` (release build).
-# Results: out/peers/rebound.md, rebound_front.json, rebound_front.svg.
+# Results: out/peers/rebound.md, rebound_front.json, rebound_front.svg; out/peers/nbody.md.
 # The ode_solvers comparison (free kick) is a criterion bench: cargo bench --bench free_kick_peers
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
@@ -18,6 +20,11 @@ if [ ! -x "$venv/bin/python" ]; then
 fi
 if ! "$venv/bin/python" -c "import rebound" 2>/dev/null; then
     "$venv/bin/pip" install --quiet "rebound>=4.4"
+fi
+if [ "${1:-}" = nbody ]; then
+    shift
+    cargo build --release --example nbody_timing --features parallel
+    exec "$venv/bin/python" benches/peers/nbody.py "$@"
 fi
 cargo build --release -p stormer-app --example outer_solar_front
 if [ "${1:-}" = "--whfast-step" ]; then

@@ -139,44 +139,25 @@ impl Parser<'_> {
     }
 
     fn expr(&mut self) -> Result<f64, ExprError> {
-        let mut value = self.term()?;
-        loop {
-            self.skip_ws();
-            let op = self.pos;
-            match self.peek() {
-                Some(b'+') => {
-                    self.pos += 1;
-                    let rhs = self.term()?;
-                    value = finite(value + rhs, op)?;
-                }
-                Some(b'-') => {
-                    self.pos += 1;
-                    let rhs = self.term()?;
-                    value = finite(value - rhs, op)?;
-                }
-                _ => return Ok(value),
-            }
-        }
+        self.chain(b"+-", Self::term)
     }
 
     fn term(&mut self) -> Result<f64, ExprError> {
-        let mut value = self.unary()?;
+        self.chain(b"*/", Self::unary)
+    }
+
+    /// `operand (op operand)*` for the operators `ops` of one binding strength, evaluated
+    /// from the left.
+    fn chain(&mut self, ops: &[u8], operand: fn(&mut Self) -> Result<f64, ExprError>) -> Result<f64, ExprError> {
+        let mut value = operand(self)?;
         loop {
             self.skip_ws();
             let op = self.pos;
             match self.peek() {
-                Some(b'*') => {
+                Some(c) if ops.contains(&c) => {
                     self.pos += 1;
-                    let rhs = self.unary()?;
-                    value = finite(value * rhs, op)?;
-                }
-                Some(b'/') => {
-                    self.pos += 1;
-                    let rhs = self.unary()?;
-                    if rhs == 0.0 {
-                        return Err(error("division by zero", op));
-                    }
-                    value = finite(value / rhs, op)?;
+                    let rhs = operand(self)?;
+                    value = apply(c, value, rhs, op)?;
                 }
                 _ => return Ok(value),
             }
@@ -250,14 +231,7 @@ impl Parser<'_> {
         match self.peek() {
             Some(b'0'..=b'9') => self.number(),
             Some(b'.') if matches!(self.peek_at(self.pos + 1), Some(b'0'..=b'9')) => self.number(),
-            Some(b'(') => {
-                self.enter()?;
-                self.pos += 1;
-                let value = self.expr()?;
-                self.close(start)?;
-                self.leave();
-                Ok(value)
-            }
+            Some(b'(') => self.parenthesized(start),
             Some(c) if c.is_ascii_alphabetic() || c == b'_' => {
                 let name = self.identifier();
                 let cube = match name {
@@ -277,12 +251,7 @@ impl Parser<'_> {
                 if self.peek() != Some(b'(') {
                     return Err(self.unexpected(if cube { "'(' after cbrt" } else { "'(' after sqrt" }));
                 }
-                let open = self.pos;
-                self.enter()?;
-                self.pos += 1;
-                let value = self.expr()?;
-                self.close(open)?;
-                self.leave();
+                let value = self.parenthesized(self.pos)?;
                 if cube {
                     return Ok(value.cbrt());
                 }
@@ -293,6 +262,16 @@ impl Parser<'_> {
             }
             _ => Err(self.unexpected("a number, '(' or sqrt(...)")),
         }
+    }
+
+    /// The expression between the `(` at byte `open`, the current one, and its `)`.
+    fn parenthesized(&mut self, open: usize) -> Result<f64, ExprError> {
+        self.enter()?;
+        self.pos += 1;
+        let value = self.expr()?;
+        self.close(open)?;
+        self.leave();
+        Ok(value)
     }
 
     /// Consumes the `)` matching the `(` at byte `open`.
@@ -367,6 +346,19 @@ impl Parser<'_> {
 }
 
 /// Rejects overflow to infinity (and NaN) produced by the operator at `offset`.
+/// `left op right` for a binary operator `+ - * /` at byte `at`: a division by zero or a
+/// result too large is an error there.
+fn apply(op: u8, left: f64, right: f64, at: usize) -> Result<f64, ExprError> {
+    let value = match op {
+        b'+' => left + right,
+        b'-' => left - right,
+        b'*' => left * right,
+        _ if right == 0.0 => return Err(error("division by zero", at)),
+        _ => left / right,
+    };
+    finite(value, at)
+}
+
 fn finite(value: f64, offset: usize) -> Result<f64, ExprError> {
     if value.is_finite() {
         Ok(value)

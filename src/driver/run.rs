@@ -105,7 +105,7 @@ where
         y: &S,
         y_new: &S,
     ) -> Result<Option<StopEvent<T, S>>, Error> {
-        let inside = self.take(between, t, end, y, y_new)?;
+        let inside = self.take(between, (t, y), (end, y_new))?;
         match inside.stop {
             Some(stop) => self.stop_at(stop, inside.last_recorded).map(Some),
             None => Ok(None),
@@ -123,20 +123,19 @@ where
         between: Option<&mut Between<'_, '_, T, S>>,
     ) -> Result<Option<StopEvent<T, S>>, Error> {
         // the stepper's last step is the one that located the stop: from `y` to it
-        let inside = self.take(between, t, event.t, y, &event.y)?;
+        let inside = self.take(between, (t, y), (event.t, &event.y))?;
         self.stop_at(inside.stop.unwrap_or(event), inside.last_recorded)
             .map(Some)
     }
 
-    /// Records what lies inside the step `(t, y) -> (end, y_new)`, accepts and counts it.
+    /// Records what lies inside the step `from = (t, y) -> to = (end, y_new)`, accepts and
+    /// counts it.
     #[inline]
     fn take(
         &mut self,
         between: Option<&mut Between<'_, '_, T, S>>,
-        t: T,
-        end: T,
-        y: &S,
-        y_new: &S,
+        (t, y): (T, &S),
+        (end, y_new): (T, &S),
     ) -> Result<Inside<T, S>, Error> {
         let inside = match between {
             Some(b) => b.record_step(self.p, &mut *self.stepper, t, end, y, y_new, &mut *self.out, self.stats)?,
@@ -332,16 +331,18 @@ fn steps_in_place<P: Problem, St: Stepper<P> + ?Sized>(
     // on a local copy: the compiler keeps a local state's parts in registers across steps,
     // which it does not do through the caller's reference
     let mut local = y.clone();
-    let mut result = Ok(());
-    for i in range {
-        result = step_checked(stepper, p, t0 + lit::<P::Scalar>(i as f64) * h, h, i, &mut local);
-        if result.is_err() {
-            break;
+    let start = range.start;
+    for i in range.clone() {
+        if let Err(e) = step_checked(stepper, p, t0 + lit::<P::Scalar>(i as f64) * h, h, i, &mut local) {
+            // the steps before the failed one, and the state they reached
+            *steps += i - start;
+            *y = local;
+            return Err(e);
         }
-        *steps += 1;
     }
+    *steps += range.end - start;
     *y = local;
-    result
+    Ok(())
 }
 
 /// Step `i`, from `t` by `h`, in place; an error when the state is no longer finite.

@@ -165,14 +165,9 @@ impl<T: Real> Gyration<T> {
     /// Applies the flow to one particle's position `q` and velocity `v` (3 components each).
     #[inline(always)]
     pub fn apply(&self, q: &mut [T], v: &mut [T]) {
-        let w = self.omega;
-        let a = cross(&w, v);
-        let b = cross(&w, &a);
-        let [e1, e2, e3] = self.weights;
-        for i in 0..3 {
-            q[i] += self.tau * v[i] + e2 * a[i] + e3 * b[i];
-            v[i] += e1 * a[i] + e2 * b[i];
-        }
+        // the increment at the old velocity, added to the state in place
+        let v0 = [v[0], v[1], v[2]];
+        self.increment(&v0, q, v);
     }
 
     /// The flow's increment for one particle at velocity `v`, ADDED to `dq` and `dv`

@@ -3,6 +3,7 @@
 use super::gyration::{cross, Gyration, GyrationCache};
 use crate::flows::Splittable;
 use crate::hamiltonian::{halves, halves_mut};
+use crate::models::ExternalFields;
 use crate::{Families, Problem, Real, State};
 
 /// Particles in 3-D moving under `q' = v`, `v' = a(t, q) + omega_k(q) x v` for particle
@@ -36,6 +37,14 @@ pub trait Lorentz {
 
     /// The acceleration of every particle from the force field at `(t, q)`, into `a`.
     fn acceleration(&self, t: Self::Scalar, q: &[Self::Scalar], a: &mut [Self::Scalar]);
+
+    /// The fields, when every particle moves in external fields alone (its acceleration and
+    /// rotation vector depend on its own position only, the same at all times): pushers
+    /// then move the particles independently, in parallel chunks. `None` (the default)
+    /// when the particles interact or feel other forces.
+    fn external_fields(&self) -> Option<ExternalFields<'_, Self::Scalar>> {
+        None
+    }
 
     /// The energy (conserved when the force field derives from a time-independent
     /// potential: the magnetic force does no work), if the model provides it.

@@ -10,7 +10,9 @@
 
 mod gyration;
 mod lorentz;
+mod relativistic_kick;
 
 pub(crate) use gyration::stumpff_series;
 pub use gyration::{cross, gyration_coefficients, sin_and_versine, Gyration, GyrationCache};
 pub use lorentz::{Charged, Lorentz};
+pub use relativistic_kick::RelativisticKick;

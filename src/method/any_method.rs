@@ -3,7 +3,7 @@
 
 use crate::families::SplittingSource;
 use crate::method::{MethodInfo, Splitting, SplittingData, Tableau, TableauData};
-use crate::stepper::ParticleMethod;
+use crate::stepper::{ParticleMethod, RelativisticMethod};
 use crate::{registry, Error, ImplicitOptions, Problem, Stepper};
 use std::path::Path;
 use stormer_order::stability::{butcher_interval, splitting_interval, Interval};
@@ -49,6 +49,8 @@ pub enum Method {
     RuntimeSplitting(Splitting),
     /// A charged-particle pusher (Boris, Euler-Cromer).
     Particle(ParticleMethod),
+    /// A relativistic pusher (relativistic Boris, Vay, Higuera-Cary).
+    Relativistic(RelativisticMethod),
 }
 
 impl Method {
@@ -58,6 +60,9 @@ impl Method {
     pub fn resolve(name_or_path: &str) -> Result<Self, Error> {
         if let Some(pusher) = ParticleMethod::find(name_or_path) {
             return Ok(Method::Particle(pusher));
+        }
+        if let Some(pusher) = RelativisticMethod::find(name_or_path) {
+            return Ok(Method::Relativistic(pusher));
         }
         if looks_like_path(name_or_path) {
             return Method::from_file(Path::new(name_or_path));
@@ -94,6 +99,7 @@ impl Method {
             Method::RuntimeTableau(t) => t.name(),
             Method::RuntimeSplitting(s) => s.name(),
             Method::Particle(m) => m.name(),
+            Method::Relativistic(m) => m.name(),
         }
     }
 
@@ -105,6 +111,7 @@ impl Method {
             Method::RuntimeTableau(t) => t.info(),
             Method::RuntimeSplitting(s) => s.info(),
             Method::Particle(m) => m.info(),
+            Method::Relativistic(m) => m.info(),
         }
     }
 
@@ -154,7 +161,7 @@ impl Method {
             Method::Splitting(d) => splitting_interval(d.drift, d.kick),
             Method::RuntimeTableau(t) => butcher_interval(t.a(), t.b()),
             Method::RuntimeSplitting(s) => splitting_interval(s.drift(), s.kick()),
-            Method::Particle(_) => Interval::Bounded(0.0),
+            Method::Particle(_) | Method::Relativistic(_) => Interval::Bounded(0.0),
         }
     }
 
@@ -174,6 +181,7 @@ impl Method {
             Method::Splitting(d) => problem.families().splitting(SplittingSource::Compiled(d), y0),
             Method::RuntimeSplitting(s) => problem.families().splitting(SplittingSource::Runtime(s), y0),
             Method::Particle(m) => problem.families().particle(*m, y0),
+            Method::Relativistic(m) => problem.families().relativistic(*m, y0),
         }
     }
 }

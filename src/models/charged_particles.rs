@@ -2,6 +2,7 @@
 //! `charged-particles` scenes (`coulomb-magnetic`, `cyclotron`, `exb-drift`,
 //! `penning-trap`, `magnetic-bottle`).
 
+use super::{ExternalFields, MagneticField};
 use crate::hamiltonian::{halves, halves_mut};
 use crate::magnetic::{cross, Gyration, Lorentz};
 #[allow(unused_imports)]
@@ -10,69 +11,6 @@ use crate::verify::Structure;
 use crate::{lit, to_f64, Error, Real, State};
 use core::marker::PhantomData;
 use nalgebra::{DMatrix, DVector};
-
-/// The magnetic field of a [`ChargedParticles`] model.
-///
-/// Sign convention: a particle of charge-to-mass ratio `r` turns with the rotation vector
-/// `omega = -r B` (`v' = r v x B = omega x v`). SCENES.md 5's "field along axis 3 of
-/// strength `w`", `Omega = [[0, -w, 0], [w, 0, 0], [0, 0, 0]]`, is the rotation vector
-/// `(0, 0, w)` of a particle of unit ratio, that is `B = (0, 0, -w)`.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum MagneticField<T> {
-    /// No magnetic field.
-    None,
-    /// A uniform field, given as the rotation vector of a particle of unit charge-to-mass
-    /// ratio (`-B`); particle `k` turns with `r_k` times it.
-    Uniform([T; 3]),
-    /// A magnetic bottle along axis 3, `B = B0 (-x z/L^2, -y z/L^2, 1 + z^2/L^2)`
-    /// (divergence-free): the field grows away from `z = 0` and reflects particles whose
-    /// velocity is not too close to the axis (the magnetic mirror).
-    Bottle {
-        /// `B0`, the field at the centre.
-        b0: T,
-        /// `L`, the length over which the field doubles (`B_z(L) = 2 B0` on the axis).
-        length: T,
-    },
-}
-
-impl<T: Real> MagneticField<T> {
-    /// A uniform field given as `B` (the rotation vector of unit ratio is `-B`).
-    pub fn uniform_b(b: [T; 3]) -> Self {
-        MagneticField::Uniform([-b[0], -b[1], -b[2]])
-    }
-
-    /// The field `B` at position `q` (3 components).
-    ///
-    /// ```
-    /// use stormer::models::MagneticField;
-    /// let bottle = MagneticField::Bottle { b0: 2.0, length: 4.0 };
-    /// assert_eq!(bottle.b(&[0.0, 0.0, 4.0]), [0.0, 0.0, 4.0]); // doubled at z = L
-    /// assert_eq!(bottle.b(&[1.0, 0.0, 4.0]), [-0.5, 0.0, 4.0]); // and bent towards the axis
-    /// assert_eq!(MagneticField::Uniform([0.0, 0.0, 1.0]).b(&[5.0; 3]), [0.0, 0.0, -1.0]);
-    /// ```
-    #[inline(always)]
-    pub fn b(&self, q: &[T]) -> [T; 3] {
-        match *self {
-            MagneticField::None => [T::zero(); 3],
-            MagneticField::Uniform(w) => [-w[0], -w[1], -w[2]],
-            MagneticField::Bottle { b0, length } => {
-                let s = b0 / (length * length);
-                [-s * q[0] * q[2], -s * q[1] * q[2], b0 + s * q[2] * q[2]]
-            }
-        }
-    }
-
-    fn map<U>(&self, f: impl Fn(T) -> U) -> MagneticField<U> {
-        match *self {
-            MagneticField::None => MagneticField::None,
-            MagneticField::Uniform(w) => MagneticField::Uniform(w.map(f)),
-            MagneticField::Bottle { b0, length } => MagneticField::Bottle {
-                b0: f(b0),
-                length: f(length),
-            },
-        }
-    }
-}
 
 /// Charged particles in 3-D (SCENES.md 5-6), each with its mass `m_k` and charge `c_k`
 /// (ratio `r_k = c_k / m_k`), in a magnetic field ([`MagneticField`]) and optionally:
@@ -174,6 +112,34 @@ fn separation<T: Real>(q: &[T], k: usize, l: usize) -> [T; 3] {
         q[3 * k + 1] - q[3 * l + 1],
         q[3 * k + 2] - q[3 * l + 2],
     ]
+}
+
+/// Writes `particles` particles in 3-D at `positions` into the first half of `y` and the
+/// `rates` (velocities or momenta, `name` in the error) into the second half, `3N` values
+/// each: the states of both charged-particle models.
+pub(super) fn write_particles<T: Real, S: State<Scalar = T>>(
+    particles: usize,
+    positions: &[T],
+    (rates, name): (&[T], &str),
+    y: &mut S,
+) -> Result<(), Error> {
+    let len = 3 * particles;
+    if positions.len() != len || rates.len() != len || y.dim() != 2 * len {
+        return Err(Error::invalid(
+            "state",
+            format!(
+                "{particles} particles need {len} positions, {len} {name} and a state of {}, got {}, {} and {}",
+                2 * len,
+                positions.len(),
+                rates.len(),
+                y.dim()
+            ),
+        ));
+    }
+    let (q, v) = y.as_mut_slice().split_at_mut(len);
+    q.copy_from_slice(positions);
+    v.copy_from_slice(rates);
+    Ok(())
 }
 
 #[inline(always)]
@@ -328,30 +294,13 @@ impl<T: Real, S: State<Scalar = T>> ChargedParticles<T, S> {
     /// Writes the particles at `positions` moving at `velocities` (`3N` values each,
     /// particle by particle) into `y`.
     pub fn set_state(&self, positions: &[T], velocities: &[T], y: &mut S) -> Result<(), Error> {
-        let len = 3 * self.masses.len();
-        if positions.len() != len || velocities.len() != len || y.dim() != 2 * len {
-            return Err(Error::invalid(
-                "state",
-                format!(
-                    "{} particles need {len} positions, {len} velocities and a state of {}, got {}, {} and {}",
-                    self.masses.len(),
-                    2 * len,
-                    positions.len(),
-                    velocities.len(),
-                    y.dim()
-                ),
-            ));
-        }
-        let (q, v) = y.as_mut_slice().split_at_mut(len);
-        q.copy_from_slice(positions);
-        v.copy_from_slice(velocities);
-        Ok(())
+        write_particles(self.masses.len(), positions, (velocities, "velocities"), y)
     }
 
     /// True when the particles move independently in uniform fields (no centre, no
     /// quadrupole, no interaction, no bottle): the motion is then known in closed form.
     pub fn has_exact_solution(&self) -> bool {
-        !matches!(self.field, MagneticField::Bottle { .. })
+        self.field.is_uniform()
             && self.centre.is_none()
             && self.quadrupole.is_none()
             && (self.interaction.is_none() || self.masses.len() == 1)
@@ -405,19 +354,21 @@ impl<T: Real, S: State<Scalar = T>> Lorentz for ChargedParticles<T, S> {
     type Scalar = T;
     type State = S;
 
-    /// `r_k` times the unit-ratio rotation vector; in a bottle, `-r_k B(q_k)`.
+    /// `r_k` times the unit-ratio rotation vector; in a bottle or a dipole, `-r_k B(q_k)`.
     #[inline(always)]
     fn omega(&self, particle: usize, q: &[T]) -> [T; 3] {
-        let r = self.ratios[particle];
-        match self.field {
-            MagneticField::None => [T::zero(); 3],
-            MagneticField::Uniform(w) => [r * w[0], r * w[1], r * w[2]],
-            MagneticField::Bottle { .. } => self.field.b(&q[3 * particle..3 * particle + 3]).map(|b| -r * b),
-        }
+        ExternalFields::new(&self.ratios, self.electric, self.field).omega(particle, &q[3 * particle..3 * particle + 3])
     }
 
     fn uniform(&self) -> bool {
-        !matches!(self.field, MagneticField::Bottle { .. })
+        self.field.is_uniform()
+    }
+
+    /// The fields, when each particle feels only them (no centre, no quadrupole, no
+    /// interaction): Boris then pushes the particles independently, in parallel.
+    fn external_fields(&self) -> Option<ExternalFields<'_, T>> {
+        let alone = self.centre.is_none() && self.quadrupole.is_none() && self.interaction.is_none();
+        alone.then(|| ExternalFields::new(&self.ratios, self.electric, self.field))
     }
 
     #[inline]

@@ -1,9 +1,9 @@
 //! Generic problems that many simulations share, in any scalar and state type: gravitating
 //! bodies ([`NBody`], with [`Orbit`] for the two-body solution), one body around a fixed
 //! centre ([`CentralForce`]) and charged particles in electric and magnetic fields
-//! ([`ChargedParticles`], run through [`crate::magnetic::Charged`]); and a planetary
-//! system split the Wisdom-Holman way ([`KeplerSplit`], in [`Jacobi`] or
-//! [`DemocraticHeliocentric`] coordinates).
+//! ([`ChargedParticles`], run through [`crate::magnetic::Charged`]; at speeds close to
+//! light, [`RelativisticParticles`]); and a planetary system split the Wisdom-Holman way
+//! ([`KeplerSplit`], in [`Jacobi`] or [`DemocraticHeliocentric`] coordinates).
 //!
 //! The application's scene files build these; a program uses them directly:
 //!
@@ -24,20 +24,27 @@
 mod central_force;
 mod charged_particles;
 mod democratic_heliocentric;
+mod external_fields;
 mod jacobi;
 mod kepler_split;
+mod magnetic_field;
 mod nbody;
 mod nbody_shape;
+mod nbody_tiles;
 mod orbit;
+mod relativistic_particles;
 
 pub use central_force::CentralForce;
-pub use charged_particles::{ChargedParticles, MagneticField};
+pub use charged_particles::ChargedParticles;
 pub use democratic_heliocentric::DemocraticHeliocentric;
+pub use external_fields::ExternalFields;
 pub use jacobi::Jacobi;
 pub use kepler_split::{KeplerCoordinates, KeplerSplit, MAX_MASS_RATIO};
+pub use magnetic_field::MagneticField;
 pub use nbody::NBody;
 pub use nbody_shape::{AnyShape, Bodies, Shape};
 pub use orbit::{eccentric_anomaly, Orbit};
+pub use relativistic_particles::RelativisticParticles;
 
 /// `names` if there is one per member (`count` of them, called `what`: "bodies",
 /// "particles"), else an error saying how many of each there are.

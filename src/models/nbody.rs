@@ -8,15 +8,33 @@ use crate::real::ops::*;
 use crate::{lit, to_f64, Error, Families, Hamiltonian, QuadraticKinetic, Real, State};
 use core::marker::PhantomData;
 
+/// `q_k - q_l` in dimension `D` and its squared length, the loops unrolled: the start of
+/// every pair's force.
+#[inline(always)]
+fn separation<T: Real, const D: usize>(qk: &[T], ql: &[T]) -> ([T; D], T) {
+    let mut d = [T::zero(); D];
+    for c in 0..D {
+        d[c] = qk[c] - ql[c];
+    }
+    let mut r2 = d[0] * d[0];
+    for c in 1..D {
+        r2 += d[c] * d[c];
+    }
+    (d, r2)
+}
+
 /// `n` bodies attracting each other by Newtonian gravity in `dim` dimensions, on
 /// phase-space states `S = (q, p)`: the positions of body 0, body 1, ..., then their
 /// momenta `p_k = m_k v_k` in the same order (length `2 n dim`).
 ///
 /// Each pair is computed once and its force added to one body and subtracted from the
 /// other (Newton's third law), so the forces sum to zero up to the rounding of those
-/// additions. The kinetic energy is quadratic: every splitting and composition applies,
-/// Runge-Kutta-Nystrom methods included, and every Runge-Kutta method runs on the
-/// first-order form.
+/// additions. From 16 bodies (`f64`, `f32`) the pairs are computed in SIMD registers, from
+/// 256 on rayon's threads (feature `parallel`), with the same bits on any number of
+/// threads; the first [`NBody::active`] bodies pull, the others are test particles
+/// ([`NBody::with_active`]). The kinetic energy is quadratic: every splitting and
+/// composition applies, Runge-Kutta-Nystrom methods included, and every Runge-Kutta method
+/// runs on the first-order form.
 ///
 /// Generic over the scalar and the state: `[f64; 24]` for the four-body outer solar system
 /// in a benchmark (no heap allocation per step), `DVector<f64>` for a scene file with any
@@ -48,6 +66,9 @@ pub struct NBody<T, S, K = AnyShape> {
     /// `G m_k` for every body: the pair `k < l` attracts with `(G m_k) m_l`, computed in
     /// the force's loop (a table of the pairs would hold `n (n - 1) / 2` numbers).
     gm: Vec<T>,
+    /// The bodies `0 .. active` pull; the others are test particles (they feel the active
+    /// bodies and pull none).
+    active: usize,
     state: PhantomData<fn() -> (S, K)>,
 }
 
@@ -60,6 +81,7 @@ impl<T: Real, S, K> Clone for NBody<T, S, K> {
             names: self.names.clone(),
             inverse_mass: self.inverse_mass.clone(),
             gm: self.gm.clone(),
+            active: self.active,
             state: PhantomData,
         }
     }
@@ -72,9 +94,20 @@ impl<T: Real, S, K> core::fmt::Debug for NBody<T, S, K> {
             .field("dim", &self.dim)
             .field("names", &self.names)
             .field("masses", &self.masses)
+            .field("active", &self.active)
             .finish()
     }
 }
+
+/// Fewest bodies for the SIMD blocks (fewer: the unrolled kernels up to 6 bodies, the loops
+/// beyond), measured in `benches/nbody_scaling.rs`.
+pub(super) const SIMD_MIN: usize = 16;
+
+/// Fewest bodies for rayon's threads (fewer: one thread, the same forces bit for bit): two
+/// blocks, the fewest with tiles to share. Not yet confirmed by a timing on two free cores
+/// (`benches/nbody_scaling.rs`, docs/benchmarks.md "Many bodies").
+#[cfg_attr(not(feature = "parallel"), allow(dead_code))]
+pub(super) const PARALLEL_MIN: usize = 256;
 
 impl<T: Real, S: State<Scalar = T>, K: Shape> NBody<T, S, K> {
     /// Bodies of the given masses (named `body0`, `body1`, ...) in `dim` dimensions with
@@ -121,6 +154,7 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> NBody<T, S, K> {
                 .flat_map(|&m| core::iter::repeat(T::one() / m).take(dim))
                 .collect(),
             gm: masses.iter().map(|&m| g * m).collect(),
+            active: n,
             state: PhantomData,
         })
     }
@@ -129,6 +163,45 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> NBody<T, S, K> {
     pub fn with_names(mut self, names: Vec<String>) -> Result<Self, Error> {
         self.names = super::one_name_each(names, self.masses.len(), "bodies")?;
         Ok(self)
+    }
+
+    /// The same bodies, of which only the first `active` pull: the others are test
+    /// particles (REBOUND's `N_active`), which feel the active bodies and pull none, at
+    /// `O(N M)` cost for `M` active bodies. A test particle keeps its mass for its momentum
+    /// `p = m v`; its motion does not depend on it. `active` is at most the number of
+    /// bodies; fewer than all needs the run-time shape [`AnyShape`] (the unrolled kernels of
+    /// [`super::Bodies`] have every body pull).
+    ///
+    /// ```
+    /// use stormer::models::NBody;
+    /// use stormer::Hamiltonian;
+    /// // a star and a test particle one unit away, G = 1: the star feels nothing
+    /// let nb = NBody::<f64, [f64; 4]>::new(1.0, &[1.0, 1e-3], 1).unwrap().with_active(1).unwrap();
+    /// let mut f = [0.0; 2];
+    /// nb.force(0.0, &[0.0, 1.0], &mut f);
+    /// assert_eq!(f, [0.0, -1e-3]);
+    /// ```
+    pub fn with_active(mut self, active: usize) -> Result<Self, Error> {
+        let n = self.masses.len();
+        if active > n {
+            return Err(Error::invalid(
+                "active",
+                format!("the active bodies are the first of the {n} bodies: at most {n}, got {active}"),
+            ));
+        }
+        if active < n && K::FIXED.is_some() {
+            return Err(Error::invalid(
+                "active",
+                "test particles need the run-time shape (AnyShape): this problem's force is compiled for bodies that all pull",
+            ));
+        }
+        self.active = active;
+        Ok(self)
+    }
+
+    /// The number of bodies that pull (the first ones); the others are test particles.
+    pub fn active(&self) -> usize {
+        self.active
     }
 
     /// Number of bodies.
@@ -238,25 +311,19 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> NBody<T, S, K> {
         for x in f.iter_mut() {
             *x = T::zero();
         }
-        for k in 0..n {
+        let active = self.active;
+        for k in 0..active {
             let gmk = self.gm[k];
             let (head, tail) = f.split_at_mut((k + 1) * D);
             let qk = &q[k * D..(k + 1) * D];
-            // body k's share of its pairs with later bodies, summed in registers
+            // body k's share of its pairs with later active bodies, summed in registers
             let mut fk = [T::zero(); D];
-            for ((ql, fl), &ml) in q[(k + 1) * D..]
+            for ((ql, fl), &ml) in q[(k + 1) * D..active * D]
                 .chunks_exact(D)
                 .zip(tail.chunks_exact_mut(D))
-                .zip(&self.masses[k + 1..])
+                .zip(&self.masses[k + 1..active])
             {
-                let mut d = [T::zero(); D];
-                for c in 0..D {
-                    d[c] = qk[c] - ql[c];
-                }
-                let mut r2 = d[0] * d[0];
-                for c in 1..D {
-                    r2 += d[c] * d[c];
-                }
+                let (d, r2) = separation::<T, D>(qk, ql);
                 let s = gmk * ml / (r2 * r2.sqrt());
                 for c in 0..D {
                     let x = s * d[c];
@@ -267,6 +334,19 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> NBody<T, S, K> {
             for c in 0..D {
                 head[k * D + c] += fk[c];
             }
+        }
+        // each test particle's pulls from the active bodies, summed in registers
+        for l in active..n {
+            let ql = &q[l * D..(l + 1) * D];
+            let mut fl = [T::zero(); D];
+            for (qk, &gmk) in q[..active * D].chunks_exact(D).zip(&self.gm) {
+                let (d, r2) = separation::<T, D>(qk, ql);
+                let s = gmk * self.masses[l] / (r2 * r2.sqrt());
+                for c in 0..D {
+                    fl[c] += s * d[c];
+                }
+            }
+            f[l * D..(l + 1) * D].copy_from_slice(&fl);
         }
     }
 
@@ -310,11 +390,24 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> NBody<T, S, K> {
     }
 
     /// The forces for any number of bodies in any dimension, chosen at run time: the
-    /// unrolled kernel for 2 to 6 bodies in 2-D and 3-D, loops otherwise. Not inlined: a
-    /// run-time state (`DVector`) pays one call per evaluation for it.
+    /// unrolled kernel for 2 to 6 bodies in 2-D and 3-D, the SIMD blocks for `f64` and
+    /// `f32` in 1 to 3 dimensions from [`SIMD_MIN`] bodies or with test particles, loops
+    /// otherwise. Not inlined: a run-time state (`DVector`) pays one call per evaluation.
     #[inline(never)]
     fn force_any_shape(&self, q: &[T], f: &mut [T]) {
-        match (self.dim, self.masses.len()) {
+        let n = self.masses.len();
+        if (n >= SIMD_MIN || self.active < n) && self.simd_forces(q, f) {
+            return;
+        }
+        if self.active < n {
+            return match self.dim {
+                3 => self.pairwise::<3>(q, f),
+                2 => self.pairwise::<2>(q, f),
+                1 => self.pairwise::<1>(q, f),
+                _ => self.pairwise_any(q, f),
+            };
+        }
+        match (self.dim, n) {
             (3, 2) => self.pairwise_fixed::<3, 2>(q, f),
             (3, 3) => self.pairwise_fixed::<3, 3>(q, f),
             (3, 4) => self.pairwise_fixed::<3, 4>(q, f),
@@ -343,7 +436,7 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> NBody<T, S, K> {
         macro_rules! static_shapes {
             ($(($d:literal, $n:literal)),*) => {
                 $(
-                    if S::LEN == Some(2 * $d * $n) && self.dim == $d && self.masses.len() == $n {
+                    if S::LEN == Some(2 * $d * $n) && self.dim == $d && self.masses.len() == $n && self.active == $n {
                         return self.pairwise_fixed::<$d, $n>(q, f);
                     }
                 )*
@@ -364,19 +457,57 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> NBody<T, S, K> {
         self.force_any_shape(q, f)
     }
 
+    /// The forces in blocks of SIMD lanes ([`super::nbody_tiles`]) when the scalar is `f64`
+    /// or `f32` and the dimension 1 to 3 (`false` otherwise, nothing written). On rayon's
+    /// threads from [`PARALLEL_MIN`] bodies (feature `parallel`): the blocks depend on the bodies alone, so the
+    /// forces are the same bits on one thread or many.
+    fn simd_forces(&self, q: &[T], f: &mut [T]) -> bool {
+        use super::nbody_tiles::{forces, Lane, Layout};
+        use core::any::TypeId;
+        let n = self.masses.len();
+        #[cfg(feature = "parallel")]
+        let parallel = n >= PARALLEL_MIN && rayon::current_num_threads() > 1;
+        #[cfg(not(feature = "parallel"))]
+        let parallel = false;
+        macro_rules! blocks {
+            ($f:ty, $lanes:literal) => {{
+                let layout = Layout::new(n, self.active, $lanes);
+                let to = |x: T| <$f>::from_f64(to_f64(x));
+                let from = |x: $f| T::from_subset(&x.to_f64());
+                let (m, gm) = (&self.masses[..], &self.gm[..]);
+                match self.dim {
+                    3 => forces::<T, $f, 3, $lanes>(layout, m, gm, q, f, parallel, to, from),
+                    2 => forces::<T, $f, 2, $lanes>(layout, m, gm, q, f, parallel, to, from),
+                    1 => forces::<T, $f, 1, $lanes>(layout, m, gm, q, f, parallel, to, from),
+                    _ => return false,
+                }
+                true
+            }};
+        }
+        if TypeId::of::<T>() == TypeId::of::<f64>() {
+            blocks!(f64, 4)
+        } else if TypeId::of::<T>() == TypeId::of::<f32>() {
+            blocks!(f32, 8)
+        } else {
+            false
+        }
+    }
+
     /// The same, in any dimension.
     fn pairwise_any(&self, q: &[T], f: &mut [T]) {
         let (n, d) = (self.masses.len(), self.dim);
         for x in f.iter_mut() {
             *x = T::zero();
         }
-        for k in 0..n {
+        for k in 0..self.active {
             for l in k + 1..n {
                 let r2 = (0..d).fold(T::zero(), |s, c| s + (q[k * d + c] - q[l * d + c]).powi(2));
                 let s = self.gm[k] * self.masses[l] / (r2 * r2.sqrt());
                 for c in 0..d {
                     let x = s * (q[k * d + c] - q[l * d + c]);
-                    f[k * d + c] -= x;
+                    if l < self.active {
+                        f[k * d + c] -= x;
+                    }
                     f[l * d + c] += x;
                 }
             }
@@ -415,8 +546,10 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> Hamiltonian for NBody<T, S, K> {
             let w = self.inverse_mass[k * d];
             kinetic += pk.iter().fold(T::zero(), |s, &x| s + x * w * x) * half;
         }
+        // the pairs with an active body: a test particle's share of the energy, as if its
+        // pull did not move the active bodies (conserved only as its mass tends to zero)
         let mut potential = T::zero();
-        for k in 0..n {
+        for k in 0..self.active {
             for l in k + 1..n {
                 let r2 = (0..d).fold(T::zero(), |s, c| s + (q[k * d + c] - q[l * d + c]).powi(2));
                 potential -= self.gm[k] * self.masses[l] / r2.sqrt();

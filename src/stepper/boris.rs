@@ -1,9 +1,12 @@
 //! The Boris-Buneman method for charged particles, with the classic Cayley rotation or
 //! with the exact rotation angle.
 
+use super::boris_lanes::push_lanes;
+use super::particle_chunks::{check_particles_in_3d, try_for_each_chunk};
 use super::{Counters, ParticleMethod, Stepper};
 use crate::hamiltonian::halves_mut;
 use crate::magnetic::{cross, Charged, Lorentz};
+use crate::models::ExternalFields;
 #[allow(unused_imports)]
 use crate::real::ops::*;
 use crate::{lit, Error, MethodInfo, Real, State};
@@ -39,6 +42,11 @@ pub enum BorisRotation {
 /// field it keeps `|v|` exactly for any `h`, and with crossed uniform fields it moves
 /// along the E x B drift exactly.
 ///
+/// Particles that move in external fields alone ([`Lorentz::external_fields`]) are pushed
+/// one by one, each step of each particle done at once (its state read and written once
+/// per step), in parallel chunks above [`super::PARALLEL_FROM`] particles; the numbers are
+/// bitwise those of the general loop, whatever the number of threads.
+///
 /// ```
 /// use stormer::magnetic::{Charged, Lorentz};
 /// use stormer::stepper::{Boris, BorisRotation};
@@ -70,19 +78,11 @@ pub struct Boris<S> {
 impl<S: State> Boris<S> {
     /// A stepper with buffers shaped like `y0 = (q, v)`, of length `6N`.
     pub fn new(rotation: BorisRotation, y0: &S) -> Result<Self, Error> {
-        if y0.dim() == 0 || y0.dim() % 6 != 0 {
-            let method = match rotation {
-                BorisRotation::Cayley => ParticleMethod::Boris,
-                BorisRotation::ExactPhase => ParticleMethod::BorisExactPhase,
-            };
-            return Err(Error::Unsupported {
-                name: method.name().into(),
-                reason: format!(
-                    "it moves particles in 3-D: the state (q, v) needs 6 components per particle, not {}",
-                    y0.dim()
-                ),
-            });
-        }
+        let method = match rotation {
+            BorisRotation::Cayley => ParticleMethod::Boris,
+            BorisRotation::ExactPhase => ParticleMethod::BorisExactPhase,
+        };
+        check_particles_in_3d(method.name(), "(q, v)", y0.dim())?;
         Ok(Boris {
             rotation,
             work: y0.zeros_like(),
@@ -147,6 +147,11 @@ impl<S: State> Boris<S> {
         cached: bool,
     ) -> Result<(), Error> {
         let (q, v) = halves_mut(y.as_mut_slice());
+        if let Some(fields) = p.0.external_fields() {
+            self.counters.evaluations += if cached { 1 } else { 2 };
+            let rotation = self.rotation;
+            return try_for_each_chunk(q, v, |first, q, v| push_each(rotation, &fields, t, h, first, q, v));
+        }
         let (_, a) = halves_mut(self.work.as_mut_slice());
         if !cached {
             p.0.acceleration(t, q, a);
@@ -177,6 +182,47 @@ impl<S: State> Boris<S> {
         }
         Ok(())
     }
+}
+
+/// One Boris step of particles `first, first + 1, ...` (positions `q`, velocities `v`)
+/// that feel only the external `fields`: the same operations, in the same order, as
+/// [`Boris::advance`]'s general loop, particle by particle (in a uniform field, lanes of
+/// particles at once, [`push_lanes`], then the rest one by one).
+#[inline(always)]
+fn push_each<T: Real>(
+    rotation: BorisRotation,
+    fields: &ExternalFields<'_, T>,
+    t: T,
+    h: T,
+    first: usize,
+    q: &mut [T],
+    v: &mut [T],
+) -> Result<(), Error> {
+    let (q, v, first) = if rotation == BorisRotation::Cayley && fields.magnetic().is_uniform() {
+        let done = push_lanes(fields, h, first, q, v);
+        (&mut q[3 * done..], &mut v[3 * done..], first + done)
+    } else {
+        (q, v, first)
+    };
+    let half = lit::<T>(0.5) * h;
+    for (j, (qk, vk)) in q.chunks_exact_mut(3).zip(v.chunks_exact_mut(3)).enumerate() {
+        let k = first + j;
+        let a = fields.acceleration(k);
+        let w = half_turn(rotation, fields.omega(k, qk), h).ok_or_else(|| too_fast(t))?;
+        let turn = cross(&w, vk);
+        for i in 0..3 {
+            vk[i] += half * a[i] + turn[i];
+        }
+        for i in 0..3 {
+            qk[i] += h * vk[i];
+        }
+        let w = half_turn(rotation, fields.omega(k, qk), h).ok_or_else(|| too_fast(t))?;
+        for i in 0..3 {
+            vk[i] += half * a[i];
+        }
+        solve_turn(&w, vk);
+    }
+    Ok(())
 }
 
 impl<T: Real, L: Lorentz<Scalar = T>> Stepper<Charged<L>> for Boris<L::State> {

@@ -97,27 +97,40 @@ impl<S: State> Carry<S> {
     }
 }
 
-/// A state's increment, written by the caller, added with the carry.
+/// A step's increment `delta`, written by the stepper's form `F` of it, added to the state
+/// with the carry: one carry, one acceptance and one reset for every compensated stepper.
 #[derive(Debug, Clone)]
-pub(crate) struct CompensatedSum<S: State> {
+pub(crate) struct Compensated<S: State, F> {
+    form: F,
     delta: S,
     carry: Carry<S>,
 }
 
-impl<S: State> CompensatedSum<S> {
-    /// Buffers shaped like `y0`.
-    pub(crate) fn new(y0: &S) -> Self {
-        CompensatedSum {
+/// An increment written by the caller ([`Compensated::add_with`]).
+pub(crate) type CompensatedSum<S> = Compensated<S, ()>;
+
+/// The compensated final combination of a Runge-Kutta step:
+/// `y_new = y + h sum_i b_i k_i`, the increment summed apart and added with the carry. The
+/// form is `(stage, b_i)` for the nonzero weights, in stage order.
+pub(crate) type CompensatedCombination<S> = Compensated<S, Vec<(usize, <S as State>::Scalar)>>;
+
+/// A splitting or composition in increment form, interpreted from its word: within a
+/// step `(q, p) = (q_n + dq, p_n + dp)`, each sub-flow evaluated at the current rounded
+/// point adds its increment to `(dq, dp)`, and `(q_n, p_n) + (dq, dp)` is formed once at
+/// the end, with the carry.
+///
+/// The force at the end of a step is not reused by the next (no FSAL): it was evaluated at
+/// the rounded point, not at the compensated new state.
+pub(crate) type CompensatedWord<S> = Compensated<S, WordIncrement<S>>;
+
+impl<S: State, F> Compensated<S, F> {
+    /// The form `form`, buffers shaped like `y0`.
+    fn with_form(form: F, y0: &S) -> Self {
+        Compensated {
+            form,
             delta: y0.zeros_like(),
             carry: Carry::new(y0),
         }
-    }
-
-    /// Overwrites `y_new` with `y + delta`, compensated, `fill` writing `delta`.
-    #[inline]
-    pub(crate) fn add_with(&mut self, y: &S, y_new: &mut S, fill: impl FnOnce(&mut [S::Scalar])) {
-        fill(self.delta.as_mut_slice());
-        self.carry.add(y, &self.delta, y_new);
     }
 
     /// The step is accepted: keep its carry.
@@ -131,79 +144,54 @@ impl<S: State> CompensatedSum<S> {
     }
 }
 
-/// The compensated final combination of a Runge-Kutta step:
-/// `y_new = y + h sum_i b_i k_i`, the increment summed apart and added with the carry.
-#[derive(Debug, Clone)]
-pub(crate) struct CompensatedCombination<S: State> {
-    /// `(stage, b_i)` for the nonzero weights, in stage order.
-    weights: Vec<(usize, S::Scalar)>,
-    sum: CompensatedSum<S>,
+impl<S: State> CompensatedSum<S> {
+    /// Buffers shaped like `y0`.
+    pub(crate) fn new(y0: &S) -> Self {
+        Self::with_form((), y0)
+    }
+
+    /// Overwrites `y_new` with `y + delta`, compensated, `fill` writing `delta`.
+    #[inline]
+    pub(crate) fn add_with(&mut self, y: &S, y_new: &mut S, fill: impl FnOnce(&mut [S::Scalar])) {
+        fill(self.delta.as_mut_slice());
+        self.carry.add(y, &self.delta, y_new);
+    }
 }
 
 impl<S: State> CompensatedCombination<S> {
     /// For the weights `b` (zeros skipped), buffers shaped like `y0`.
     pub(crate) fn new(b: &[f64], y0: &S) -> Self {
-        CompensatedCombination {
-            weights: b
-                .iter()
-                .enumerate()
-                .filter(|&(_, &b)| b != 0.0)
-                .map(|(i, &b)| (i, lit(b)))
-                .collect(),
-            sum: CompensatedSum::new(y0),
-        }
+        let weights = b
+            .iter()
+            .enumerate()
+            .filter(|&(_, &b)| b != 0.0)
+            .map(|(i, &b)| (i, lit(b)))
+            .collect();
+        Self::with_form(weights, y0)
     }
 
     /// Overwrites `y_new` with `y + h sum_i b_i k_i`, compensated.
     pub(crate) fn combine(&mut self, h: S::Scalar, y: &S, k: &[S], y_new: &mut S) {
-        let weights = &self.weights;
-        self.sum.add_with(y, y_new, |delta| {
-            for (m, d) in delta.iter_mut().enumerate() {
-                let mut sum = S::Scalar::zero();
-                for &(i, b) in weights {
-                    sum += b * k[i].as_slice()[m];
-                }
-                *d = h * sum;
+        for (m, d) in self.delta.as_mut_slice().iter_mut().enumerate() {
+            let mut sum = S::Scalar::zero();
+            for &(i, b) in &self.form {
+                sum += b * k[i].as_slice()[m];
             }
-        });
+            *d = h * sum;
+        }
+        self.carry.add(y, &self.delta, y_new);
     }
-
-    /// The step is accepted: keep its carry.
-    pub(crate) fn accept(&mut self) {
-        self.sum.accept();
-    }
-
-    /// The state was changed from outside: drop the carry.
-    pub(crate) fn reset(&mut self) {
-        self.sum.reset();
-    }
-}
-
-/// A splitting or composition in increment form, interpreted from its word: within a
-/// step `(q, p) = (q_n + dq, p_n + dp)`, each sub-flow evaluated at the current rounded
-/// point adds its increment to `(dq, dp)`, and `(q_n, p_n) + (dq, dp)` is formed once at
-/// the end, with the carry.
-///
-/// The force at the end of a step is not reused by the next (no FSAL): it was evaluated at
-/// the rounded point, not at the compensated new state.
-#[derive(Debug, Clone)]
-pub(crate) struct CompensatedWord<S: State> {
-    increment: WordIncrement<S>,
-    carry: Carry<S>,
 }
 
 impl<S: State> CompensatedWord<S> {
     /// For a word given as `(flow, fraction, node)` per op, buffers shaped like `y0`.
     pub(crate) fn new(ops: Vec<(Flow, S::Scalar, S::Scalar)>, y0: &S) -> Self {
-        CompensatedWord {
-            increment: WordIncrement {
-                ops,
-                delta: y0.zeros_like(),
-                point: y0.zeros_like(),
-                work: vec![S::Scalar::zero(); 2 * y0.dim()],
-            },
-            carry: Carry::new(y0),
-        }
+        let increment = WordIncrement {
+            ops,
+            point: y0.zeros_like(),
+            work: vec![S::Scalar::zero(); 2 * y0.dim()],
+        };
+        Self::with_form(increment, y0)
     }
 
     /// One step from `(t, y)` into `y_new`, its carry pending until [`Self::accept`].
@@ -220,29 +208,17 @@ impl<S: State> CompensatedWord<S> {
     where
         P: Splittable<Scalar = S::Scalar, State = S>,
     {
-        let evaluations = self.increment.compute(p, t, h, y, cache);
-        self.carry.add(y, &self.increment.delta, y_new);
+        let evaluations = self.form.compute(p, t, h, y, &mut self.delta, cache);
+        self.carry.add(y, &self.delta, y_new);
         evaluations
-    }
-
-    /// The step is accepted: keep its carry.
-    pub(crate) fn accept(&mut self) {
-        self.carry.commit();
-    }
-
-    /// The state was changed from outside: drop the carry.
-    pub(crate) fn reset(&mut self) {
-        self.carry.clear();
     }
 }
 
 /// The increment of one step of a word of sub-flows, and its buffers.
 #[derive(Debug, Clone)]
-struct WordIncrement<S: State> {
+pub(crate) struct WordIncrement<S: State> {
     /// `(flow, fraction, node)` per op of the word.
     ops: Vec<(Flow, S::Scalar, S::Scalar)>,
-    /// `(dq, dp)`, the step's increment so far.
-    delta: S,
     /// `(q_n + dq, p_n + dp)`, rounded: where the sub-flows are evaluated.
     point: S,
     /// The force (`n` values), then the drift's workspace (`3n`).
@@ -250,19 +226,20 @@ struct WordIncrement<S: State> {
 }
 
 impl<S: State> WordIncrement<S> {
-    /// The step's increment from `(t, y)` into `delta`; returns the force evaluations.
-    fn compute<P>(&mut self, p: &P, t: S::Scalar, h: S::Scalar, y: &S, cache: &mut P::FlowCache) -> u64
+    /// The increment `delta = (dq, dp)` of the step of size `h` from `(t, y)`; returns the
+    /// force evaluations.
+    fn compute<P>(&mut self, p: &P, t: S::Scalar, h: S::Scalar, y: &S, delta: &mut S, cache: &mut P::FlowCache) -> u64
     where
         P: Splittable<Scalar = S::Scalar, State = S>,
     {
-        self.delta.as_mut_slice().fill(S::Scalar::zero());
+        delta.as_mut_slice().fill(S::Scalar::zero());
         self.point.copy_from(y);
         let n = y.dim() / 2;
         let (force, scratch) = self.work.split_at_mut(n);
         let mut evaluations = 0;
         for &(flow, coef, node) in &self.ops {
             let (q, mom) = halves(self.point.as_slice());
-            let (dq, dp) = halves_mut(self.delta.as_mut_slice());
+            let (dq, dp) = halves_mut(delta.as_mut_slice());
             match flow {
                 Flow::Drift => p.drift_increment(t + node * h, coef * h, q, mom, dq, dp, scratch, cache),
                 Flow::Kick => {
@@ -273,7 +250,7 @@ impl<S: State> WordIncrement<S> {
             }
             // the next sub-flow sees the rounded point; only the increments accumulate
             let point = self.point.as_mut_slice().iter_mut();
-            for ((x, &x0), &d) in point.zip(y.as_slice()).zip(self.delta.as_slice()) {
+            for ((x, &x0), &d) in point.zip(y.as_slice()).zip(delta.as_slice()) {
                 *x = x0 + d;
             }
         }
@@ -309,12 +286,18 @@ mod tests {
         assert_eq!(carry.current(), Some(&[0.0]));
     }
 
-    #[test]
-    fn a_state_changed_from_outside_drops_the_carry() {
+    /// `2^-60`, and the carry of adding it to 1, pending, with the step's result.
+    fn a_tiny_step() -> (f64, Carry<[f64; 1]>, [f64; 1]) {
         let tiny = 2f64.powi(-60);
         let mut carry = Carry::new(&[0.0]);
         let mut y_new = [0.0];
         carry.add(&[1.0], &[tiny], &mut y_new);
+        (tiny, carry, y_new)
+    }
+
+    #[test]
+    fn a_state_changed_from_outside_drops_the_carry() {
+        let (tiny, mut carry, mut y_new) = a_tiny_step();
         carry.commit();
         assert_eq!(carry.current(), Some(&[tiny]));
         // the next step starts from another state: the carry of 1.0 must not be added
@@ -331,10 +314,7 @@ mod tests {
 
     #[test]
     fn a_rejected_step_commits_nothing_and_reset_clears() {
-        let tiny = 2f64.powi(-60);
-        let mut carry = Carry::new(&[0.0]);
-        let mut y_new = [0.0];
-        carry.add(&[1.0], &[tiny], &mut y_new);
+        let (tiny, mut carry, mut y_new) = a_tiny_step();
         assert_eq!(carry.current(), None, "pending until accepted");
         carry.commit();
         // a rejected try (no commit), then the retry with another increment

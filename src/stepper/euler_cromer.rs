@@ -1,6 +1,7 @@
 //! Euler-Cromer for charged particles: each velocity component is updated with the
 //! components already updated, then the positions with the new velocities.
 
+use super::particle_chunks::check_particles_in_3d;
 use super::{Counters, ParticleMethod, Stepper};
 use crate::hamiltonian::halves_mut;
 use crate::magnetic::{Charged, Lorentz};
@@ -44,15 +45,7 @@ pub struct EulerCromer<S> {
 impl<S: State> EulerCromer<S> {
     /// A stepper with buffers shaped like `y0 = (q, v)`, of length `6N`.
     pub fn new(y0: &S) -> Result<Self, Error> {
-        if y0.dim() == 0 || y0.dim() % 6 != 0 {
-            return Err(Error::Unsupported {
-                name: "euler_cromer".into(),
-                reason: format!(
-                    "it moves particles in 3-D: the state (q, v) needs 6 components per particle, not {}",
-                    y0.dim()
-                ),
-            });
-        }
+        check_particles_in_3d(ParticleMethod::EulerCromer.name(), "(q, v)", y0.dim())?;
         Ok(EulerCromer {
             work: y0.zeros_like(),
             counters: Counters::default(),

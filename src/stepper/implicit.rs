@@ -527,24 +527,22 @@ impl<T: Real, S: State<Scalar = T>> ImplicitRk<S> {
         t: T,
         h: T,
         y: &S,
-        mut stop: Stop<T>,
+        stop: Stop<T>,
     ) -> Result<(), Error> {
         self.explicit_stages(p, t, y, None);
-        let mut residual = S::Scalar::zero();
-        for iteration in 1..=self.options.max_iterations {
-            self.evaluate(p, t, h, y);
-            self.counters.solver_iterations += 1;
-            residual = S::Scalar::zero();
+        self.iterate(t, stop, |this| {
+            this.evaluate(p, t, h, y);
+            let mut residual = S::Scalar::zero();
             let mut bad = None;
-            for (i, row) in self.rows.iter().enumerate() {
+            for (i, row) in this.rows.iter().enumerate() {
                 if row.is_empty() {
                     continue;
                 }
-                let zi = self.z[i].as_mut_slice();
+                let zi = this.z[i].as_mut_slice();
                 for m in 0..zi.len() {
                     let mut sum = S::Scalar::zero();
                     for &(j, a) in row {
-                        sum += a * self.f[j].as_slice()[m];
+                        sum += a * this.f[j].as_slice()[m];
                     }
                     let new = h * sum;
                     let d = magnitude(new - zi[m]);
@@ -557,14 +555,9 @@ impl<T: Real, S: State<Scalar = T>> ImplicitRk<S> {
                     zi[m] = new;
                 }
             }
-            if let Some(d) = bad {
-                return Err(diverged(t, to_f64(d), iteration));
-            }
-            if stop.converged(residual) {
-                return Ok(());
-            }
-        }
-        Err(diverged(t, to_f64(residual), self.options.max_iterations))
+            // a change that is not finite is the divergence reported, not the largest one
+            Some(bad.unwrap_or(residual))
+        })
     }
 
     /// Simplified Newton iterations until `stop` says so.
@@ -584,7 +577,10 @@ impl<T: Real, S: State<Scalar = T>> ImplicitRk<S> {
         let invertible = newton.factor(h, &self.a, s);
         self.explicit_stages(p, t, y, Some(newton.f0()));
         let result = if invertible {
-            self.newton_iterations(&mut newton, p, t, h, y, stop)
+            self.iterate(t, stop, |this| {
+                this.evaluate(p, t, h, y);
+                newton.correct(h, &this.rows, &mut this.z, &this.f)
+            })
         } else {
             Err(diverged(t, f64::INFINITY, 0))
         };
@@ -592,20 +588,14 @@ impl<T: Real, S: State<Scalar = T>> ImplicitRk<S> {
         result
     }
 
-    fn newton_iterations<P: Problem<Scalar = T, State = S>>(
-        &mut self,
-        newton: &mut Newton<S>,
-        p: &P,
-        t: T,
-        h: T,
-        y: &S,
-        mut stop: Stop<T>,
-    ) -> Result<(), Error> {
+    /// Repeats `sweep` (one correction of the stages of the step from `t`, from fresh
+    /// derivatives, returning the size of the change, `None` when it cannot be made) until
+    /// `stop` says so; a change that is not finite or cannot be made is a divergence.
+    fn iterate(&mut self, t: T, mut stop: Stop<T>, mut sweep: impl FnMut(&mut Self) -> Option<T>) -> Result<(), Error> {
         let mut residual = S::Scalar::zero();
         for iteration in 1..=self.options.max_iterations {
-            self.evaluate(p, t, h, y);
             self.counters.solver_iterations += 1;
-            match newton.correct(h, &self.rows, &mut self.z, &self.f) {
+            match sweep(self) {
                 Some(r) if r.is_finite() => residual = r,
                 Some(r) => return Err(diverged(t, to_f64(r), iteration)),
                 None => return Err(diverged(t, f64::INFINITY, iteration)),

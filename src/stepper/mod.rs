@@ -3,6 +3,7 @@
 //! A stepper owns its stage buffers, so stepping never allocates for static states.
 
 mod boris;
+mod boris_lanes;
 mod compensated;
 mod composed;
 mod error_norm;
@@ -10,6 +11,9 @@ mod euler_cromer;
 mod explicit;
 mod implicit;
 mod particle;
+mod particle_chunks;
+mod relativistic_method;
+mod relativistic_push;
 mod runtime;
 mod splitting;
 mod two_step;
@@ -21,6 +25,9 @@ pub use euler_cromer::EulerCromer;
 pub use explicit::{ExplicitRk, ExplicitStages, ExplicitStepper, Unrolled};
 pub use implicit::{ImplicitOptions, ImplicitRk, ImplicitSolver};
 pub use particle::{ParticleMethod, PARTICLE_METHODS};
+pub use particle_chunks::{CHUNK, PARALLEL_FROM};
+pub use relativistic_method::{RelativisticMethod, RELATIVISTIC_METHODS};
+pub use relativistic_push::RelativisticPush;
 pub use runtime::{RuntimeRk, RuntimeStages};
 pub use splitting::{
     RuntimeSplitting, RuntimeWord, SplittingStepper, SplittingWord, UnrolledWord, WordStep, WordStepper,

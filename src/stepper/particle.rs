@@ -6,7 +6,7 @@
 
 use super::{Boris, BorisRotation, EulerCromer, Stepper};
 use crate::magnetic::{Charged, Lorentz};
-use crate::registry::normalize;
+use crate::registry::find_named;
 use crate::{Error, Flags, MethodInfo};
 
 /// A charged-particle stepper, chosen by name.
@@ -48,8 +48,7 @@ impl ParticleMethod {
 
     /// The method called `name` (`-`, `_`, spaces and case as in [`crate::registry::lookup`]).
     pub fn find(name: &str) -> Option<Self> {
-        let key = normalize(name);
-        PARTICLE_METHODS.iter().copied().find(|m| m.name() == key)
+        find_named(PARTICLE_METHODS, Self::name, name)
     }
 
     /// Its row of the method table (family `charged-particle`).

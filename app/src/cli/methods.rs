@@ -1,10 +1,11 @@
-//! `stormer methods`: the catalog as a table or as JSON, then the charged-particle steppers;
+//! `stormer methods`: the catalog as a table or as JSON, then the charged-particle steppers
+//! and the relativistic pushers (with what each conserves, under the table);
 //! each method with the names other libraries give it (`registry::ALIASES`).
 
 use super::output::{print, yes_no};
 use super::TableFormat;
 use stormer::registry::{aliases_of, BUTCHER, SPLITTING};
-use stormer::stepper::PARTICLE_METHODS;
+use stormer::stepper::{PARTICLE_METHODS, RELATIVISTIC_METHODS};
 use stormer::MethodInfo;
 
 /// The table's columns, in order.
@@ -111,9 +112,17 @@ pub fn run(format: TableFormat) -> anyhow::Result<()> {
         .map(|d| d.info())
         .chain(SPLITTING.iter().map(|d| d.info()))
         .chain(PARTICLE_METHODS.iter().map(|m| m.info()))
+        .chain(RELATIVISTIC_METHODS.iter().map(|m| m.info()))
         .collect();
     let text = match format {
-        TableFormat::Table => table(&infos.iter().map(cells).collect::<Vec<_>>()) + KEPLER_NOTE,
+        TableFormat::Table => {
+            let mut text = table(&infos.iter().map(cells).collect::<Vec<_>>()) + KEPLER_NOTE;
+            text.push_str("\nthe relativistic pushers (state x, u = gamma v) conserve:\n");
+            for m in RELATIVISTIC_METHODS {
+                text.push_str(&format!("  {:<20} {}\n", m.name(), m.conserves()));
+            }
+            text
+        }
         TableFormat::Json => {
             let list: Vec<_> = infos.iter().map(json).collect();
             serde_json::to_string_pretty(&list)? + "\n"

@@ -2,6 +2,7 @@
 
 mod choice;
 mod finite_number;
+mod heat_map;
 mod interrupt;
 mod legend;
 mod methods;
@@ -14,6 +15,7 @@ mod run;
 mod sample;
 mod save_at;
 mod scene;
+mod scene_overrides;
 mod section;
 mod study;
 mod tour;
@@ -37,7 +39,7 @@ struct Cli {
 #[derive(Debug, Subcommand)]
 enum Command {
     /// List the methods of the catalog with their order, stages and derived flags, and the
-    /// charged-particle steppers (Boris, Euler-Cromer).
+    /// charged-particle steppers (Boris, Euler-Cromer) and the relativistic pushers (Boris, Vay, Higuera-Cary).
     Methods {
         /// Output format.
         #[arg(long, value_enum, default_value_t = TableFormat::Table)]
@@ -62,7 +64,11 @@ enum Command {
     Compare(study::CompareArgs),
     /// Convergence study: error against the number of steps, and the observed order.
     Scan(study::ScanArgs),
-    /// Join the partial tables of a study run with --shard into its table and diagrams.
+    /// Run a scene for every combination of values of some of its file's numbers (a grid),
+    /// one row per run: the values, where the run ended, the final state.
+    Ensemble(study::EnsembleArgs),
+    /// Join the partial tables of a study or ensemble run with --shard into its table and
+    /// diagrams.
     Merge(study::MergeArgs),
     /// Reproduce the experiments of SCENES.md: pictures, verdicts, index.html and summary.md.
     Tour(tour::TourArgs),
@@ -118,6 +124,7 @@ pub fn main() -> ExitCode {
         Command::Run(args) => run::run(&args),
         Command::Compare(args) => study::compare(&args),
         Command::Scan(args) => study::scan(&args),
+        Command::Ensemble(args) => study::ensemble(&args),
         Command::Merge(args) => study::merge(&args),
         Command::Tour(args) => tour::tour(&args),
         Command::Scene { command } => match command {

@@ -107,16 +107,16 @@ impl Chart {
 }
 
 /// The picture's size in pixels (the width a page scales it from).
-const WIDTH: u32 = 680;
-const HEIGHT: u32 = 480;
+pub(super) const WIDTH: u32 = 680;
+pub(super) const HEIGHT: u32 = 480;
 /// Text heights in pixels of the picture: readable when a page shows it 400 px wide.
-const TITLE_PX: f64 = 21.0;
-const AXIS_PX: f64 = 18.0;
-const TICK_PX: f64 = 16.0;
+pub(super) const TITLE_PX: f64 = 21.0;
+pub(super) const AXIS_PX: f64 = 18.0;
+pub(super) const TICK_PX: f64 = 16.0;
 /// Plotters draws a font of size `s` at `s / 1.24` pixels.
-const FONT_SCALE: f64 = 1.24;
+pub(super) const FONT_SCALE: f64 = 1.24;
 /// Room below the plotting area for the x tick labels and the axis label.
-const X_AREA_PX: u32 = 64;
+pub(super) const X_AREA_PX: u32 = 64;
 const PALETTE: [RGBColor; 8] = [
     RGBColor(31, 119, 180),
     RGBColor(214, 39, 40),
@@ -143,7 +143,7 @@ const LOG_WIDTH: f64 = 40.0;
 /// The data range of one axis, padded, never empty, of finite width, and wide enough for
 /// the tick labels to tell apart: data spanning 1e308, a subnormal width, one point or all
 /// values equal all give a range a chart can be drawn on in bounded time.
-fn range(values: impl Iterator<Item = f64>, scale: Scale) -> (f64, f64) {
+pub(super) fn range(values: impl Iterator<Item = f64>, scale: Scale) -> (f64, f64) {
     let (lo, hi) = values.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| (lo.min(v), hi.max(v)));
     if lo > hi {
         return match scale {
@@ -194,7 +194,7 @@ fn equalize(x: (f64, f64), y: (f64, f64), (pw, ph): (f64, f64)) -> ((f64, f64), 
 
 /// The width of the widest tick label plotters may draw on an axis (about ten ticks at
 /// multiples of a round step on a linear axis, the decades on a log axis), in characters.
-fn widest_tick(scale: Scale, (lo, hi): (f64, f64)) -> usize {
+pub(super) fn widest_tick(scale: Scale, (lo, hi): (f64, f64)) -> usize {
     let labels = Ticks::new(scale, (lo, hi));
     let values: Vec<f64> = match scale {
         Scale::Linear => {
@@ -405,7 +405,7 @@ fn label_count(scale: Scale, (lo, hi): (f64, f64)) -> usize {
 /// The tick labels of one axis: on a linear axis, as many digits as tell ticks a tenth of
 /// the range apart (`-0.57746`, `-0.57744`, not `-0.577` on every tick), and `0` for a
 /// value that is zero to the axis' resolution (not `-2.22e-16`); on a log axis, [`tick`].
-struct Ticks {
+pub(super) struct Ticks {
     /// A tenth of the range of a linear axis; `None` on a log axis or an empty range.
     step: Option<f64>,
     /// A log axis of less than two decades, ticked at every multiple of its decades
@@ -415,7 +415,7 @@ struct Ticks {
 }
 
 impl Ticks {
-    fn new(scale: Scale, (lo, hi): (f64, f64)) -> Self {
+    pub(super) fn new(scale: Scale, (lo, hi): (f64, f64)) -> Self {
         let step = (hi - lo).abs() / 10.0;
         Ticks {
             step: (scale == Scale::Linear && step.is_finite() && step > 0.0).then_some(step),
@@ -423,7 +423,7 @@ impl Ticks {
         }
     }
 
-    fn label(&self, v: f64) -> String {
+    pub(super) fn label(&self, v: f64) -> String {
         let Some(step) = self.step else {
             let mantissa = v / 10f64.powf(v.log10().floor());
             let round = [1.0, 2.0, 5.0, 10.0].iter().any(|m| (mantissa - m).abs() < 1e-6 * m);

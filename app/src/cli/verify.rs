@@ -331,9 +331,9 @@ pub fn run(method: &str, format: TextFormat) -> anyhow::Result<()> {
             tableau_report(t.clone(), "the theta method (alpha = 1/2)".into(), &choice, format)?
         }
         Method::RuntimeTableau(t) => tableau_report(t.clone(), source, &choice, format)?,
-        Method::Particle(m) => {
+        Method::Particle(_) | Method::Relativistic(_) => {
             return Err(Error::Unsupported {
-                name: m.name().into(),
+                name: choice.name().into(),
                 reason: "it is a charged-particle stepper, not catalog data: `stormer verify` checks tableaus, \
                          splittings and compositions (run it on a charged-particle scene with `stormer run`; \
                          docs/charged-particles.md gives its properties)"

@@ -3,7 +3,7 @@
 
 use super::file::{model_name, parse_as, Source};
 use super::{AnyScene, ChargedScene, DampedOscillator, Harmonic, Pendulum, Scene, MODELS};
-use super::{HenonHeiles, RestrictedThreeBody, SpinningBall};
+use super::{HenonHeiles, RelativisticScene, RestrictedThreeBody, SpinningBall};
 use nalgebra::DVector;
 use std::path::Path;
 use stormer::magnetic::Charged;
@@ -189,6 +189,7 @@ pub fn parse(text: &str, origin: &str, name: &str) -> Result<AnyScene, Error> {
             }
         }
         ChargedScene::MODEL => AnyScene::ChargedParticles(parse_as(&src, name)?),
+        RelativisticScene::MODEL => AnyScene::RelativisticParticles(parse_as(&src, name)?),
         Charged::<RestrictedThreeBody>::MODEL => AnyScene::RestrictedThreeBody(parse_as(&src, name)?),
         SpinningBall::MODEL => AnyScene::SpinningBall(parse_as(&src, name)?),
         HenonHeiles::MODEL => AnyScene::HenonHeiles(parse_as(&src, name)?),
@@ -205,6 +206,7 @@ pub fn parse(text: &str, origin: &str, name: &str) -> Result<AnyScene, Error> {
 #[allow(clippy::float_cmp)] // values read from a file or computed exactly are compared exactly
 mod tests {
     use super::*;
+    use crate::scenes::bad_line;
 
     #[test]
     fn every_builtin_scene_loads_with_the_users_values() {
@@ -266,17 +268,6 @@ mod tests {
                         t_end = 1.0\n\
                         every = 1\n";
 
-    /// The error message for `GOOD` with line `line` (1-based) replaced.
-    fn error_with(line: usize, text: &str) -> String {
-        let mut lines: Vec<&str> = GOOD.lines().collect();
-        lines[line - 1] = text;
-        let err = parse(&lines.join("\n"), "t.toml", "t").unwrap_err();
-        assert!(matches!(err, Error::Scene { .. }), "{err:?}");
-        let message = err.to_string();
-        assert!(!message.contains('\n'), "one line: {message}");
-        message
-    }
-
     #[test]
     fn the_good_file_parses() {
         assert_eq!(parse(GOOD, "t.toml", "t").unwrap().model(), "damped-oscillator");
@@ -309,13 +300,10 @@ mod tests {
             (1, "model = \"kepler\"", "line 1: unknown model \"kepler\""),
             (1, "mdl = \"harmonic\"", "missing field `model`"),
         ];
-        for (line, text, expected) in cases {
-            let message = error_with(line, text);
-            assert!(message.contains(expected), "{text}: {message}");
-        }
-        assert!(error_with(11, "").contains("missing field `t_end`"));
+        bad_line::assert_bad_lines(GOOD, "t.toml", &cases);
+        assert!(bad_line::error_with_line(GOOD, "t.toml", 11, "").contains("missing field `t_end`"));
         // a key outside its table: w0 and Q are both unknown at top level
-        let message = error_with(2, "");
+        let message = bad_line::error_with_line(GOOD, "t.toml", 2, "");
         assert!(
             message.contains("unknown field `w0`") || message.contains("unknown field `Q`"),
             "{message}"

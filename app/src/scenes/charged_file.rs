@@ -18,7 +18,8 @@
 //! ```
 
 use super::file::{Number, Source};
-use super::nbody_file::{column, Taken};
+use super::nbody_file::Taken;
+use super::particle_list::{particle_columns, read_particles, ParticleList};
 use super::{Built, Scene};
 use nalgebra::DVector;
 use serde::Deserialize;
@@ -46,6 +47,9 @@ pub struct ChargedParameters {
     /// A magnetic bottle: `bottle = { B0 = ..., L = ... }`.
     #[serde(default)]
     pub bottle: Option<Spanned<BottleTable>>,
+    /// A magnetic dipole at the origin along axis 3: `dipole = { M = ... }`.
+    #[serde(default)]
+    pub dipole: Option<Spanned<DipoleTable>>,
     /// A uniform electric field.
     #[serde(default, rename = "E")]
     pub e: Option<Spanned<Vec<Number>>>,
@@ -72,6 +76,23 @@ pub struct BottleTable {
     pub length: Number,
 }
 
+/// `dipole = { M = ... }`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct DipoleTable {
+    /// The moment (finite): `B = M (3 z q - |q|^2 e_z) / |q|^5`.
+    #[serde(rename = "M")]
+    pub moment: Number,
+}
+
+/// The magnetic-field keys of a `[parameters]` table, at most one of them given.
+pub(super) struct FieldKeys<'a> {
+    pub omega: &'a Option<Spanned<Vec<Number>>>,
+    pub b: &'a Option<Spanned<Vec<Number>>>,
+    pub bottle: &'a Option<Spanned<BottleTable>>,
+    pub dipole: &'a Option<Spanned<DipoleTable>>,
+}
+
 /// One `[[particles]]` entry.
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -92,10 +113,23 @@ pub struct ParticleEntry {
     pub position: Spanned<Vec<Number>>,
     /// Its velocity: 3 coordinates.
     pub velocity: Spanned<Vec<Number>>,
+    /// A sample of this many particles instead of one (`position` and `velocity` are the
+    /// centres of the boxes they are drawn in).
+    #[serde(default)]
+    pub count: Option<Spanned<u64>>,
+    /// The sample's seed (default 1).
+    #[serde(default)]
+    pub seed: Option<Spanned<u64>>,
+    /// Half-widths of the box of the sample's positions (default 0).
+    #[serde(default)]
+    pub position_spread: Option<Spanned<Vec<Number>>>,
+    /// Half-widths of the box of the sample's velocities (default 0).
+    #[serde(default)]
+    pub velocity_spread: Option<Spanned<Vec<Number>>>,
 }
 
 /// A 3-vector read from a file: exactly 3 finite numbers, named `field[i]` in errors.
-fn vector3(src: &Source<'_>, field: &str, v: &Spanned<Vec<Number>>) -> Result<[f64; 3], Error> {
+pub(super) fn vector3(src: &Source<'_>, field: &str, v: &Spanned<Vec<Number>>) -> Result<[f64; 3], Error> {
     let n = v.get_ref().len();
     if n != 3 {
         return Err(src.error_at(
@@ -110,12 +144,13 @@ fn vector3(src: &Source<'_>, field: &str, v: &Spanned<Vec<Number>>) -> Result<[f
     Ok(x)
 }
 
-/// The magnetic field of `[parameters]`: at most one of `omega`, `B`, `bottle`.
-fn magnetic_field(src: &Source<'_>, p: &ChargedParameters) -> Result<MagneticField<f64>, Error> {
+/// The magnetic field of `[parameters]`: at most one of `omega`, `B`, `bottle`, `dipole`.
+pub(super) fn magnetic_field(src: &Source<'_>, p: FieldKeys<'_>) -> Result<MagneticField<f64>, Error> {
     let given: Vec<(&str, core::ops::Range<usize>)> = [
         p.omega.as_ref().map(|v| ("omega", v.span())),
         p.b.as_ref().map(|v| ("B", v.span())),
         p.bottle.as_ref().map(|v| ("bottle", v.span())),
+        p.dipole.as_ref().map(|v| ("dipole", v.span())),
     ]
     .into_iter()
     .flatten()
@@ -140,13 +175,17 @@ fn magnetic_field(src: &Source<'_>, p: &ChargedParameters) -> Result<MagneticFie
             b0: src.finite("parameters.bottle.B0", &bottle.b0)?,
             length: src.positive("parameters.bottle.L", &bottle.length)?,
         }
+    } else if let Some(dipole) = &p.dipole {
+        MagneticField::Dipole {
+            moment: src.finite("parameters.dipole.M", &dipole.get_ref().moment)?,
+        }
     } else {
         MagneticField::None
     })
 }
 
 /// Mass and charge of particle `k`: `mass` (default 1) and one of `charge` and `ratio`.
-fn mass_and_charge(
+pub(super) fn mass_and_charge(
     src: &Source<'_>,
     k: usize,
     name: &str,
@@ -187,7 +226,15 @@ impl Scene for ChargedScene {
 
     fn build(parameters: Option<Self::Parameters>, particles: Self::Initial, src: &Source<'_>) -> Built<Self> {
         let parameters = parameters.unwrap_or_default();
-        let field = magnetic_field(src, &parameters)?;
+        let field = magnetic_field(
+            src,
+            FieldKeys {
+                omega: &parameters.omega,
+                b: &parameters.b,
+                bottle: &parameters.bottle,
+                dipole: &parameters.dipole,
+            },
+        )?;
         let electric = match &parameters.e {
             Some(e) => Some(vector3(src, "parameters.E", e)?),
             None => None,
@@ -204,27 +251,12 @@ impl Scene for ChargedScene {
             Some(k) => Some(src.positive("parameters.interaction", k)?),
             None => None,
         };
-        if particles.get_ref().is_empty() {
-            return Err(src.error_at(
-                particles.span(),
-                "the scene has no particles: give at least one [[particles]] entry",
-            ));
-        }
-        let (mut names, mut masses, mut charges) = (Vec::new(), Vec::new(), Vec::new());
-        let (mut positions, mut velocities) = (Vec::<f64>::new(), Vec::new());
-        let mut taken = Taken::default();
-        for (k, entry) in particles.get_ref().iter().enumerate() {
-            let p = entry.get_ref();
-            let name = match &p.name {
-                Some(n) => taken.name(src, "particles", k, n)?,
-                None => format!("p{k}"),
-            };
-            let (mass, charge) = mass_and_charge(src, k, &name, entry)?;
-            let q = vector3(src, &format!("particles[{k}].position ({name})"), &p.position)?;
-            let v = vector3(src, &format!("particles[{k}].velocity ({name})"), &p.velocity)?;
+        let mut positions = Taken::default();
+        let list = read_particles(src, &particles, |k, name, q, list| {
+            let span = || particles.get_ref()[k].get_ref().position.span();
             if centre.is_some() && q.iter().all(|&x| x == 0.0) {
                 return Err(src.error_at(
-                    p.position.span(),
+                    span(),
                     format!(
                         "particles[{k}].position ({name}) is the Coulomb centre (parameters.mu), where the force is \
                          infinite"
@@ -232,23 +264,26 @@ impl Scene for ChargedScene {
                 ));
             }
             if interaction.is_some() {
-                if let Some(other) = taken.position(&q, k) {
+                if let Some(other) = positions.position(q, list.masses.len()) {
                     return Err(src.error_at(
-                        p.position.span(),
+                        span(),
                         format!(
                             "particles[{k}].position ({name}) is the position of particles[{other}] ({}): with \
                              parameters.interaction the force between them would be infinite",
-                            names[other]
+                            list.names[other]
                         ),
                     ));
                 }
             }
-            positions.extend_from_slice(&q);
-            velocities.extend_from_slice(&v);
-            names.push(name);
-            masses.push(mass);
-            charges.push(charge);
-        }
+            Ok(())
+        })?;
+        let ParticleList {
+            names,
+            masses,
+            charges,
+            positions,
+            velocities,
+        } = list;
         let mut model = ChargedParticles::new(&masses, &charges)
             .and_then(|m| m.with_names(names))
             .map_err(|e| src.error(e.to_string()))?
@@ -275,22 +310,7 @@ impl Scene for ChargedScene {
     /// `<name>_x, <name>_y, <name>_z` for every particle, then `<name>_vx, ...`; a single
     /// particle has `x, y, z, vx, vy, vz`.
     fn components(&self, _y0: &DVector<f64>) -> Vec<String> {
-        let single = self.0.particles() == 1;
-        let prefix = |n: &String| {
-            if single {
-                String::new()
-            } else {
-                format!("{}_", column(n))
-            }
-        };
-        let names = self.0.names();
-        let q = names
-            .iter()
-            .flat_map(|n| ["x", "y", "z"].map(|a| format!("{}{a}", prefix(n))));
-        let v = names
-            .iter()
-            .flat_map(|n| ["vx", "vy", "vz"].map(|a| format!("{}{a}", prefix(n))));
-        q.chain(v).collect()
+        particle_columns(self.0.names(), "v")
     }
 
     /// Known for independent particles in uniform fields ([`ChargedParticles::exact_state`]).
@@ -302,10 +322,9 @@ impl Scene for ChargedScene {
 #[cfg(test)]
 #[allow(clippy::float_cmp)] // values read from a file are compared exactly
 mod tests {
-    use crate::scenes::{parse, AnyScene, Scene};
+    use crate::scenes::{bad_line, parse, AnyScene, Scene};
     use stormer::magnetic::Lorentz;
     use stormer::models::MagneticField;
-    use stormer::Error;
 
     const GOOD: &str = "model = \"charged-particles\"\n\
                         [parameters]\n\
@@ -328,18 +347,6 @@ mod tests {
                         method = \"boris\"\n\
                         dt = 0.01\n\
                         t_end = 1.0\n";
-
-    /// The error message for `GOOD` with line `line` (1-based) replaced.
-    fn error_with(line: usize, text: &str) -> String {
-        let mut lines: Vec<&str> = GOOD.lines().collect();
-        lines[line - 1] = text;
-        let err = parse(&lines.join("\n"), "ions.toml", "ions").unwrap_err();
-        assert!(matches!(err, Error::Scene { .. }), "{err:?}");
-        let message = err.to_string();
-        assert!(message.starts_with("scene ions.toml: "), "{message}");
-        assert!(!message.contains('\n'), "one line: {message}");
-        message
-    }
 
     #[test]
     fn the_good_file_parses() {
@@ -444,10 +451,7 @@ mod tests {
                 "line 14: particles[1].name \"a\" is already the name of particles[0]",
             ),
         ];
-        for (line, text, expected) in cases {
-            let message = error_with(line, text);
-            assert!(message.contains(expected), "{text}: {message}");
-        }
+        bad_line::assert_bad_lines(GOOD, "ions.toml", &cases);
         // a particle at the Coulomb centre
         let text = GOOD
             .replace("interaction = 1.0", "mu = 1.0")

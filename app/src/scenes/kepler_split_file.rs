@@ -4,15 +4,18 @@
 //!
 //! The stepper runs in the split's coordinates; the records (CSV, energy, sections) are
 //! in the scene's ([`Scene::scene_state`]), so a run with and without the split writes
-//! the same columns.
+//! the same columns. With a symplectic corrector (`--corrector K`, [`CorrectedBodies`])
+//! the stepper runs in the corrector's mapping coordinates, and every record is the
+//! corrected state, in the scene's coordinates.
 
 use super::file::Source;
 use super::nbody_file::{BodyEntry, GravityParameters};
 use super::{AnyScene, Built, Scene, Setup};
 use nalgebra::DVector;
 use std::borrow::Cow;
+use stormer::corrector::{Corrected, CorrectorData};
 use stormer::models::{KeplerCoordinates, KeplerSplit, NBody};
-use stormer::Error;
+use stormer::{Error, Method};
 use toml::Spanned;
 
 /// The bodies of an n-body scene file, split.
@@ -43,7 +46,87 @@ impl Scene for SplitBodies {
     }
 }
 
+/// The bodies of an n-body scene file, split, run by the Wisdom-Holman kernel in the
+/// mapping coordinates of a symplectic corrector ([`AnyScene::with_corrector`]).
+pub type CorrectedBodies = Corrected<SplitBodies>;
+
+impl Scene for CorrectedBodies {
+    const MODEL: &'static str = "n-body";
+    const INITIAL: &'static str = "list of [[bodies]]";
+    type Parameters = GravityParameters;
+    type Initial = Spanned<Vec<BodyEntry>>;
+
+    /// The file's bodies in Jacobi coordinates, uncorrected ([`AnyScene::with_corrector`]
+    /// adds the corrector, which needs the run's step).
+    fn build(parameters: Option<Self::Parameters>, bodies: Self::Initial, src: &Source<'_>) -> Built<Self> {
+        let (split, y0) = SplitBodies::build(parameters, bodies, src)?;
+        Ok((Corrected::uncorrected(split), y0))
+    }
+
+    fn components(&self, y0: &DVector<f64>) -> Vec<String> {
+        self.problem().components(y0)
+    }
+
+    /// The corrected state, in the scene's coordinates (the split's problem is autonomous:
+    /// the corrector does not depend on the time it is applied at).
+    fn scene_state<'a>(&self, y: &'a DVector<f64>) -> Cow<'a, DVector<f64>> {
+        Cow::Owned(self.problem().to_scene(&self.from_mapping(0.0, y)))
+    }
+}
+
 impl AnyScene {
+    /// The scene, split in Jacobi coordinates, run by `method` at steps of `dt` with the
+    /// symplectic corrector of order `order` (REBOUND WHFast's: 3, 5, 7, 11, 17): the
+    /// initial state is mapped into the corrector's mapping coordinates, and every record
+    /// out of them. Errors, each naming what to change: a scene not split, or split in
+    /// democratic heliocentric coordinates (the drift there is not an exact flow; REBOUND
+    /// refuses them too), an order there is not, a method other than the Wisdom-Holman
+    /// kernel (drift-kick-drift or kick-drift-kick).
+    ///
+    /// ```
+    /// use stormer::models::KeplerCoordinates;
+    /// use stormer::Method;
+    /// let scene = stormer_app::scenes::load("outer-solar-system").unwrap();
+    /// let split = scene.with_split(KeplerCoordinates::Jacobi).unwrap();
+    /// let wisdom_holman = Method::named("wisdom_holman").unwrap();
+    /// assert!(split.clone().with_corrector(11, &wisdom_holman, 10.0).is_ok());
+    /// let saba4 = Method::named("saba4").unwrap();
+    /// assert!(split.with_corrector(11, &saba4, 10.0).unwrap_err().to_string().contains("wisdom_holman"));
+    /// ```
+    pub fn with_corrector(self, order: usize, method: &Method, dt: f64) -> Result<AnyScene, Error> {
+        let data = CorrectorData::of_order(order)?;
+        let setup = match self {
+            AnyScene::KeplerSplit(setup) if setup.model.coordinates() == KeplerCoordinates::Jacobi => setup,
+            AnyScene::KeplerSplit(setup) => {
+                let reason = format!(
+                    "symplectic correctors need the split in Jacobi coordinates (--split kepler-jacobi), and this \
+                     run is split in {}: there the drift is not an exact flow",
+                    setup.model.coordinates().name()
+                );
+                return Err(scene_error(&setup.name, &setup.origin, reason));
+            }
+            other => {
+                let reason = format!(
+                    "a symplectic corrector corrects the Wisdom-Holman split, and this run is not split (model {}): \
+                     add --split kepler-jacobi",
+                    other.model()
+                );
+                return Err(scene_error(other.name(), other.origin(), reason));
+            }
+        };
+        let model = Corrected::new(setup.model, data, method, dt)?;
+        let y0 = model.to_mapping(setup.run.t0, &setup.y0);
+        Ok(AnyScene::CorrectedSplit(Setup {
+            name: setup.name,
+            origin: setup.origin,
+            description: setup.description,
+            model,
+            y0,
+            run: setup.run,
+            units: setup.units,
+        }))
+    }
+
     /// The scene run in the Wisdom-Holman split `coordinates`: an n-body scene (split
     /// already or not) with one dominant body; any other scene is an error naming it.
     ///

@@ -42,6 +42,8 @@
 //! ```
 
 mod arenstorf;
+#[cfg(test)]
+mod bad_line;
 mod builtin;
 mod central_force_file;
 mod charged_file;
@@ -52,20 +54,23 @@ mod harmonic;
 mod henon_heiles;
 mod kepler_split_file;
 mod nbody_file;
+mod particle_list;
 mod pendulum;
+mod relativistic_file;
 
 pub use arenstorf::{RestrictedThreeBody, ThreeBodyInitial, ThreeBodyParameters};
 pub use builtin::{builtin, load, parse, source, BuiltinScene, SceneSource, BUILTIN};
 pub use central_force_file::{CentralForceInitial, CentralForceParameters};
-pub use charged_file::{BottleTable, ChargedParameters, ChargedScene, ParticleEntry};
+pub use charged_file::{BottleTable, ChargedParameters, ChargedScene, DipoleTable, ParticleEntry};
 pub use damped::{DampedOscillator, DampedParameters};
 pub use file::{Number, RunSettings, Source, Units};
 pub use free_kick::{KickInitial, SpinningBall, SpinningBallParameters};
 pub use harmonic::{Harmonic, HarmonicParameters, OscillatorInitial};
 pub use henon_heiles::{HenonHeiles, HenonHeilesInitial, HenonHeilesParameters, DEFAULT_ENERGY};
-pub use kepler_split_file::SplitBodies;
+pub use kepler_split_file::{CorrectedBodies, SplitBodies};
 pub use nbody_file::{BodyEntry, GravityParameters};
 pub use pendulum::{NoParameters, Pendulum, PendulumInitial, PENDULUM_PERIOD_45_DEGREES};
+pub use relativistic_file::{RelativisticParameters, RelativisticScene};
 
 use nalgebra::DVector;
 use serde::de::DeserializeOwned;
@@ -210,6 +215,8 @@ pub enum AnyScene {
     NBody(Setup<NBody<f64, DVector<f64>>>),
     /// `model = "charged-particles"`: charged particles in electric and magnetic fields.
     ChargedParticles(Setup<ChargedScene>),
+    /// `model = "relativistic-particles"`: charged particles at speeds close to light.
+    RelativisticParticles(Setup<RelativisticScene>),
     /// `model = "restricted-3-body"`: the rotating frame's Coriolis force as a uniform
     /// field (the `arenstorf` scene).
     RestrictedThreeBody(Setup<Charged<RestrictedThreeBody>>),
@@ -220,6 +227,9 @@ pub enum AnyScene {
     /// `model = "n-body"` run in the Wisdom-Holman split (`split` in `[run]`, or
     /// [`AnyScene::with_split`]).
     KeplerSplit(Setup<SplitBodies>),
+    /// `model = "n-body"` run in the Wisdom-Holman split with a symplectic corrector
+    /// ([`AnyScene::with_corrector`]).
+    CorrectedSplit(Setup<CorrectedBodies>),
 }
 
 /// The model names a scene file can give, in the order of [`AnyScene`].
@@ -230,6 +240,7 @@ pub const MODELS: &[&str] = &[
     CentralForce::<f64, DVector<f64>>::MODEL,
     NBody::<f64, DVector<f64>>::MODEL,
     ChargedScene::MODEL,
+    RelativisticScene::MODEL,
     Charged::<RestrictedThreeBody>::MODEL,
     SpinningBall::MODEL,
     HenonHeiles::MODEL,
@@ -245,10 +256,12 @@ macro_rules! each {
             AnyScene::CentralForce($s) => $body,
             AnyScene::NBody($s) => $body,
             AnyScene::ChargedParticles($s) => $body,
+            AnyScene::RelativisticParticles($s) => $body,
             AnyScene::RestrictedThreeBody($s) => $body,
             AnyScene::SpinningBall($s) => $body,
             AnyScene::HenonHeiles($s) => $body,
             AnyScene::KeplerSplit($s) => $body,
+            AnyScene::CorrectedSplit($s) => $body,
         }
     };
 }

@@ -1,5 +1,7 @@
 //! The N-body scene file: `G` in `[parameters]` and one `[[bodies]]` entry per body
-//! (name, mass, position, velocity), any number of bodies, every value checked.
+//! (name, mass, position, velocity), any number of bodies, every value checked. An optional
+//! `active = M` in `[parameters]` makes the bodies after the first `M` test particles: they
+//! feel the first `M` and pull none (REBOUND's `N_active`), at `O(N M)` cost.
 //!
 //! ```toml
 //! model = "n-body"
@@ -32,6 +34,9 @@ pub struct GravityParameters {
     /// The gravitational constant in the file's units (`> 0`).
     #[serde(rename = "G")]
     pub g: Number,
+    /// How many bodies pull, the first ones in the file (default: all); the others are test
+    /// particles.
+    pub active: Option<Spanned<u64>>,
 }
 
 /// One `[[bodies]]` entry.
@@ -159,9 +164,25 @@ impl Scene for NBody<f64, DVector<f64>> {
             names.push(name);
         }
         let dim = dim.unwrap_or(1);
-        let model = NBody::new(g, &masses, dim)
+        let mut model = NBody::new(g, &masses, dim)
             .and_then(|m| m.with_names(names))
             .map_err(|e| src.error(e.to_string()))?;
+        if let Some(active) = &parameters.active {
+            let m = usize::try_from(*active.get_ref())
+                .ok()
+                .filter(|&m| m <= count)
+                .ok_or_else(|| {
+                    src.error_at(
+                        active.span(),
+                        format!(
+                            "parameters.active is the number of bodies that pull (the first ones): at most the \
+                         {count} bodies, got {}",
+                            active.get_ref()
+                        ),
+                    )
+                })?;
+            model = model.with_active(m).map_err(|e| src.error(e.to_string()))?;
+        }
         let mut y0 = DVector::zeros(2 * positions.len());
         model
             .set_state(&positions, &velocities, &mut y0)
@@ -192,8 +213,7 @@ impl Scene for NBody<f64, DVector<f64>> {
 #[cfg(test)]
 #[allow(clippy::float_cmp)] // values read from a file are compared exactly
 mod tests {
-    use crate::scenes::{load, parse, AnyScene, Scene};
-    use stormer::Error;
+    use crate::scenes::{bad_line, load, parse, AnyScene, Scene};
 
     const GOOD: &str = "model = \"n-body\"\n\
                         [parameters]\n\
@@ -212,18 +232,6 @@ mod tests {
                         method = \"rk4\"\n\
                         dt = 0.01\n\
                         t_end = 1.0\n";
-
-    /// The error message for `GOOD` with line `line` (1-based) replaced.
-    fn error_with(line: usize, text: &str) -> String {
-        let mut lines: Vec<&str> = GOOD.lines().collect();
-        lines[line - 1] = text;
-        let err = parse(&lines.join("\n"), "bodies.toml", "bodies").unwrap_err();
-        assert!(matches!(err, Error::Scene { .. }), "{err:?}");
-        let message = err.to_string();
-        assert!(message.starts_with("scene bodies.toml: "), "{message}");
-        assert!(!message.contains('\n'), "one line: {message}");
-        message
-    }
 
     #[test]
     fn the_good_file_parses() {
@@ -297,10 +305,7 @@ mod tests {
                 "line 12, column 12: invalid type: string \"here\"",
             ),
         ];
-        for (line, text, expected) in cases {
-            let message = error_with(line, text);
-            assert!(message.contains(expected), "{text}: {message}");
-        }
+        bad_line::assert_bad_lines(GOOD, "bodies.toml", &cases);
     }
 
     #[test]
@@ -316,6 +321,28 @@ mod tests {
         let without_g = GOOD.replace("[parameters]\nG = 1.0\n", "");
         let message = parse(&without_g, "e.toml", "e").unwrap_err().to_string();
         assert!(message.contains("missing table [parameters] (with G)"), "{message}");
+    }
+
+    #[test]
+    fn active_makes_the_later_bodies_test_particles() {
+        let with = |line: &str| GOOD.replace("G = 1.0\n", &format!("G = 1.0\n{line}\n"));
+        let AnyScene::NBody(s) = parse(&with("active = 1"), "bodies.toml", "bodies").unwrap() else {
+            panic!("model")
+        };
+        assert_eq!((s.model.active(), s.model.bodies()), (1, 2));
+        let AnyScene::NBody(s) = parse(GOOD, "bodies.toml", "bodies").unwrap() else {
+            panic!("model")
+        };
+        assert_eq!(s.model.active(), 2, "all pull by default");
+        for (line, needle) in [
+            ("active = 3", "line 4: parameters.active is the number of bodies that pull (the first ones): at most the 2 bodies, got 3"),
+            ("active = -1", "line 4"),
+            ("active = 1.5", "line 4"),
+        ] {
+            let message = parse(&with(line), "bodies.toml", "bodies").unwrap_err().to_string();
+            assert!(message.contains(needle), "{line}: {message}");
+            assert!(!message.contains('\n'), "one line: {message}");
+        }
     }
 
     /// A scene of `n` bodies on a grid, 92 bytes each.

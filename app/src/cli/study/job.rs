@@ -9,14 +9,14 @@ use serde::{Deserialize, Serialize};
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 use stormer::{Error, Method, Tolerances};
-use stormer_app::scenes::{self, AnyScene, Scene, SceneVisitor, Setup};
+use stormer_app::scenes::{self, AnyScene, Scene, SceneVisitor, Setup, Units};
 
 /// A scene's file text, parsed again by each job (each worker thread has its own model).
 #[derive(Debug, Clone)]
 pub struct SceneText {
-    text: String,
-    origin: String,
-    name: String,
+    pub(super) text: String,
+    pub(super) origin: String,
+    pub(super) name: String,
 }
 
 impl SceneText {
@@ -33,28 +33,32 @@ impl SceneText {
         Ok(text)
     }
 
-    fn parse(&self) -> Result<AnyScene, Error> {
+    pub(super) fn parse(&self) -> Result<AnyScene, Error> {
         scenes::parse(&self.text, &self.origin, &self.name)
     }
 
-    fn hash(&self) -> String {
+    pub(super) fn hash(&self) -> String {
         format!("{:016x}", fnv1a(self.text.as_bytes()))
     }
 }
 
 /// A study before its work list: the scene and the methods, checked against each other.
 pub struct Plan {
-    scene: String,
-    scene_hash: String,
+    pub(super) scene: String,
+    pub(super) scene_hash: String,
     t0: f64,
-    t_end: f64,
+    pub(super) t_end: f64,
     /// The methods as resolved on the scene.
     pub methods: Vec<MethodEntry>,
     /// The same methods, resolved once for the whole study.
-    resolved: Vec<Method>,
+    pub(super) resolved: Vec<Method>,
     truth: &'static str,
-    energy: bool,
-    stop: Option<&'static str>,
+    pub(super) energy: bool,
+    pub(super) stop: Option<&'static str>,
+    /// The names of the state's components (an ensemble's columns).
+    pub(super) components: Vec<String>,
+    /// The units the scene file names (an ensemble's picture).
+    pub(super) units: Units,
 }
 
 impl Plan {
@@ -133,6 +137,8 @@ impl SceneVisitor for Planner<'_> {
                 "reference"
             },
             energy: setup.initial_energy().is_some(),
+            components: setup.model.components(&setup.y0),
+            units: setup.units.clone(),
         })
     }
 }

@@ -6,11 +6,16 @@
 //! only the jobs `j` with `j % N == I - 1` and writes a [`Part`] (JSON) that `merge` joins
 //! with the other parts into the same table and diagrams as one run.
 
+mod ensemble;
+mod ensemble_part;
+mod ensemble_report;
 mod job;
 mod part_check;
 #[cfg(test)]
 mod part_mutations;
 mod report;
+mod scene_numbers;
+mod vary;
 
 use super::output::file_safe;
 use anyhow::{anyhow, bail, Context};
@@ -20,6 +25,7 @@ use std::io::Write as _;
 use std::path::{Path, PathBuf};
 use stormer::{Error, Method};
 
+pub use ensemble::{ensemble, EnsembleArgs};
 pub use job::SceneText;
 
 /// The version of the partial-table format written by `--shard` and read by `merge`.
@@ -444,11 +450,19 @@ fn write_json<T: Serialize>(path: &Path, value: &T) -> anyhow::Result<()> {
     std::fs::write(path, text + "\n").with_context(|| format!("cannot write {}", path.display()))
 }
 
-/// `stormer merge`.
+/// `stormer merge`: the parts of a study (`compare`, `scan`) or of an ensemble, told
+/// apart by the format the first one names.
 pub fn merge(args: &MergeArgs) -> anyhow::Result<()> {
-    let mut parts = Vec::new();
+    let mut texts = Vec::new();
     for path in &args.parts {
-        parts.push((path, read_part(path)?));
+        texts.push((path, read_text(path)?));
+    }
+    if texts.first().is_some_and(|(_, text)| ensemble::is_part(text)) {
+        return ensemble::merge(&texts, &args.out);
+    }
+    let mut parts = Vec::new();
+    for (path, text) in &texts {
+        parts.push((*path, parse_part(text, &path.display().to_string())?));
     }
     let merged = join(parts)?;
     let inputs: Vec<&Path> = args.parts.iter().map(PathBuf::as_path).collect();
@@ -458,11 +472,10 @@ pub fn merge(args: &MergeArgs) -> anyhow::Result<()> {
     report::write(&merged, &args.out)
 }
 
-/// The partial table at `path`, read through the input bound and checked field by field
-/// ([`part_check::check`]); every error names the file.
-fn read_part(path: &Path) -> anyhow::Result<Part> {
-    let text = stormer::input::read_text(path).map_err(|reason| anyhow!("{}: {reason}", path.display()))?;
-    parse_part(&text, &path.display().to_string())
+/// The text of the partial table at `path`, read through the input bound; the error names
+/// the file.
+fn read_text(path: &Path) -> anyhow::Result<String> {
+    stormer::input::read_text(path).map_err(|reason| anyhow!("{}: {reason}", path.display()))
 }
 
 /// A partial table from its JSON text, checked; errors name `file`.
@@ -476,29 +489,81 @@ fn parse_part(text: &str, file: &str) -> anyhow::Result<Part> {
     Ok(part)
 }
 
-/// Joins the parts of one study, checking that they belong together and that none is
-/// missing or given twice.
-fn join(parts: Vec<(&PathBuf, Part)>) -> anyhow::Result<Part> {
+/// A partial table of a work list run with `--shard`: what `merge` needs to know that a
+/// set of parts is one whole (a study's [`Part`], an ensemble's part).
+pub(super) trait Sharded {
+    /// What the rows are of (`jobs`, `members`).
+    const ITEMS: &'static str;
+    /// `(I, N)`: the I-th of N parts.
+    fn shard(&self) -> (usize, usize);
+    /// The size of the whole work list.
+    fn size(&self) -> usize;
+    /// A row of the table: one job or member's results.
+    type Row: Clone;
+    /// This part's rows.
+    fn rows(&self) -> &[Self::Row];
+    /// A row's index in the work list.
+    fn index(row: &Self::Row) -> usize;
+    /// This part's description with `rows` as its rows: the whole table, shard 1 of 1.
+    fn into_whole(self, rows: Vec<Self::Row>) -> Self;
+    /// The indices in the work list of this part's rows, in order.
+    fn indices(&self) -> Vec<usize> {
+        self.rows().iter().map(Self::index).collect()
+    }
+    /// The first field that makes `self` and `other` parts of different work lists.
+    fn differing_field(&self, other: &Self) -> Option<&'static str>;
+}
+
+impl Sharded for Part {
+    const ITEMS: &'static str = "jobs";
+    fn shard(&self) -> (usize, usize) {
+        self.shard
+    }
+    fn size(&self) -> usize {
+        self.study.jobs.len()
+    }
+    type Row = Row;
+    fn rows(&self) -> &[Row] {
+        &self.rows
+    }
+    fn index(row: &Row) -> usize {
+        row.job
+    }
+    fn into_whole(self, rows: Vec<Row>) -> Self {
+        Part {
+            rows,
+            shard: (1, 1),
+            ..self
+        }
+    }
+    fn differing_field(&self, other: &Self) -> Option<&'static str> {
+        part_check::differing_field(&self.study, &other.study)
+    }
+}
+
+/// Checks that `parts` belong to one work list and hold it whole: none missing or given
+/// twice, each with the rows of its shard.
+pub(super) fn check_parts<P: Sharded>(parts: &[(&PathBuf, P)]) -> anyhow::Result<()> {
     let (first_path, first) = parts.first().context("no partial tables given")?;
-    let n = first.shard.1;
+    let n = first.shard().1;
     let mut seen = std::collections::BTreeMap::<usize, &Path>::new();
-    for (path, part) in &parts {
-        if let Some(field) = part_check::differing_field(&first.study, &part.study) {
+    for (path, part) in parts {
+        if let Some(field) = first.differing_field(part) {
             bail!(
                 "{} and {} are parts of different studies: their {field} differ",
                 first_path.display(),
                 path.display()
             );
         }
-        if part.shard.1 != n {
+        if part.shard().1 != n {
             bail!(
                 "{} is a part of {} shards, {} of {n}",
                 path.display(),
-                part.shard.1,
+                part.shard().1,
                 first_path.display()
             );
         }
-        let i = part.shard.0;
+        let i = part.shard().0;
         if let Some(other) = seen.insert(i, path) {
             bail!(
                 "shard {i}/{n} is given twice: {} and {}",
@@ -506,12 +571,13 @@ fn join(parts: Vec<(&PathBuf, Part)>) -> anyhow::Result<Part> {
                 path.display()
             );
         }
-        let expected = shard_jobs(part.study.jobs.len(), part.shard);
-        let got: Vec<usize> = part.rows.iter().map(|r| r.job).collect();
+        let expected = shard_jobs(part.size(), part.shard());
+        let got = part.indices();
         if got != expected {
             bail!(
-                "{}: rows: their jobs {} are not those of shard {i}/{n} of the study ({})",
+                "{}: rows: their {} {} are not those of shard {i}/{n} of the study ({})",
                 path.display(),
+                P::ITEMS,
                 list_of(&got),
                 list_of(&expected)
             );
@@ -531,16 +597,21 @@ fn join(parts: Vec<(&PathBuf, Part)>) -> anyhow::Result<Part> {
             first_path.display()
         );
     }
-    let mut rows: Vec<Row> = parts.iter().flat_map(|(_, p)| p.rows.iter().cloned()).collect();
-    rows.sort_by_key(|r| r.job);
-    let mut whole = parts
+    Ok(())
+}
+
+/// Joins the parts of one work list (a study's, an ensemble's), checking that they belong
+/// together and that none is missing or given twice.
+pub(super) fn join<P: Sharded>(parts: Vec<(&PathBuf, P)>) -> anyhow::Result<P> {
+    check_parts(&parts)?;
+    let mut rows: Vec<P::Row> = parts.iter().flat_map(|(_, p)| p.rows().iter().cloned()).collect();
+    rows.sort_by_key(P::index);
+    let first = parts
         .into_iter()
         .next()
         .map(|(_, p)| p)
         .context("no partial tables given")?;
-    whole.rows = rows;
-    whole.shard = (1, 1);
-    Ok(whole)
+    Ok(first.into_whole(rows))
 }
 
 /// `[0, 3, 6]`, shortened after 8 entries.
