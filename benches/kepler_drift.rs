@@ -21,7 +21,7 @@ use std::hint::black_box;
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use stormer::catalog::{StormerVerletDkd, VelocityVerletKdk};
-use stormer::kepler::KeplerDrift;
+use stormer::kepler::{KeplerDrift, KeplerLanes, LagrangeCoefficients, LANES};
 use stormer::models::{KeplerCoordinates, KeplerSplit, NBody};
 use stormer::{SplittingStepper, Stepper};
 
@@ -53,6 +53,38 @@ fn bench(c: &mut Criterion) {
             kepler.apply(black_box(tau), &mut q, &mut v);
             tau = -tau;
         })
+    });
+    group.finish();
+}
+
+/// The three Kepler problems of one Wisdom-Holman drift of the outer solar system (dt = 10
+/// days), one by one and together in lanes.
+fn planets(c: &mut Criterion) {
+    let g = 2.95912208286e-4;
+    let mu = [g * 1.000955, g * 1.00124, g * 1.00129, g];
+    let q = [
+        [-3.5023653, -3.8169847, -1.5507963],
+        [9.0755314, -3.0458353, -1.6483708],
+        [8.3101420, -16.2901086, -7.2521278],
+        [0.0; 3],
+    ];
+    let v = [
+        [0.00565429, -0.00412490, -0.00190589],
+        [0.00168318, 0.00483525, 0.00192462],
+        [0.00354178, 0.00137102, 0.00055029],
+        [0.0; 3],
+    ];
+    let mut group = c.benchmark_group("outer_planets_kepler");
+    group.bench_function("one_by_one", |b| {
+        b.iter(|| {
+            let (q, v) = (black_box(&q), black_box(&v));
+            core::array::from_fn::<_, 3, _>(|k| LagrangeCoefficients::new(mu[k], 10.0, &q[k], &v[k]))
+        })
+    });
+    let lanes = KeplerLanes { mu, mass: [1.0; LANES] };
+    let (q_lanes, v_lanes) = ([0, 1, 2].map(|c| q.map(|q| q[c])), [0, 1, 2].map(|c| v.map(|v| v[c])));
+    group.bench_function("lanes", |b| {
+        b.iter(|| lanes.solve(10.0, black_box(&q_lanes), black_box(&v_lanes), 3))
     });
     group.finish();
 }
@@ -133,5 +165,5 @@ fn wisdom_holman(c: &mut Criterion) {
     assert!(z.iter().chain(&w).chain(&x).all(|x| x.is_finite()));
 }
 
-criterion_group!(benches, bench, wisdom_holman);
+criterion_group!(benches, bench, planets, wisdom_holman);
 criterion_main!(benches);

@@ -4,15 +4,23 @@
 //! fixed-step driver's path). Prints one JSON object on stdout.
 //!
 //! ```sh
-//! cargo run --release --example outer_solar_front -- time [--span DAYS] [--dt DAYS] [--reps N]
-//! cargo run --release --example outer_solar_front -- front [--span DAYS] [--dts LIST] [--cadence DAYS]
+//! cargo run --release --example outer_solar_front -- time [--span DAYS] [--dt DAYS] [--reps N] [--methods LIST]
+//! cargo run --release --example outer_solar_front -- front [--span DAYS] [--dts LIST] [--cadence DAYS] [--methods LIST]
+//!     [--kepler-dts LIST]
 //! cargo run --release --example outer_solar_front -- plot FRONT.json OUT.svg
 //! ```
+//!
+//! Our methods: splittings and compositions over the N-body problem's `T + V` split, and
+//! (`kepler/...`) over the Kepler split in Jacobi coordinates (`KeplerSplit`: the drift every
+//! planet's exact Kepler motion, the kick the planets' mutual pull; `kepler/wisdom_holman` is
+//! Wisdom-Holman, drift-kick-drift as REBOUND's WHFast, uncorrected). `--methods a,b,...`
+//! picks some (default: all).
 //!
 //! - `time`: ns per step of each method at one `dt` (default 10 days) over `span` (default
 //!   360000 days), best of `reps` runs (default 3). One call is one round: the script calls
 //!   it between REBOUND's rounds so that the two are interleaved.
-//! - `front`: for each method and each `dt` (default 100, 50, 20, 10, 5, 2, 1 days): max
+//! - `front`: for each method and each `dt` (default 100, 50, 20, 10, 5, 2, 1 days; the
+//!   `kepler/` methods also at the steps of `--kepler-dts`, which may exceed the cadence): max
 //!   |dE/E| sampled every `cadence` days (default 100), the positions at `span` and their
 //!   error against a reference run of ours (Kahan-Li 8 at dt = 10 days; the script measures
 //!   every run, ours and REBOUND's, against REBOUND's IAS15 instead, which has the smaller
@@ -26,13 +34,15 @@ use std::hint::black_box;
 use std::time::Instant;
 
 use stormer::catalog::{
-    BlanesMoanSrkn11b, BlanesMoanSrkn6b, Dop853, KahanLi6, KahanLi8, TripleJump4, VelocityVerletKdk, Verner9,
+    Aba1064, Aba864, Abah864, BlanesMoanSrkn11b, BlanesMoanSrkn6b, Dop853, KahanLi6, KahanLi8, Saba4, Sbab4,
+    StormerVerletDkd, TripleJump4, VelocityVerletKdk, Verner9,
 };
 use stormer::driver::Recorder;
-use stormer::models::NBody;
+use stormer::models::{KeplerCoordinates, KeplerSplit, NBody};
 use stormer::{Driver, ExplicitMethod, ExplicitRk, Problem, SplittingMethod, SplittingStepper, Stepper, Tolerances};
 
 type Nb = NBody<f64, [f64; 24]>;
+type Split = KeplerSplit<f64, [f64; 24]>;
 
 /// SCENES.md 4, as REBOUND gets them too.
 const G: f64 = 2.95912208286e-4;
@@ -122,6 +132,57 @@ where
     (y, worst)
 }
 
+/// The same over the Kepler split in Jacobi coordinates (`KeplerSplit`, the drift every
+/// planet's exact Kepler motion): the state changed to Jacobi coordinates before the loop
+/// and back after it.
+fn run_kepler<M: SplittingMethod>(nb: &Nb, y0: &[f64; 24], h: f64, steps: usize) -> [f64; 24]
+where
+    SplittingStepper<M, [f64; 24]>: Stepper<Split>,
+{
+    let split = Split::new(nb.clone(), KeplerCoordinates::Jacobi).expect("one dominant body");
+    let mut y = split.from_scene(y0);
+    let mut st = SplittingStepper::<M, [f64; 24]>::new(&y).expect("a splitting stepper");
+    assert!(Stepper::<Split>::steps_in_place(&st));
+    for i in 0..steps {
+        let r = st.step_in_place(&split, i as f64 * h, h, &mut y);
+        debug_assert!(r.is_ok());
+    }
+    split.to_scene(&y)
+}
+
+/// [`run_kepler`] with max |dE/E| (the N-body energy) sampled every `every` steps.
+fn sampled_kepler<M: SplittingMethod>(nb: &Nb, y0: &[f64; 24], h: f64, steps: usize, every: usize) -> ([f64; 24], f64)
+where
+    SplittingStepper<M, [f64; 24]>: Stepper<Split>,
+{
+    let split = Split::new(nb.clone(), KeplerCoordinates::Jacobi).expect("one dominant body");
+    let mut y = split.from_scene(y0);
+    let mut st = SplittingStepper::<M, [f64; 24]>::new(&y).expect("a splitting stepper");
+    let e0 = nb.energy(0.0, y0).expect("an energy");
+    let mut worst: f64 = 0.0;
+    for i in 0..steps {
+        st.step_in_place(&split, i as f64 * h, h, &mut y)
+            .expect("a finite step");
+        if (i + 1) % every == 0 || i + 1 == steps {
+            let e = split.energy((i + 1) as f64 * h, &y).expect("an energy");
+            worst = worst.max(((e - e0) / e0).abs());
+        }
+    }
+    (split.to_scene(&y), worst)
+}
+
+macro_rules! kepler_method {
+    ($ty:ty, $name:literal, $order:literal, $evals:literal) => {
+        Method {
+            name: $name,
+            order: $order,
+            evals: $evals,
+            run: run_kepler::<$ty>,
+            sampled: sampled_kepler::<$ty>,
+        }
+    };
+}
+
 macro_rules! method {
     ($ty:ty, $name:literal, $order:literal, $evals:literal) => {
         Method {
@@ -142,7 +203,30 @@ fn methods() -> Vec<Method> {
         method!(KahanLi6, "kahan_li6", 6, 9),
         method!(BlanesMoanSrkn11b, "blanes_moan_srkn11b", 6, 11),
         method!(KahanLi8, "kahan_li8", 8, 17),
+        // over the Kepler split: `order` is the order in h, `evals` the kicks per step
+        kepler_method!(StormerVerletDkd, "kepler/wisdom_holman", 2, 1),
+        kepler_method!(VelocityVerletKdk, "kepler/velocity_verlet_kdk", 2, 1),
+        kepler_method!(Sbab4, "kepler/sbab4", 2, 4),
+        kepler_method!(Saba4, "kepler/saba4", 2, 4),
+        kepler_method!(Abah864, "kepler/abah864", 4, 7),
+        kepler_method!(Aba864, "kepler/aba864", 4, 7),
+        kepler_method!(Aba1064, "kepler/aba1064", 4, 9),
     ]
+}
+
+/// The methods named in `--methods a,b,...` (all when absent).
+fn selected(args: &[String]) -> Vec<Method> {
+    let all = methods();
+    match arg(args, "--methods") {
+        None => all,
+        Some(list) => {
+            let names: Vec<&str> = list.split(',').map(str::trim).collect();
+            for name in &names {
+                assert!(all.iter().any(|m| m.name == *name), "unknown method {name}");
+            }
+            all.into_iter().filter(|m| names.contains(&m.name)).collect()
+        }
+    }
 }
 
 /// Keeps the last state and the largest |dE/E| of the records.
@@ -234,7 +318,7 @@ fn time(args: &[String]) {
     let h = num(args, "--dt", 10.0);
     let reps = num(args, "--reps", 3.0) as usize;
     let steps = steps_for(span, h);
-    let rows: Vec<String> = methods()
+    let rows: Vec<String> = selected(args)
         .iter()
         .map(|m| {
             let secs = best_of(reps, || (m.run)(&nb, black_box(&y0), black_box(h), steps));
@@ -257,13 +341,21 @@ fn front(args: &[String]) {
     let (nb, y0) = problem();
     let span = num(args, "--span", 360000.0);
     let cadence = num(args, "--cadence", 100.0);
+    let kepler_dts: Vec<f64> = arg(args, "--kepler-dts")
+        .map(|list| {
+            list.split(',')
+                .map(|s| s.trim().parse().expect("a list of step sizes"))
+                .collect()
+        })
+        .unwrap_or_default();
     let dts: Vec<f64> = arg(args, "--dts")
         .unwrap_or_else(|| "100,50,20,10,5,2,1".into())
         .split(',')
         .map(|s| s.trim().parse().expect("a list of step sizes"))
         .collect();
-    let all = methods();
-    let reference_method = all.iter().find(|m| m.name == "kahan_li8").expect("kahan_li8");
+    let all = selected(args);
+    let catalogue = methods();
+    let reference_method = catalogue.iter().find(|m| m.name == "kahan_li8").expect("kahan_li8");
     // Few steps keep the reference's round-off small: Kahan-Li 8's truncation error at
     // dt = 10 days is below the round-off of a run at dt = 0.25 (both about 1e-9 AU).
     let h_ref = 10.0;
@@ -274,9 +366,15 @@ fn front(args: &[String]) {
     let coarse = (reference_method.run)(&nb, &y0, 0.5 * h_ref, steps_for(span, 0.5 * h_ref));
     let mut rows = Vec::new();
     for m in &all {
-        for &h in &dts {
+        // the Kepler split's methods also at longer steps (`--kepler-dts`, default none)
+        let longer = if m.name.starts_with("kepler/") {
+            &kepler_dts[..]
+        } else {
+            &[][..]
+        };
+        for &h in longer.iter().chain(&dts) {
             let steps = steps_for(span, h);
-            let every = steps_for(cadence, h);
+            let every = steps_for(cadence.max(h), h);
             let (y, de) = (m.sampled)(&nb, &y0, h, steps, every);
             let secs = best_of(3, || (m.run)(&nb, black_box(&y0), black_box(h), steps));
             rows.push(format!(

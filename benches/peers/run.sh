@@ -1,17 +1,20 @@
 #!/usr/bin/env bash
 # Benchmarks against peers, in one command:
-#   bash benches/peers/run.sh            # REBOUND vs stormer on the outer solar system
-#   bash benches/peers/run.sh --rounds 3 # any option of rebound.py
-#   bash benches/peers/run.sh nbody      # REBOUND vs stormer on 10 to 3000 bodies (nbody.py)
+#   bash benches/peers/run.sh               # REBOUND vs stormer on the outer solar system
+#   bash benches/peers/run.sh --rounds 3    # any option of rebound.py
+#   bash benches/peers/run.sh --whfast-step # a Wisdom-Holman step against WHFast's (whfast_step.py;
+#                                           # the options after it are whfast_step.py's)
+#   bash benches/peers/run.sh nbody         # REBOUND vs stormer on 10 to 3000 bodies (nbody.py)
 #   bash benches/peers/run.sh nbody --sizes 1000 --rounds 5
 # Installs what it needs: a virtual environment under target/peers/venv with REBOUND
-# (PyPI package `rebound`); our side is `app/examples/outer_solar_front.rs` (release build).
+# (PyPI package `rebound`), or the one named by $PEERS_VENV; our side is
+# `app/examples/outer_solar_front.rs` (release build).
 # Results: out/peers/rebound.md, rebound_front.json, rebound_front.svg; out/peers/nbody.md.
 # The ode_solvers comparison (free kick) is a criterion bench: cargo bench --bench free_kick_peers
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 cd "$root"
-venv="target/peers/venv"
+venv="${PEERS_VENV:-target/peers/venv}"
 if [ ! -x "$venv/bin/python" ]; then
     python3 -m venv "$venv"
 fi
@@ -23,5 +26,9 @@ if [ "${1:-}" = nbody ]; then
     cargo build --release --example nbody_timing --features parallel
     exec "$venv/bin/python" benches/peers/nbody.py "$@"
 fi
-cargo build --release --example outer_solar_front
+cargo build --release -p stormer-app --example outer_solar_front
+if [ "${1:-}" = "--whfast-step" ]; then
+    shift
+    exec "$venv/bin/python" benches/peers/whfast_step.py "$@"
+fi
 exec "$venv/bin/python" benches/peers/rebound.py "$@"

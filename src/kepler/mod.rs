@@ -10,11 +10,13 @@
 
 mod drift;
 mod lagrange;
+mod lanes;
 mod stumpff;
 mod universal;
 
 pub use drift::KeplerDrift;
 pub use lagrange::LagrangeCoefficients;
+pub use lanes::{KeplerLanes, LaneFlows, LANES};
 pub use stumpff::stumpff;
 
 use crate::Real;

@@ -40,6 +40,9 @@ pub struct Jacobi<T> {
     masses: Vec<T>,
     /// `eta_k = m_0 + ... + m_k`.
     interior: Vec<T>,
+    /// `m_k / eta_k` and `eta_(k-1) / eta_k` (`k >= 1`; 0 and 1 for `k = 0`): the maps
+    /// multiply, they do not divide.
+    ratios: Vec<(T, T)>,
 }
 
 impl<T: Real> Jacobi<T> {
@@ -52,11 +55,18 @@ impl<T: Real> Jacobi<T> {
                 *sum += m;
                 Some(*sum)
             })
+            .collect::<Vec<T>>();
+        let ratios = (0..masses.len())
+            .map(|k| match k {
+                0 => (T::zero(), T::one()),
+                _ => (masses[k] / interior[k], interior[k - 1] / interior[k]),
+            })
             .collect();
         Jacobi {
             dim,
             masses: masses.to_vec(),
             interior,
+            ratios,
         }
     }
 
@@ -100,8 +110,21 @@ impl<T: Real> Jacobi<T> {
             // R_k, from the centre of mass of all inwards: R_(k-1) = R_k - m_k q'_k / eta_k
             let mut centre = q[c];
             for k in (1..n).rev() {
-                centre -= self.masses[k] * q[k * d + c] / self.interior[k];
+                centre -= self.ratios[k].0 * q[k * d + c];
                 q[k * d + c] += centre;
+            }
+            q[c] = centre;
+        }
+    }
+
+    /// [`Jacobi::positions_from_jacobi`] from `jacobi` into `q` (the same bits).
+    pub fn positions_from_jacobi_into(&self, jacobi: &[T], q: &mut [T]) {
+        let (d, n) = (self.dim, self.masses.len());
+        for c in 0..d {
+            let mut centre = jacobi[c];
+            for k in (1..n).rev() {
+                centre -= self.ratios[k].0 * jacobi[k * d + c];
+                q[k * d + c] = jacobi[k * d + c] + centre;
             }
             q[c] = centre;
         }
@@ -114,7 +137,8 @@ impl<T: Real> Jacobi<T> {
             let mut total = p[c];
             for k in 1..n {
                 let pk = p[k * d + c];
-                p[k * d + c] = (self.interior[k - 1] * pk - self.masses[k] * total) / self.interior[k];
+                let (mass_ratio, inner_ratio) = self.ratios[k];
+                p[k * d + c] = inner_ratio * pk - mass_ratio * total;
                 total += pk;
             }
             p[c] = total;

@@ -6,7 +6,7 @@ use super::democratic_heliocentric::DemocraticHeliocentric;
 use super::jacobi::Jacobi;
 use super::nbody::NBody;
 use super::nbody_shape::{AnyShape, Shape};
-use crate::kepler::LagrangeCoefficients;
+use crate::kepler::{KeplerLanes, LagrangeCoefficients, LaneFlows, LANES};
 #[allow(unused_imports)]
 use crate::real::ops::*;
 use crate::{lit, to_f64, Error, Families, Hamiltonian, Problem, QuadraticKinetic, Real, Splittable, State};
@@ -70,6 +70,9 @@ pub const MAX_MASS_RATIO: f64 = 0.1;
 /// coordinates: no allocation per step up to 16 bodies in 3-D.
 const STACK: usize = 48;
 
+/// The same for up to 4 bodies in 3-D (a smaller buffer to clear).
+const SMALL_STACK: usize = 12;
+
 /// The coordinate change of a [`KeplerSplit`].
 #[derive(Debug, Clone)]
 enum Transform<T> {
@@ -115,6 +118,9 @@ pub struct KeplerSplit<T, S, K = AnyShape> {
     kepler: Vec<(T, T)>,
     /// `1 / m_0`, the central body's momentum term's drift.
     inverse_central_mass: T,
+    /// The bodies but the first by groups of [`LANES`], their `mu` and `m'` in `f64`
+    /// (the Kepler drift in lanes, [`KeplerLanes`]; used when `T` is `f64`).
+    lanes: Vec<KeplerLanes>,
 }
 
 impl<T: Real, S, K> Clone for KeplerSplit<T, S, K> {
@@ -126,6 +132,7 @@ impl<T: Real, S, K> Clone for KeplerSplit<T, S, K> {
             planets: self.planets.clone(),
             kepler: self.kepler.clone(),
             inverse_central_mass: self.inverse_central_mass,
+            lanes: self.lanes.clone(),
         }
     }
 }
@@ -179,7 +186,7 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> KeplerSplit<T, S, K> {
             ));
         }
         let g = bodies.g();
-        let (transform, kepler, planets) = match coordinates {
+        let (transform, kepler, planets): (_, Vec<(T, T)>, _) = match coordinates {
             KeplerCoordinates::Jacobi => {
                 let jacobi = Jacobi::new(masses, d);
                 let kepler = (0..masses.len())
@@ -205,7 +212,22 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> KeplerSplit<T, S, K> {
                 (Transform::Democratic(dh), kepler, Some(planets))
             }
         };
+        let lanes = kepler[1..]
+            .chunks(LANES)
+            .map(|chunk| {
+                // unused lanes: zeros, not solved
+                let mut lanes = KeplerLanes {
+                    mu: [1.0; LANES],
+                    mass: [1.0; LANES],
+                };
+                for (j, &(mu, mass)) in chunk.iter().enumerate() {
+                    (lanes.mu[j], lanes.mass[j]) = (to_f64(mu), to_f64(mass));
+                }
+                lanes
+            })
+            .collect();
         Ok(KeplerSplit {
+            lanes,
             inverse_central_mass: T::one() / masses[0],
             bodies,
             coordinates,
@@ -269,57 +291,110 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> KeplerSplit<T, S, K> {
         }
     }
 
-    /// The velocity `p / m'` of body `k` (`d` components) on the stack.
+    /// What the Kepler motions for `tau` add to the positions and momenta of the bodies
+    /// `first..first + count` (`count <= LANES`, `first >= 1`), `[c][j]` for component `c`
+    /// of body `first + j`, computed from `(q, p)` without forming the new state. In `f64`,
+    /// solved together ([`KeplerLanes`]); in every other scalar (`f32`, the dual numbers of
+    /// `verify`), one by one ([`LagrangeCoefficients::new`]).
     #[inline(always)]
-    fn velocity(&self, k: usize, p: &[T]) -> [T; 3] {
-        let mass = self.kepler[k].1;
-        let mut v = [T::zero(); 3];
-        for (v, &p) in v.iter_mut().zip(p) {
-            *v = p / mass;
+    fn kepler_chunk(&self, tau: T, q: &[T], p: &[T], first: usize, count: usize) -> [[[T; LANES]; 3]; 2] {
+        let d = self.bodies.dim();
+        if core::any::TypeId::of::<T>() == core::any::TypeId::of::<f64>() {
+            // the conversions to and from f64 are the identity here, and compile to nothing
+            let mut flows = LaneFlows {
+                dq: [[0.0; LANES]; 3],
+                dp: [[0.0; LANES]; 3],
+            };
+            let load = |c: usize, j: usize| {
+                let i = (first + j) * d + c;
+                if j < count && c < d {
+                    (to_f64(q[i]), to_f64(p[i]))
+                } else {
+                    // unused lanes: a unit circle, never read
+                    ((c == 0) as u8 as f64, (c == 1) as u8 as f64)
+                }
+            };
+            self.lanes[(first - 1) / LANES].solve_with(to_f64(tau), count, load, &mut flows);
+            let mut out = [[[T::zero(); LANES]; 3]; 2];
+            for c in 0..d {
+                for j in 0..count {
+                    (out[0][c][j], out[1][c][j]) = (lit(flows.dq[c][j]), lit(flows.dp[c][j]));
+                }
+            }
+            return out;
         }
-        v
+        let mut out = [[[T::zero(); LANES]; 3]; 2];
+        for j in 0..count {
+            let (k, (mu, mass)) = (first + j, self.kepler[first + j]);
+            let (qk, pk) = (&q[k * d..(k + 1) * d], &p[k * d..(k + 1) * d]);
+            let mut v = [T::zero(); 3];
+            for (v, &p) in v.iter_mut().zip(pk) {
+                *v = p / mass;
+            }
+            let c = LagrangeCoefficients::new(mu, tau, qk, &v[..d]);
+            for i in 0..d {
+                out[0][i][j] = c.f_minus_one * qk[i] + c.g * v[i];
+                out[1][i][j] = mass * (c.f_dot * qk[i] + c.g_dot_minus_one * v[i]);
+            }
+        }
+        out
     }
 
     /// Every body's Kepler motion (the first body's entry, the centre of mass: free
-    /// motion) for `tau`, ADDING
-    /// to `(dq, dp)` what it adds to `(q, p)`; `(dq, dp)` may be `(q, p)` themselves, by
-    /// [`KeplerSplit::kepler_in_place`].
+    /// motion) for `tau`, ADDING to `(dq, dp)` what it adds to `(q, p)`.
     #[inline(always)]
     fn kepler_increment(&self, tau: T, q: &[T], p: &[T], dq: &mut [T], dp: &mut [T]) {
-        let d = self.bodies.dim();
-        // the centre of mass moves freely (a Kepler flow of mu = 0 would do it too, but
-        // its derivatives at mu = 0 are not finite on dual numbers)
-        let total = self.kepler[0].1;
-        for (dq, &p) in dq[..d].iter_mut().zip(&p[..d]) {
-            *dq += tau * p / total;
-        }
-        for (k, &(mu, mass)) in self.kepler.iter().enumerate().skip(1) {
-            let (qk, pk) = (&q[k * d..(k + 1) * d], &p[k * d..(k + 1) * d]);
-            let v = self.velocity(k, pk);
-            let c = LagrangeCoefficients::new(mu, tau, qk, &v[..d]);
-            for i in 0..d {
-                dq[k * d + i] += c.f_minus_one * qk[i] + c.g * v[i];
-                dp[k * d + i] += mass * (c.f_dot * qk[i] + c.g_dot_minus_one * v[i]);
-            }
+        self.centre_of_mass(tau, p, dq);
+        for (first, count) in self.chunks() {
+            let chunk = self.kepler_chunk(tau, q, p, first, count);
+            self.add_chunk(&chunk, first, count, dq, dp);
         }
     }
 
     /// Every body's Kepler motion for `tau`, in place.
     #[inline(always)]
     fn kepler_in_place(&self, tau: T, q: &mut [T], p: &mut [T]) {
-        let d = self.bodies.dim();
-        let total = self.kepler[0].1;
-        for (q, &p) in q[..d].iter_mut().zip(&p[..d]) {
-            *q += tau * p / total;
+        self.centre_of_mass(tau, p, q);
+        for (first, count) in self.chunks() {
+            // each chunk reads its own bodies only
+            let chunk = self.kepler_chunk(tau, q, p, first, count);
+            self.add_chunk(&chunk, first, count, q, p);
         }
-        for (k, &(mu, mass)) in self.kepler.iter().enumerate().skip(1) {
-            let (qk, pk) = (&mut q[k * d..(k + 1) * d], &mut p[k * d..(k + 1) * d]);
-            let v = self.velocity(k, pk);
-            let c = LagrangeCoefficients::new(mu, tau, qk, &v[..d]);
+    }
+
+    /// The centre of mass's free motion for `tau`, added to `dq`'s first entry.
+    #[inline(always)]
+    fn centre_of_mass(&self, tau: T, p: &[T], dq: &mut [T]) {
+        // a Kepler flow of mu = 0 would do it too, but its derivatives at mu = 0 are not
+        // finite on dual numbers
+        let (d, total) = (self.bodies.dim(), self.kepler[0].1);
+        for (dq, &p) in dq[..d].iter_mut().zip(&p[..d]) {
+            *dq += tau * p / total;
+        }
+    }
+
+    /// The bodies but the first in groups of at most [`LANES`]: `(first, count)`.
+    #[inline(always)]
+    fn chunks(&self) -> impl Iterator<Item = (usize, usize)> {
+        let n = self.kepler.len();
+        (1..n).step_by(LANES).map(move |first| (first, LANES.min(n - first)))
+    }
+
+    /// Adds a [`KeplerSplit::kepler_chunk`] to `(dq, dp)`.
+    #[inline(always)]
+    fn add_chunk(
+        &self,
+        [chunk_q, chunk_p]: &[[[T; LANES]; 3]; 2],
+        first: usize,
+        count: usize,
+        dq: &mut [T],
+        dp: &mut [T],
+    ) {
+        let d = self.bodies.dim();
+        for j in 0..count {
             for i in 0..d {
-                let q0 = qk[i];
-                qk[i] += c.f_minus_one * q0 + c.g * v[i];
-                pk[i] += mass * (c.f_dot * q0 + c.g_dot_minus_one * v[i]);
+                dq[(first + j) * d + i] += chunk_q[i][j];
+                dp[(first + j) * d + i] += chunk_p[i][j];
             }
         }
     }
@@ -342,27 +417,42 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> KeplerSplit<T, S, K> {
     /// `q`, written into `f`, then changed to the split's coordinates.
     fn scene_forces(&self, t: T, q: &[T], f: &mut [T]) {
         let n = q.len();
-        if n <= STACK {
-            let mut scene = [T::zero(); STACK];
-            scene[..n].copy_from_slice(q);
-            self.positions_to_scene(&mut scene[..n]);
-            Hamiltonian::force(&self.bodies, t, &scene[..n], f);
+        if n <= SMALL_STACK {
+            self.scene_forces_on_stack::<SMALL_STACK>(t, q, f);
+        } else if n <= STACK {
+            self.scene_forces_on_stack::<STACK>(t, q, f);
         } else {
             let mut scene = q.to_vec();
-            self.positions_to_scene(&mut scene);
+            self.positions_to_scene(q, &mut scene);
             Hamiltonian::force(&self.bodies, t, &scene, f);
+            self.forces_to_split(f);
         }
+    }
+
+    /// [`KeplerSplit::scene_forces`] with the scene's positions in `N >= q.len()` values on
+    /// the stack.
+    #[inline(always)]
+    fn scene_forces_on_stack<const N: usize>(&self, t: T, q: &[T], f: &mut [T]) {
+        let n = q.len();
+        let mut scene = [T::zero(); N];
+        self.positions_to_scene(q, &mut scene[..n]);
+        Hamiltonian::force(&self.bodies, t, &scene[..n], f);
         self.forces_to_split(f);
     }
 
-    fn positions_to_scene(&self, q: &mut [T]) {
+    /// The positions `q` in the split's coordinates, in the scene's, into `scene`.
+    fn positions_to_scene(&self, q: &[T], scene: &mut [T]) {
         match &self.transform {
-            Transform::Jacobi(j) => j.positions_from_jacobi(q),
-            Transform::Democratic(dh) => dh.positions_from_democratic(q),
+            Transform::Jacobi(j) => j.positions_from_jacobi_into(q, scene),
+            Transform::Democratic(dh) => {
+                scene.copy_from_slice(q);
+                dh.positions_from_democratic(scene)
+            }
         }
     }
 
     /// The Kepler problems' forces `-mu_k m'_k q_k / |q_k|^3`, added to `f` with `sign`.
+    #[inline(always)]
     fn add_kepler_forces(&self, sign: T, q: &[T], f: &mut [T]) {
         let d = self.bodies.dim();
         for (k, &(mu, mass)) in self.kepler.iter().enumerate().skip(1) {
