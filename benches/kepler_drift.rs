@@ -17,12 +17,17 @@
 
 #![allow(missing_docs)] // criterion_group! generates an undocumented function
 
+/// Sun, Jupiter, Saturn, Uranus (SCENES.md 4).
+#[path = "../tests/support/outer_solar_system.rs"]
+mod outer_solar_system;
+use outer_solar_system::outer_solar_system;
+
 use std::hint::black_box;
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use stormer::catalog::{StormerVerletDkd, VelocityVerletKdk};
 use stormer::kepler::{KeplerDrift, KeplerLanes, LagrangeCoefficients, LANES};
-use stormer::models::{KeplerCoordinates, KeplerSplit, NBody};
+use stormer::models::{KeplerCoordinates, KeplerSplit};
 use stormer::{SplittingStepper, Stepper};
 
 /// The state at pericentre of the conic of eccentricity `e` and semi-major axis 1 (or
@@ -89,43 +94,6 @@ fn planets(c: &mut Criterion) {
     group.finish();
 }
 
-/// Sun, Jupiter, Saturn, Uranus (SCENES.md 4).
-fn outer_solar_system() -> (NBody<f64, [f64; 24]>, [f64; 24]) {
-    let masses = [1.00000597682, 0.000954786104043, 0.000285583733151, 0.0000437273164546];
-    let q = [
-        0.0,
-        0.0,
-        0.0,
-        -3.5023653,
-        -3.8169847,
-        -1.5507963,
-        9.0755314,
-        -3.0458353,
-        -1.6483708,
-        8.3101420,
-        -16.2901086,
-        -7.2521278,
-    ];
-    let v = [
-        0.0,
-        0.0,
-        0.0,
-        0.00565429,
-        -0.00412490,
-        -0.00190589,
-        0.00168318,
-        0.00483525,
-        0.00192462,
-        0.00354178,
-        0.00137102,
-        0.00055029,
-    ];
-    let bodies = NBody::new(2.95912208286e-4, &masses, 3).unwrap();
-    let mut y = [0.0; 24];
-    bodies.set_state(&q, &v, &mut y).unwrap();
-    (bodies, y)
-}
-
 /// `steps` steps of `stepper` on `problem` from `y`, in place.
 fn run<P, S>(problem: &P, stepper: &mut S, y: &mut [f64; 24], steps: usize)
 where
@@ -141,7 +109,7 @@ where
 }
 
 fn wisdom_holman(c: &mut Criterion) {
-    let (bodies, y) = outer_solar_system();
+    let (bodies, y) = outer_solar_system(1.0);
     let split = KeplerSplit::new(bodies.clone(), KeplerCoordinates::Jacobi).unwrap();
     let mut group = c.benchmark_group("outer_solar_system_step");
     let mut z = split.from_scene(&y);

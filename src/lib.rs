@@ -54,8 +54,8 @@ pub use nalgebra;
 #[doc = include_str!("../README.md")]
 pub struct ReadmeDoctests;
 pub use stepper::{
-    ExplicitRk, ImplicitOptions, ImplicitRk, ImplicitSolver, RuntimeRk, RuntimeSplitting, SplittingStepper, Stepper,
-    Tolerances,
+    ExplicitRk, ImplicitOptions, ImplicitRk, ImplicitSolver, RuntimeRk, RuntimeSplitting, SplittingStepper, StepRun,
+    Stepper, Tolerances,
 };
 
 /// Declares a Butcher tableau, checks it at compile time and generates its stepper.

@@ -1,6 +1,8 @@
 //! Symplectic correctors ([`stormer::corrector`]) on the Wisdom-Holman split of the outer
 //! solar system, and the generalized orders of the near-integrable methods on the split.
 
+#[path = "support/collision_course.rs"]
+mod collision_course;
 #[path = "support/outer_solar_system.rs"]
 mod outer_solar_system;
 use outer_solar_system::{outer_solar_system, Outer};
@@ -212,15 +214,7 @@ fn unknown_orders_and_other_methods_are_refused() {
 /// non-finite error, never a panic or a hang.
 #[test]
 fn a_collision_course_with_correctors_ends_cleanly() {
-    let bodies = NBody::<f64, [f64; 12]>::new(1.0, &[1.0, 1e-3, 1e-3], 2).unwrap();
-    let mut y = [0.0; 12];
-    bodies
-        .set_state(
-            &[0.0, 0.0, 0.05, 0.0, 2.0, 0.0],
-            &[0.0, 0.0, 0.0, 0.0, 0.0, 0.7],
-            &mut y,
-        )
-        .unwrap();
+    let (bodies, y) = collision_course::collision_course();
     let split = KeplerSplit::new(bodies, KeplerCoordinates::Jacobi).unwrap();
     let method = Method::named("wisdom_holman").unwrap();
     for data in CorrectorData::all() {

@@ -2,6 +2,8 @@
 //! round-off, its vector field is the N-body one, its methods reach their orders, every
 //! splitting and composition of the catalog runs on it, and bad systems are errors.
 
+#[path = "support/collision_course.rs"]
+mod collision_course;
 #[path = "support/outer_solar_system.rs"]
 mod outer_solar_system;
 use outer_solar_system::{outer_solar_system, Outer};
@@ -285,15 +287,7 @@ fn systems_without_a_dominant_body_are_refused() {
 /// never a panic or a hang.
 #[test]
 fn a_collision_course_with_the_star_ends_cleanly() {
-    let bodies = NBody::<f64, [f64; 12]>::new(1.0, &[1.0, 1e-3, 1e-3], 2).unwrap();
-    let mut y = [0.0; 12];
-    bodies
-        .set_state(
-            &[0.0, 0.0, 0.05, 0.0, 2.0, 0.0],
-            &[0.0, 0.0, 0.0, 0.0, 0.0, 0.7],
-            &mut y,
-        )
-        .unwrap();
+    let (bodies, y) = collision_course::collision_course();
     for coordinates in KeplerCoordinates::ALL {
         let split = KeplerSplit::new(bodies.clone(), coordinates).unwrap();
         let y0 = split.from_scene(&y);

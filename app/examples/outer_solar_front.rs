@@ -45,44 +45,13 @@ type Nb = NBody<f64, [f64; 24]>;
 type Split = KeplerSplit<f64, [f64; 24]>;
 
 /// SCENES.md 4, as REBOUND gets them too.
-const G: f64 = 2.95912208286e-4;
-const MASSES: [f64; 4] = [1.00000597682, 0.000954786104043, 0.000285583733151, 0.0000437273164546];
-const POSITIONS: [f64; 12] = [
-    0.0,
-    0.0,
-    0.0,
-    -3.5023653,
-    -3.8169847,
-    -1.5507963,
-    9.0755314,
-    -3.0458353,
-    -1.6483708,
-    8.3101420,
-    -16.2901086,
-    -7.2521278,
-];
-const VELOCITIES: [f64; 12] = [
-    0.0,
-    0.0,
-    0.0,
-    0.00565429,
-    -0.00412490,
-    -0.00190589,
-    0.00168318,
-    0.00483525,
-    0.00192462,
-    0.00354178,
-    0.00137102,
-    0.00055029,
-];
+#[path = "../../tests/support/outer_solar_system.rs"]
+mod outer_solar_system;
+use outer_solar_system::{G, MASSES};
 
 fn problem() -> (Nb, [f64; 24]) {
-    let nb = Nb::new(G, &MASSES, 3).expect("valid bodies");
-    let mut y = [0.0; 24];
-    nb.set_state(&POSITIONS, &VELOCITIES, &mut y).expect("4 bodies in 3-D");
-    (nb, y)
+    outer_solar_system::outer_solar_system(1.0)
 }
-
 /// One of our methods: its name, order, force evaluations per step, and its runs.
 struct Method {
     name: &'static str,

@@ -4,17 +4,7 @@
 
 #[path = "support/binary.rs"]
 mod binary;
-use binary::{assert_error, stderr, stormer, stormer_ok, workdir};
-
-/// The rows of a CSV as numbers, with its header.
-fn rows(text: &str) -> (String, Vec<Vec<f64>>) {
-    let mut lines = text.lines();
-    let header = lines.next().unwrap().to_string();
-    let rows = lines
-        .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
-        .collect();
-    (header, rows)
-}
+use binary::{assert_error, csv_rows, stderr, stormer, stormer_ok, workdir};
 
 /// `max |dE/E0| X` from a run's summary.
 fn energy_drift(summary: &str) -> f64 {
@@ -50,8 +40,8 @@ fn the_corrector_records_corrected_states_in_the_scenes_coordinates() {
     assert!(summary.contains("(kepler-jacobi, corrector 11)"), "{summary}");
     let (without, with) = (energy_drift(&stderr(&plain)), energy_drift(&summary));
     assert!(with * 300.0 < without, "{without:e} -> {with:e}");
-    let (h1, plain_rows) = rows(&std::fs::read_to_string(dir.join("plain.csv")).unwrap());
-    let (h2, corrected_rows) = rows(&std::fs::read_to_string(dir.join("corrected.csv")).unwrap());
+    let (h1, plain_rows) = csv_rows(&std::fs::read_to_string(dir.join("plain.csv")).unwrap());
+    let (h2, corrected_rows) = csv_rows(&std::fs::read_to_string(dir.join("corrected.csv")).unwrap());
     assert_eq!(h1, h2);
     assert_eq!(plain_rows.len(), corrected_rows.len());
     for (a, b) in plain_rows[0].iter().zip(&corrected_rows[0]) {
@@ -163,7 +153,8 @@ fn correctors_keep_the_splits_refusals_and_collisions_clean() {
         let err = stderr(&out);
         assert!(!err.contains("panicked"), "{err}");
         if out.status.success() {
-            let (_, rows) = rows(&std::fs::read_to_string(dir.join("out/collision-stormer_verlet_dkd.csv")).unwrap());
+            let (_, rows) =
+                csv_rows(&std::fs::read_to_string(dir.join("out/collision-stormer_verlet_dkd.csv")).unwrap());
             assert!(rows.iter().flatten().all(|x| x.is_finite()), "order {order}");
         } else {
             assert_error(&out, "non-finite");

@@ -5,19 +5,9 @@
 
 #[path = "support/binary.rs"]
 mod binary;
-use binary::{assert_error, stderr, stdout, stormer, stormer_ok, workdir};
+use binary::{assert_error, csv_rows, stderr, stdout, stormer, stormer_ok, workdir};
 use std::path::Path;
 use std::process::Output;
-
-/// The rows of a CSV as numbers, with its header.
-fn rows(text: &str) -> (String, Vec<Vec<f64>>) {
-    let mut lines = text.lines();
-    let header = lines.next().unwrap().to_string();
-    let rows = lines
-        .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
-        .collect();
-    (header, rows)
-}
 
 /// `stormer run outer-solar-system --method wisdom_holman` followed by `more`, in `dir`.
 fn outer_solar_system(dir: &Path, more: &[&str]) -> Output {
@@ -41,8 +31,8 @@ fn the_split_records_in_the_scenes_coordinates() {
     let plain = outer_solar_system(&dir, &["-o", "plain.csv"]);
     let split = outer_solar_system(&dir, &["--split", "kepler-jacobi", "-o", "split.csv"]);
     assert!(stderr(&split).contains("stormer_verlet_dkd on outer-solar-system (kepler-jacobi)"));
-    let (h0, plain_rows) = rows(&std::fs::read_to_string(dir.join("plain.csv")).unwrap());
-    let (h1, split_rows) = rows(&std::fs::read_to_string(dir.join("split.csv")).unwrap());
+    let (h0, plain_rows) = csv_rows(&std::fs::read_to_string(dir.join("plain.csv")).unwrap());
+    let (h1, split_rows) = csv_rows(&std::fs::read_to_string(dir.join("split.csv")).unwrap());
     assert_eq!(h0, h1);
     assert_eq!(plain_rows.len(), split_rows.len());
     for (a, b) in plain_rows[0].iter().zip(&split_rows[0]) {
@@ -117,7 +107,7 @@ fn a_collision_course_with_the_star_ends_cleanly() {
             let err = stderr(&out);
             assert!(!err.contains("panicked"), "{err}");
             if out.status.success() {
-                let (_, rows) = rows(
+                let (_, rows) = csv_rows(
                     &std::fs::read_to_string(dir.join(format!("out/collision-{}.csv", {
                         if method == "wisdom_holman" {
                             "stormer_verlet_dkd"

@@ -22,6 +22,10 @@ _HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path[:] = [p for p in sys.path if os.path.abspath(p or os.curdir) != _HERE]
 import rebound  # noqa: E402
 
+# this folder after the package: its rebound.py must not shadow REBOUND
+sys.path.insert(0, _HERE)
+from common import load, write_report  # noqa: E402
+
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 EXAMPLE = os.path.join(ROOT, "target", "release", "examples", "nbody_timing")
 
@@ -49,12 +53,6 @@ def rebound_ns_per_step(state, steps, reps=3):
         best = min(best, time.perf_counter() - start)
     return best * 1e9 / steps
 
-
-def load():
-    try:
-        return " ".join(open("/proc/loadavg").read().split()[:3])
-    except OSError:
-        return "?"
 
 
 def main():
@@ -92,10 +90,7 @@ def main():
         p = max(pairs, 1)
         lines.append(f"| {n} | {pairs} | {steps} | {r:.0f} | {r / p:.2f} | {a:.0f} | {a / p:.2f} | {b:.0f} | "
                      f"{b / p:.2f} | **{r / a:.2f}x** | **{a / b:.2f}x** |")
-    with open(os.path.join(args.out, "nbody.md"), "w") as f:
-        f.write("\n".join(lines) + "\n")
-    print("\n".join(lines))
-    print(f"\nwrote {args.out}/nbody.md", file=sys.stderr)
+    write_report(args.out, "nbody.md", lines)
 
 
 if __name__ == "__main__":

@@ -40,24 +40,13 @@ _HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path[:] = [p for p in sys.path if os.path.abspath(p or os.curdir) != _HERE]
 import rebound  # noqa: E402
 
+# this folder after the package: its rebound.py must not shadow REBOUND
+sys.path.insert(0, _HERE)
+from common import G, MASSES, POSITIONS, VELOCITIES, load, write_report  # noqa: E402
+
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 EXAMPLE = os.path.join(ROOT, "target", "release", "examples", "outer_solar_front")
 
-# SCENES.md 4.
-G = 2.95912208286e-4
-MASSES = [1.00000597682, 0.000954786104043, 0.000285583733151, 0.0000437273164546]
-POSITIONS = [
-    (0.0, 0.0, 0.0),
-    (-3.5023653, -3.8169847, -1.5507963),
-    (9.0755314, -3.0458353, -1.6483708),
-    (8.3101420, -16.2901086, -7.2521278),
-]
-VELOCITIES = [
-    (0.0, 0.0, 0.0),
-    (0.00565429, -0.00412490, -0.00190589),
-    (0.00168318, 0.00483525, 0.00192462),
-    (0.00354178, 0.00137102, 0.00055029),
-]
 
 # (label, order, force evaluations per step, setup)
 def _integrator(name, **settings):
@@ -169,12 +158,6 @@ def ours(*args):
     return json.loads(out.stdout)
 
 
-def load():
-    try:
-        return open("/proc/loadavg").read().split()[:3]
-    except OSError:
-        return ["?"]
-
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -267,8 +250,8 @@ def main():
 
     lines = []
     lines.append(f"REBOUND {rebound.__version__} (Python {platform.python_version()}) and stormer, outer solar "
-                 f"system, {args.rounds} interleaved rounds; load average {' '.join(load_start)} at the start, "
-                 f"{' '.join(load())} at the end (2 cores).")
+                 f"system, {args.rounds} interleaved rounds; load average {load_start} at the start, "
+                 f"{load()} at the end (2 cores).")
     lines.append("")
     lines.append(f"Per step at dt = 10 days, runs of {args.time_span:g} days ({steps} steps), best of 5 per round, "
                  f"ns per step, min / median over the rounds:")
@@ -351,10 +334,7 @@ def main():
         ratio = f"**{r['seconds'] / a['seconds']:.1f}**" if a else "-"
         lines.append(f"| {r['method']} {step} | {r['seconds']:.2e} | {r['pos_err']:.1e} | {name(a)} | "
                      f"{a['seconds'] if a else float('nan'):.2e} | {a['pos_err'] if a else float('nan'):.1e} | {ratio} |")
-    with open(os.path.join(args.out, "rebound.md"), "w") as f:
-        f.write("\n".join(lines) + "\n")
-    print("\n".join(lines))
-    print(f"\nwrote {args.out}/rebound.md, rebound_front.json, rebound_front.svg", file=sys.stderr)
+    write_report(args.out, "rebound.md", lines, wrote="rebound.md, rebound_front.json, rebound_front.svg")
 
 
 if __name__ == "__main__":

@@ -25,24 +25,14 @@ _HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path[:] = [p for p in sys.path if os.path.abspath(p or os.curdir) != _HERE]
 import rebound  # noqa: E402
 
+# this folder after the package: its rebound.py must not shadow REBOUND
+sys.path.insert(0, _HERE)
+from common import G, MASSES, POSITIONS, VELOCITIES, load  # noqa: E402
+
 ROOT = os.path.dirname(os.path.dirname(_HERE))
 EXAMPLE = os.path.join(ROOT, "target", "release", "examples", "outer_solar_front")
 OURS = ["kepler/wisdom_holman", "kepler/velocity_verlet_kdk"]
 
-G = 2.95912208286e-4
-MASSES = [1.00000597682, 0.000954786104043, 0.000285583733151, 0.0000437273164546]
-POSITIONS = [
-    (0.0, 0.0, 0.0),
-    (-3.5023653, -3.8169847, -1.5507963),
-    (9.0755314, -3.0458353, -1.6483708),
-    (8.3101420, -16.2901086, -7.2521278),
-]
-VELOCITIES = [
-    (0.0, 0.0, 0.0),
-    (0.00565429, -0.00412490, -0.00190589),
-    (0.00168318, 0.00483525, 0.00192462),
-    (0.00354178, 0.00137102, 0.00055029),
-]
 DT = 10.0
 
 
@@ -70,12 +60,6 @@ def ours(steps):
         check=True, capture_output=True, text=True)
     return {row["method"]: row["ns_per_step"] for row in json.loads(out.stdout)["rows"]}
 
-
-def load():
-    try:
-        return " ".join(open("/proc/loadavg").read().split()[:3])
-    except OSError:
-        return "?"
 
 
 def main():

@@ -7,6 +7,7 @@ use super::dense::Inside;
 use super::{Between, Driver, Recorder, Stats, StopEvent, CANCEL_EVERY};
 #[allow(unused_imports)]
 use crate::real::ops::*;
+use crate::stepper::StepRun;
 use crate::{lit, to_f64, Error, Problem, Real, State, Stepper, Tolerances};
 
 /// A run of `driver` on problem `p` with `stepper`, recording into `out`.
@@ -184,12 +185,14 @@ where
             let end = next_record.min(next_check).min(n);
             let steps = &mut self.stats.steps;
             if end > whole {
-                self.stepper.run_in_place(self.p, t0, h, i..whole, y, steps)?;
+                self.stepper
+                    .run_in_place(self.p, StepRun { t0, h, range: i..whole }, y, steps)?;
                 let t = t0 + lit::<T>(whole as f64) * h;
                 step_checked(&mut *self.stepper, self.p, t, t_end - t, whole, y)?;
                 *steps += 1;
             } else {
-                self.stepper.run_in_place(self.p, t0, h, i..end, y, steps)?;
+                self.stepper
+                    .run_in_place(self.p, StepRun { t0, h, range: i..end }, y, steps)?;
             }
             i = end;
             if i % driver.every == 0 || i == n {
@@ -322,13 +325,11 @@ where
 pub(crate) fn steps_in_place<P: Problem, St: Stepper<P> + ?Sized>(
     stepper: &mut St,
     p: &P,
-    t0: P::Scalar,
-    h: P::Scalar,
-    range: core::ops::Range<u64>,
+    run: StepRun<P::Scalar>,
     y: &mut P::State,
     steps: &mut u64,
 ) -> Result<(), Error> {
-    steps_inline(stepper, p, t0, h, range, y, steps)
+    steps_inline(stepper, p, run, y, steps)
 }
 
 /// The loop of [`steps_in_place`], inlined into a stepper's own
@@ -337,9 +338,7 @@ pub(crate) fn steps_in_place<P: Problem, St: Stepper<P> + ?Sized>(
 pub(crate) fn steps_inline<P: Problem, St: Stepper<P> + ?Sized>(
     stepper: &mut St,
     p: &P,
-    t0: P::Scalar,
-    h: P::Scalar,
-    range: core::ops::Range<u64>,
+    StepRun { t0, h, range }: StepRun<P::Scalar>,
     y: &mut P::State,
     steps: &mut u64,
 ) -> Result<(), Error> {

@@ -47,6 +47,19 @@ pub struct Counters {
     pub jacobians: u64,
 }
 
+/// A run of the fixed-step driver ([`Stepper::run_in_place`]): the steps `range`, step `i`
+/// from `t0 + i h`.
+#[doc(hidden)]
+#[derive(Debug, Clone)]
+pub struct StepRun<T> {
+    /// The run's origin (step 0 starts there).
+    pub t0: T,
+    /// The step size.
+    pub h: T,
+    /// The steps of this run.
+    pub range: core::ops::Range<u64>,
+}
+
 /// One step of a method on problem `P`, as the driver sees it.
 ///
 /// `step` reads `(t, y)` and writes the new state into `y_new`, leaving `y` untouched so
@@ -101,21 +114,13 @@ pub trait Stepper<P: Problem> {
         false
     }
 
-    /// Steps `range` of the fixed-step driver (step `i` from `t0 + i h`) in place on `y`,
-    /// each checked finite, adding those taken to `steps`. The default loops over
-    /// [`Stepper::step_in_place`] out of line; a stepper may run the same loop on a local
-    /// copy of itself, whose scratch the compiler can then keep in registers.
+    /// The fixed-step driver's `run` of steps in place on `y`, each checked finite, adding
+    /// those taken to `steps`. The default loops over [`Stepper::step_in_place`] out of
+    /// line; a stepper may run the same loop on a local copy of itself, whose scratch the
+    /// compiler can then keep in registers.
     #[doc(hidden)]
-    fn run_in_place(
-        &mut self,
-        p: &P,
-        t0: P::Scalar,
-        h: P::Scalar,
-        range: core::ops::Range<u64>,
-        y: &mut P::State,
-        steps: &mut u64,
-    ) -> Result<(), Error> {
-        crate::driver::steps_in_place(self, p, t0, h, range, y, steps)
+    fn run_in_place(&mut self, p: &P, run: StepRun<P::Scalar>, y: &mut P::State, steps: &mut u64) -> Result<(), Error> {
+        crate::driver::steps_in_place(self, p, run, y, steps)
     }
 
     /// One step of size `h` from `(t, y)` that overwrites `y` and is accepted at once
@@ -199,6 +204,9 @@ impl<P: Problem, St: Stepper<P> + ?Sized> Stepper<P> for Box<St> {
     #[inline]
     fn step_in_place(&mut self, p: &P, t: P::Scalar, h: P::Scalar, y: &mut P::State) -> Result<(), Error> {
         (**self).step_in_place(p, t, h, y)
+    }
+    fn run_in_place(&mut self, p: &P, run: StepRun<P::Scalar>, y: &mut P::State, steps: &mut u64) -> Result<(), Error> {
+        (**self).run_in_place(p, run, y, steps)
     }
     fn reset(&mut self) {
         (**self).reset()

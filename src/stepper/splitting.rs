@@ -4,7 +4,7 @@
 //! a run-time one).
 
 use super::compensated::CompensatedWord;
-use super::{Counters, Stepper};
+use super::{Counters, StepRun, Stepper};
 use crate::flows::{Admits, General, ProblemClass, Splittable};
 use crate::hamiltonian::halves_mut;
 use crate::method::SplittingMethod;
@@ -348,24 +348,16 @@ where
     }
 
     #[inline(never)]
-    fn run_in_place(
-        &mut self,
-        p: &P,
-        t0: P::Scalar,
-        h: P::Scalar,
-        range: core::ops::Range<u64>,
-        y: &mut P::State,
-        steps: &mut u64,
-    ) -> Result<(), Error> {
+    fn run_in_place(&mut self, p: &P, run: StepRun<P::Scalar>, y: &mut P::State, steps: &mut u64) -> Result<(), Error> {
         if S::LEN.is_none() {
             // a state sized at run time lives on the heap: a copy would allocate
-            return crate::driver::steps_in_place(self, p, t0, h, range, y, steps);
+            return crate::driver::steps_in_place(self, p, run, y, steps);
         }
         // on a local copy of the stepper: its scratch (the drift's velocities, the cached
         // force) can then stay in registers across the steps, as in a hand-written loop
         // (the triple jump on the outer solar system 1.089 -> 1.073 of the hand loop)
         let mut local = self.clone();
-        let result = crate::driver::steps_inline(&mut local, p, t0, h, range, y, steps);
+        let result = crate::driver::steps_inline(&mut local, p, run, y, steps);
         *self = local;
         result
     }

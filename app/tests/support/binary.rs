@@ -84,3 +84,13 @@ pub fn signal(mut child: Child, signal: &str, start: Instant, limit: Duration) -
     std::io::Read::read_to_string(&mut child.stderr.take().unwrap(), &mut err).unwrap();
     (status, err)
 }
+
+/// The header and rows of a CSV the binary wrote, as numbers.
+pub fn csv_rows(text: &str) -> (String, Vec<Vec<f64>>) {
+    let mut lines = text.lines();
+    let header = lines.next().unwrap_or_default().to_string();
+    let rows = lines
+        .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
+        .collect();
+    (header, rows)
+}
