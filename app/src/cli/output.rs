@@ -147,15 +147,20 @@ impl CsvRecorder {
 
 impl<St: State<Scalar = f64>> Recorder<f64, St> for CsvRecorder {
     fn record(&mut self, t: f64, y: &St, energy: Option<f64>) -> Result<(), Error> {
-        use std::fmt::Write as _;
         let mut line = std::mem::take(&mut self.line);
         line.clear();
-        let _ = write!(line, "{t:?}");
-        for x in y.as_slice() {
-            let _ = write!(line, ",{x:?}");
+        // the shortest digits that read back to the same bits, written by
+        // zmij (serde_json's printer): std's formatting was a fifth of a run that writes
+        // every step (`perf record`, docs/benchmarks.md "Output at chosen times")
+        let mut digits = zmij::Buffer::new();
+        line.push_str(digits.format(t));
+        for &x in y.as_slice() {
+            line.push(',');
+            line.push_str(digits.format(x));
         }
         if let Some(e) = energy {
-            let _ = write!(line, ",{e:?}");
+            line.push(',');
+            line.push_str(digits.format(e));
         }
         line.push('\n');
         let written = self.write(&line);
