@@ -348,7 +348,7 @@ pub(crate) fn steps_inline<P: Problem, St: Stepper<P> + ?Sized>(
     let start = range.start;
     for i in range.clone() {
         if let Err(e) = step_checked(stepper, p, t0 + lit::<P::Scalar>(i as f64) * h, h, i, &mut local) {
-            // the steps before the failed one, and the state they reached
+            // the steps before the failed one count; `y` gets what the failed step left
             *steps += i - start;
             *y = local;
             return Err(e);
