@@ -10,8 +10,8 @@ mod problems;
 
 use problems::{BlowUp, Decay, Fall};
 use std::sync::atomic::AtomicBool;
-use stormer::catalog::{DormandPrince5, Rk4};
-use stormer::{Driver, Error, ExplicitRk, Interrupted, Problem, Solution, Tolerances};
+use stormer::catalog::{DormandPrince5, Rk4, VelocityVerletKdk};
+use stormer::{Driver, Error, ExplicitRk, Interrupted, Problem, SecondOrder, Solution, SplittingStepper, Tolerances};
 
 /// `y' = -y` in f32.
 struct Decay32;
@@ -181,6 +181,44 @@ fn a_state_that_blows_up_stops_the_run_and_keeps_the_records() {
     assert!(t > 0.9 && t < 2.0, "{t}");
     assert_eq!(err.solution.t.len() as u64, step + 1);
     assert!(err.solution.y.iter().all(|y| y[0].is_finite()));
+}
+
+/// `x'' = 10^4 x`: velocity Verlet at `h = 0.01` grows the state about 2.6x a step and
+/// overflows after some 740 steps.
+struct Repelled;
+impl SecondOrder for Repelled {
+    type Scalar = f64;
+    type State = [f64; 2];
+    fn acceleration(&self, _t: f64, q: &[f64], a: &mut [f64]) {
+        a[0] = 1e4 * q[0];
+    }
+}
+
+/// A splitting on a static state runs its steps checked once per block, and replays the
+/// block that fails one step at a time: the error, the records, what the failed step left
+/// and the counts are those of the loop that checks every step (the one with a stop
+/// condition), wherever the failing step falls against the records and the blocks.
+#[test]
+fn a_splitting_that_blows_up_stops_where_the_step_by_step_loop_stops() {
+    let run = |driver: Driver<'_, f64, [f64; 2]>| {
+        let mut verlet = SplittingStepper::<VelocityVerletKdk, [f64; 2]>::new(&[1.0, 0.0]).unwrap();
+        driver.run(&Repelled, &mut verlet, 0.0, &[1.0, 0.0], 20.0).unwrap_err()
+    };
+    let bits = |s: &Solution<f64, [f64; 2]>| s.y.iter().map(|y| (y[0].to_bits(), y[1].to_bits())).collect::<Vec<_>>();
+    for every in [1, 3, 16, 100, 1000, u64::MAX] {
+        let blocks = run(Driver::fixed(0.01).every(every));
+        let stepwise = run(Driver::fixed(0.01).every(every).stop_when(|_t, _y: &[f64; 2]| 1.0));
+        let Error::NonFinite { t, step } = blocks.error else {
+            panic!("{:?}", blocks.error)
+        };
+        assert!(step > 600 && step < 900 && step % 16 != 0, "step {step}");
+        assert_eq!(blocks.error, stepwise.error, "every {every}");
+        assert_eq!(t, step as f64 * 0.01);
+        assert_eq!(bits(&blocks.solution), bits(&stepwise.solution), "every {every}");
+        assert_eq!(blocks.solution.t, stepwise.solution.t, "every {every}");
+        assert_eq!(blocks.solution.stats.steps, step, "every {every}");
+        assert_eq!(blocks.solution.stats, stepwise.solution.stats, "every {every}");
+    }
 }
 
 #[test]
