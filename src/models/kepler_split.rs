@@ -6,7 +6,7 @@ use super::democratic_heliocentric::DemocraticHeliocentric;
 use super::jacobi::Jacobi;
 use super::nbody::NBody;
 use super::nbody_shape::{AnyShape, Shape};
-use crate::kepler::{KeplerLanes, LagrangeCoefficients, LaneFlows, LANES};
+use crate::kepler::{KeplerLanes, LagrangeCoefficients, LaneFlows, LaneStates, LANES};
 #[allow(unused_imports)]
 use crate::real::ops::*;
 use crate::{lit, to_f64, Error, Families, Hamiltonian, Problem, QuadraticKinetic, Real, Splittable, State};
@@ -355,6 +355,21 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> KeplerSplit<T, S, K> {
     #[inline(always)]
     fn kepler_in_place(&self, tau: T, q: &mut [T], p: &mut [T]) {
         self.centre_of_mass(tau, p, q);
+        if core::any::TypeId::of::<T>() == core::any::TypeId::of::<f64>() {
+            // the same bits as the flows added below, with fewer copies
+            let (tau, d) = (to_f64(tau), self.bodies.dim());
+            for (first, count) in self.chunks() {
+                let mut states = ChunkStates {
+                    q: &mut *q,
+                    p: &mut *p,
+                    first,
+                    count,
+                    d,
+                };
+                self.lanes[(first - 1) / LANES].advance(tau, count, &mut states);
+            }
+            return;
+        }
         for (first, count) in self.chunks() {
             // each chunk reads its own bodies only
             let chunk = self.kepler_chunk(tau, q, p, first, count);
@@ -462,6 +477,39 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> KeplerSplit<T, S, K> {
             for (f, &x) in f[k * d..(k + 1) * d].iter_mut().zip(qk) {
                 *f -= s * x;
             }
+        }
+    }
+}
+
+/// The bodies `first..first + count` of a state `(q, p)` as the lanes of a
+/// [`KeplerLanes`] (`count <= LANES`, `first >= 1`; `T` is `f64` wherever it is used).
+struct ChunkStates<'a, T> {
+    q: &'a mut [T],
+    p: &'a mut [T],
+    first: usize,
+    count: usize,
+    d: usize,
+}
+
+impl<T: Real> LaneStates for ChunkStates<'_, T> {
+    #[inline(always)]
+    fn load(&self, c: usize, j: usize) -> (f64, f64) {
+        if j >= self.count {
+            // unused lanes: a unit circle
+            return ((c == 0) as u8 as f64, (c == 1) as u8 as f64);
+        }
+        if c >= self.d {
+            return (0.0, 0.0);
+        }
+        let i = (self.first + j) * self.d + c;
+        (to_f64(self.q[i]), to_f64(self.p[i]))
+    }
+
+    #[inline(always)]
+    fn store(&mut self, c: usize, j: usize, q: f64, p: f64) {
+        if j < self.count && c < self.d {
+            let i = (self.first + j) * self.d + c;
+            (self.q[i], self.p[i]) = (lit(q), lit(p));
         }
     }
 }
