@@ -428,6 +428,56 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> KeplerSplit<T, S, K> {
         }
     }
 
+    /// The interaction in Jacobi coordinates: the forces of the whole system in the
+    /// scene's coordinates at the Jacobi positions `q`, changed to Jacobi coordinates,
+    /// minus the Kepler problems' forces. For a static state of 2 to 6 bodies in 2-D or
+    /// 3-D, the same operations on arrays of that shape, the loops unrolled.
+    #[inline(always)]
+    fn jacobi_interaction(&self, jacobi: &Jacobi<T>, t: T, q: &[T], f: &mut [T]) {
+        let (d, n) = (self.bodies.dim(), self.kepler.len());
+        // each test is decided at compile time but for the shapes S's length allows
+        macro_rules! static_shapes {
+            ($(($d:literal, $n:literal)),*) => {
+                $(
+                    if S::LEN == Some(2 * $d * $n) && d == $d && n == $n {
+                        return self.jacobi_interaction_shaped::<$d, $n>(jacobi, t, q, f);
+                    }
+                )*
+            };
+        }
+        static_shapes!(
+            (3, 2),
+            (3, 3),
+            (3, 4),
+            (3, 5),
+            (3, 6),
+            (2, 2),
+            (2, 3),
+            (2, 4),
+            (2, 5),
+            (2, 6)
+        );
+        self.scene_forces(t, q, f);
+        self.add_kepler_forces(-T::one(), q, f);
+    }
+
+    /// [`KeplerSplit::jacobi_interaction`] for `N` bodies in `D` dimensions.
+    #[inline(always)]
+    fn jacobi_interaction_shaped<const D: usize, const N: usize>(
+        &self,
+        jacobi: &Jacobi<T>,
+        t: T,
+        q: &[T],
+        f: &mut [T],
+    ) {
+        let mut scene = [[T::zero(); D]; N];
+        let scene = scene.as_flattened_mut();
+        jacobi.positions_from_jacobi_shaped(q, scene, D, N);
+        Hamiltonian::force(&self.bodies, t, scene, f);
+        jacobi.momenta_to_jacobi_shaped(f, D, N);
+        self.add_kepler_forces_shaped(-T::one(), q, f, D, N);
+    }
+
     /// The forces of the whole system in the scene's coordinates at the split's positions
     /// `q`, written into `f`, then changed to the split's coordinates.
     fn scene_forces(&self, t: T, q: &[T], f: &mut [T]) {
@@ -469,8 +519,14 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> KeplerSplit<T, S, K> {
     /// The Kepler problems' forces `-mu_k m'_k q_k / |q_k|^3`, added to `f` with `sign`.
     #[inline(always)]
     fn add_kepler_forces(&self, sign: T, q: &[T], f: &mut [T]) {
-        let d = self.bodies.dim();
-        for (k, &(mu, mass)) in self.kepler.iter().enumerate().skip(1) {
+        self.add_kepler_forces_shaped(sign, q, f, self.bodies.dim(), self.kepler.len());
+    }
+
+    /// [`KeplerSplit::add_kepler_forces`] for the `n` bodies in `d` dimensions: inlined
+    /// with constants, the loop unrolls.
+    #[inline(always)]
+    fn add_kepler_forces_shaped(&self, sign: T, q: &[T], f: &mut [T], d: usize, n: usize) {
+        for (k, &(mu, mass)) in self.kepler[..n].iter().enumerate().skip(1) {
             let qk = &q[k * d..(k + 1) * d];
             let r2 = qk.iter().fold(T::zero(), |s, &x| s + x * x);
             let s = sign * mu * mass / (r2 * r2.sqrt());
@@ -607,12 +663,14 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> Splittable for KeplerSplit<T, S, K
     #[inline]
     fn force(&self, t: T, q: &[T], f: &mut [T]) {
         let d = self.bodies.dim();
-        match &self.planets {
-            None => {
+        match (&self.planets, &self.transform) {
+            (None, Transform::Jacobi(jacobi)) => self.jacobi_interaction(jacobi, t, q, f),
+            (Some(planets), _) => Hamiltonian::force(planets, t, &q[d..], &mut f[d..]),
+            // not built (democratic heliocentric coordinates have the planets' forces)
+            (None, Transform::Democratic(_)) => {
                 self.scene_forces(t, q, f);
                 self.add_kepler_forces(-T::one(), q, f);
             }
-            Some(planets) => Hamiltonian::force(planets, t, &q[d..], &mut f[d..]),
         }
         f[..d].fill(T::zero());
     }
