@@ -305,15 +305,7 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> KeplerSplit<T, S, K> {
                 dq: [[0.0; LANES]; 3],
                 dp: [[0.0; LANES]; 3],
             };
-            let load = |c: usize, j: usize| {
-                let i = (first + j) * d + c;
-                if j < count && c < d {
-                    (to_f64(q[i]), to_f64(p[i]))
-                } else {
-                    // unused lanes: a unit circle, never read
-                    ((c == 0) as u8 as f64, (c == 1) as u8 as f64)
-                }
-            };
+            let load = |c: usize, j: usize| lane_state(q, p, first, count, d, c, j);
             self.lanes[(first - 1) / LANES].solve_with(to_f64(tau), count, load, &mut flows);
             let mut out = [[[T::zero(); LANES]; 3]; 2];
             for c in 0..d {
@@ -537,6 +529,21 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> KeplerSplit<T, S, K> {
     }
 }
 
+/// Component `c` of the position and the momentum of body `first + j` of `(q, p)` in `d`
+/// dimensions, as lane `j` of a [`KeplerLanes`] holding the bodies `first..first + count`:
+/// zeros beyond `d`, a unit circle in the unused lanes (solved, never read).
+#[inline(always)]
+fn lane_state<T: Real>(q: &[T], p: &[T], first: usize, count: usize, d: usize, c: usize, j: usize) -> (f64, f64) {
+    if j >= count {
+        return ((c == 0) as u8 as f64, (c == 1) as u8 as f64);
+    }
+    if c >= d {
+        return (0.0, 0.0);
+    }
+    let i = (first + j) * d + c;
+    (to_f64(q[i]), to_f64(p[i]))
+}
+
 /// The bodies `first..first + count` of a state `(q, p)` as the lanes of a
 /// [`KeplerLanes`] (`count <= LANES`, `first >= 1`; `T` is `f64` wherever it is used).
 struct ChunkStates<'a, T> {
@@ -550,15 +557,7 @@ struct ChunkStates<'a, T> {
 impl<T: Real> LaneStates for ChunkStates<'_, T> {
     #[inline(always)]
     fn load(&self, c: usize, j: usize) -> (f64, f64) {
-        if j >= self.count {
-            // unused lanes: a unit circle
-            return ((c == 0) as u8 as f64, (c == 1) as u8 as f64);
-        }
-        if c >= self.d {
-            return (0.0, 0.0);
-        }
-        let i = (self.first + j) * self.d + c;
-        (to_f64(self.q[i]), to_f64(self.p[i]))
+        lane_state(self.q, self.p, self.first, self.count, self.d, c, j)
     }
 
     #[inline(always)]
