@@ -491,9 +491,9 @@ impl KeplerLanes {
 
     /// The first `count` problems moved along their orbits for time `tau`, in place: `q +
     /// dq` and `p + dp` with the flows of [`KeplerLanes::solve`] (the same bits), the
-    /// states read and written through `states` (every lane is read; the others' results
-    /// are written too, unless [`LaneStates::store`] ignores them, but not solved again
-    /// when the lanes' sequence does not solve them).
+    /// states read and written through `states`. Every lane is read and, when the lanes'
+    /// sequence solves it, written ([`LaneStates::store`] ignores the unused ones); a lane
+    /// of the first `count` it does not solve is solved again by the scalar solve.
     #[inline(always)]
     pub fn advance(&self, tau: f64, count: usize, states: &mut impl LaneStates) {
         let solved = dispatch(Advance {

@@ -719,6 +719,27 @@ mod tests {
     }
 
     #[test]
+    fn a_linear_problem_drifts_along_its_line() {
+        // a star and a planet on the x axis, moving out on a bound radial orbit: the lanes
+        // see the planet's y and z components as zeros
+        let bodies = NBody::<f64, [f64; 4]>::new(1.0, &[1.0, 1e-3], 1).unwrap();
+        let mut y = [0.0; 4];
+        bodies.set_state(&[0.0, 1.0], &[0.0, 0.5], &mut y).unwrap();
+        let split = KeplerSplit::new(bodies, KeplerCoordinates::Jacobi).unwrap();
+        split.scene_to_split(&mut y);
+        let (mu, mass) = split.kepler[1];
+        let (q, v) = ([y[1], 0.0, 0.0], [y[3] / mass, 0.0, 0.0]);
+        let c = LagrangeCoefficients::new(mu, 0.1, &q, &v);
+        let (x, vx) = (
+            q[0] + c.f_minus_one * q[0] + c.g * v[0],
+            v[0] + c.f_dot * q[0] + c.g_dot_minus_one * v[0],
+        );
+        let (q_split, p_split) = y.split_at_mut(2);
+        split.drift(0.0, 0.1, q_split, p_split, &mut [], &mut ());
+        assert!((q_split[1] - x).abs() <= 1e-15 && (p_split[1] / mass - vx).abs() <= 1e-15);
+    }
+
+    #[test]
     fn the_interaction_on_a_static_shape_is_the_run_time_loops_bit_for_bit() {
         let (mut fixed, mut any) = ([0.0; 24], DVector::zeros(24));
         let (fixed_split, any_split) = (split(&mut fixed), split(&mut any));
