@@ -223,10 +223,10 @@ fn residual<V: Lane>([r0, eta0, zeta0]: [V; 3], g: &[V; 4], s: V, tau: V) -> [V;
     ]
 }
 
-/// The lanes' sequence ([`KeplerLanes`]): the increments `[dq, dp]` of the positions and
+/// The lanes' sequence ([`KeplerLanes`]): the increments `(dq, dp)` of the positions and
 /// momenta, and which lanes it solved.
 #[inline(always)]
-fn solve<V: Lane>(mu: V, mass: V, tau: f64, q: &[V; 3], p: &[V; 3], out: &mut LaneFlows) -> [bool; LANES] {
+fn solve<V: Lane>(mu: V, mass: V, tau: f64, q: &[V; 3], p: &[V; 3]) -> ([V; 3], [V; 3], [bool; LANES]) {
     let tau_l = mu.splat(tau);
     let one = mu.splat(1.0);
     let v = [p[0] / mass, p[1] / mass, p[2] / mass];
@@ -258,10 +258,9 @@ fn solve<V: Lane>(mu: V, mass: V, tau: f64, q: &[V; 3], p: &[V; 3], out: &mut La
     let minus_mu = one.splat(0.0) - mu;
     let (f_minus_one, g_coef) = (minus_mu * g2 * inv_r0, minus_mu * g3 + tau_l);
     let (f_dot, g_dot_minus_one) = (minus_mu * g1 * inv_r0 * inv_r, minus_mu * g2 * inv_r);
-    for c in 0..3 {
-        out.dq[c] = (f_minus_one * q[c] + g_coef * v[c]).array();
-        out.dp[c] = (mass * (f_dot * q[c] + g_dot_minus_one * v[c])).array();
-    }
+    let dq = |c: usize| f_minus_one * q[c] + g_coef * v[c];
+    let dp = |c: usize| mass * (f_dot * q[c] + g_dot_minus_one * v[c]);
+    let (dq, dp) = ([dq(0), dq(1), dq(2)], [dp(0), dp(1), dp(2)]);
     let (size, z0, d, s0) = ((r0_2 + v2 + eta0 + mu).array(), z0.array(), d.array(), s0.array());
     let (ds, s1) = (ds.array(), s1.array());
     // explicit loops, not array::from_fn or map: the calls would not be inlined into the
@@ -274,32 +273,98 @@ fn solve<V: Lane>(mu: V, mass: V, tau: f64, q: &[V; 3], p: &[V; 3], out: &mut La
             && d[k].abs() <= SHORT_SHIFT * s0[k].abs()
             && ds[k].abs() <= CONVERGED * s1[k].abs();
     }
-    solved
+    (dq, dp, solved)
 }
 
-/// [`solve`] in AVX2 registers, as a function value `pulp` runs with the CPU's AVX2
-/// enabled.
+/// Work on lanes of one kind ([`Portable`] or [`Avx2`]), given how to make a lane from
+/// four values: [`dispatch`] runs it in AVX2 registers when the CPU has them.
+trait LaneTask {
+    type Output;
+    fn run<V: Lane>(self, lane: impl Fn([f64; LANES]) -> V) -> Self::Output;
+}
+
+/// `task` in AVX2 registers when the CPU has them (found at run time), in portable code
+/// otherwise.
+#[inline(always)]
+fn dispatch<W: LaneTask>(task: W) -> W::Output {
+    #[cfg(target_arch = "x86_64")]
+    if let Some(simd) = pulp::x86::V3::try_new() {
+        return simd.vectorize(Avx2Task { simd, task });
+    }
+    task.run(Portable)
+}
+
+/// A [`LaneTask`] as a function value `pulp` runs with the CPU's AVX2 enabled.
 #[cfg(target_arch = "x86_64")]
-struct Avx2Solve<'a, F> {
+struct Avx2Task<W> {
     simd: pulp::x86::V3,
+    task: W,
+}
+
+#[cfg(target_arch = "x86_64")]
+impl<W: LaneTask> pulp::NullaryFnOnce for Avx2Task<W> {
+    type Output = W::Output;
+
+    #[inline(always)]
+    fn call(self) -> W::Output {
+        let simd = self.simd;
+        self.task
+            .run(move |x: [f64; LANES]| Avx2(simd, pulp::bytemuck::cast(x)))
+    }
+}
+
+/// [`solve`] from states read by `load(c, j)` (component `c` of lane `j`), into flows.
+struct Solve<'a, F> {
     constants: &'a KeplerLanes,
     tau: f64,
     load: &'a F,
     out: &'a mut LaneFlows,
 }
 
-#[cfg(target_arch = "x86_64")]
-impl<F: Fn(usize, usize) -> (f64, f64)> pulp::NullaryFnOnce for Avx2Solve<'_, F> {
+impl<F: Fn(usize, usize) -> (f64, f64)> LaneTask for Solve<'_, F> {
     type Output = [bool; LANES];
 
     #[inline(always)]
-    fn call(self) -> [bool; LANES] {
+    fn run<V: Lane>(self, lane: impl Fn([f64; LANES]) -> V) -> [bool; LANES] {
         // the states are read here, with AVX2 enabled, straight into registers
-        let simd = self.simd;
-        let lane = move |x: [f64; LANES]| Avx2(simd, pulp::bytemuck::cast(x));
-        let (q, p) = gathered(self.load, lane);
+        let (q, p) = gathered(self.load, &lane);
         let k = self.constants;
-        solve(lane(k.mu), lane(k.mass), self.tau, &q, &p, self.out)
+        let (dq, dp, solved) = solve(lane(k.mu), lane(k.mass), self.tau, &q, &p);
+        for c in 0..3 {
+            self.out.dq[c] = dq[c].array();
+            self.out.dp[c] = dp[c].array();
+        }
+        solved
+    }
+}
+
+/// [`solve`] on states read and written in place through [`LaneStates`]: the lanes it
+/// solved are written, `q + dq` and `p + dp`.
+struct Advance<'a, L> {
+    constants: &'a KeplerLanes,
+    tau: f64,
+    states: &'a mut L,
+}
+
+impl<L: LaneStates> LaneTask for Advance<'_, L> {
+    type Output = [bool; LANES];
+
+    #[inline(always)]
+    fn run<V: Lane>(self, lane: impl Fn([f64; LANES]) -> V) -> [bool; LANES] {
+        let states = self.states;
+        let (q, p) = gathered(&|c, j| states.load(c, j), &lane);
+        let k = self.constants;
+        let (dq, dp, solved) = solve(lane(k.mu), lane(k.mass), self.tau, &q, &p);
+        let new_q = [(q[0] + dq[0]).array(), (q[1] + dq[1]).array(), (q[2] + dq[2]).array()];
+        let new_p = [(p[0] + dp[0]).array(), (p[1] + dp[1]).array(), (p[2] + dp[2]).array()];
+        for j in 0..LANES {
+            if solved[j] {
+                for c in 0..3 {
+                    states.store(c, j, new_q[c][j], new_p[c][j]);
+                }
+            }
+        }
+        solved
     }
 }
 
@@ -341,6 +406,15 @@ pub struct KeplerLanes {
     pub mu: [f64; LANES],
     /// The masses: the momenta are `mass` times the velocities (1 for velocities).
     pub mass: [f64; LANES],
+}
+
+/// Where [`KeplerLanes::advance`] reads and writes the states of its lanes.
+pub trait LaneStates {
+    /// Component `c` (0 to 2) of the position and the momentum of lane `j` (a problem in
+    /// fewer dimensions: zeros beyond them; an unused lane: best a bound orbit).
+    fn load(&self, c: usize, j: usize) -> (f64, f64);
+    /// Sets them (nothing for an unused lane or component).
+    fn store(&mut self, c: usize, j: usize, q: f64, p: f64);
 }
 
 /// What the flows of [`KeplerLanes::solve`] add to the positions and momenta, `[c][k]`.
@@ -407,18 +481,49 @@ impl KeplerLanes {
         load: &F,
         out: &mut LaneFlows,
     ) -> [bool; LANES] {
-        #[cfg(target_arch = "x86_64")]
-        if let Some(simd) = pulp::x86::V3::try_new() {
-            return simd.vectorize(Avx2Solve {
-                simd,
-                constants: self,
-                tau,
-                load,
-                out,
-            });
+        dispatch(Solve {
+            constants: self,
+            tau,
+            load,
+            out,
+        })
+    }
+
+    /// The first `count` problems moved along their orbits for time `tau`, in place: `q +
+    /// dq` and `p + dp` with the flows of [`KeplerLanes::solve`] (the same bits), the
+    /// states read and written through `states`. Every lane is read and, when the lanes'
+    /// sequence solves it, written ([`LaneStates::store`] ignores the unused ones); a lane
+    /// of the first `count` it does not solve is solved again by the scalar solve.
+    #[inline(always)]
+    pub fn advance(&self, tau: f64, count: usize, states: &mut impl LaneStates) {
+        let solved = dispatch(Advance {
+            constants: self,
+            tau,
+            states: &mut *states,
+        });
+        for k in 0..count.min(LANES) {
+            if !solved[k] {
+                self.advance_alone(tau, states, k);
+            }
         }
-        let (q, p) = gathered(load, Portable);
-        solve(Portable(self.mu), Portable(self.mass), tau, &q, &p, out)
+    }
+
+    /// Lane `k` of [`KeplerLanes::advance`] by the scalar solve.
+    #[cold]
+    #[inline(never)]
+    fn advance_alone(&self, tau: f64, states: &mut impl LaneStates, k: usize) {
+        let mut flows = LaneFlows {
+            dq: [[0.0; LANES]; 3],
+            dp: [[0.0; LANES]; 3],
+        };
+        let (q, p) = (
+            [0, 1, 2].map(|c| states.load(c, k).0),
+            [0, 1, 2].map(|c| states.load(c, k).1),
+        );
+        self.solve_alone(tau, q, p, k, &mut flows);
+        for c in 0..3 {
+            states.store(c, k, q[c] + flows.dq[c][k], p[c] + flows.dp[c][k]);
+        }
     }
 
     /// Lane `k` by the scalar solve, into `flows`.
@@ -491,18 +596,16 @@ mod tests {
     #[test]
     fn portable_and_avx2_lanes_give_the_same_bits() {
         let (lanes, q, p) = planets();
-        let lane = |x: &[f64; LANES]| Portable(*x);
         let bits = |x: [[f64; LANES]; 3]| x.map(|c| c.map(f64::to_bits));
         for tau in [10.0, -3.0, 100.0, 2.0] {
             let (mut portable, mut here) = (empty(), empty());
-            let portable_solved = solve(
-                lane(&lanes.mu),
-                lane(&lanes.mass),
+            let portable_solved = Solve {
+                constants: &lanes,
                 tau,
-                &q.each_ref().map(lane),
-                &p.each_ref().map(lane),
-                &mut portable,
-            );
+                load: &|c: usize, j: usize| (q[c][j], p[c][j]),
+                out: &mut portable,
+            }
+            .run(Portable);
             let here_solved = lanes.solve_unchecked(tau, &|c, j| (q[c][j], p[c][j]), &mut here);
             assert_eq!((bits(portable.dq), bits(portable.dp)), (bits(here.dq), bits(here.dp)));
             assert_eq!(portable_solved, here_solved);

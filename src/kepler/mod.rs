@@ -16,7 +16,7 @@ mod universal;
 
 pub use drift::KeplerDrift;
 pub use lagrange::LagrangeCoefficients;
-pub use lanes::{KeplerLanes, LaneFlows, LANES};
+pub use lanes::{KeplerLanes, LaneFlows, LaneStates, LANES};
 pub use stumpff::stumpff;
 
 use crate::Real;

@@ -119,11 +119,18 @@ impl<T: Real> Jacobi<T> {
 
     /// [`Jacobi::positions_from_jacobi`] from `jacobi` into `q` (the same bits).
     pub fn positions_from_jacobi_into(&self, jacobi: &[T], q: &mut [T]) {
-        let (d, n) = (self.dim, self.masses.len());
+        self.positions_from_jacobi_shaped(jacobi, q, self.dim, self.masses.len());
+    }
+
+    /// [`Jacobi::positions_from_jacobi_into`] for `n` bodies in `d` dimensions, the
+    /// coordinates' own: inlined with constants, the loops unroll.
+    #[inline(always)]
+    pub(super) fn positions_from_jacobi_shaped(&self, jacobi: &[T], q: &mut [T], d: usize, n: usize) {
+        let (jacobi, q, ratios) = (&jacobi[..n * d], &mut q[..n * d], &self.ratios[..n]);
         for c in 0..d {
             let mut centre = jacobi[c];
             for k in (1..n).rev() {
-                centre -= self.ratios[k].0 * jacobi[k * d + c];
+                centre -= ratios[k].0 * jacobi[k * d + c];
                 q[k * d + c] = jacobi[k * d + c] + centre;
             }
             q[c] = centre;
@@ -132,12 +139,19 @@ impl<T: Real> Jacobi<T> {
 
     /// Momenta `p` to Jacobi momenta, in place; forces (`-dV/dq`) change the same way.
     pub fn momenta_to_jacobi(&self, p: &mut [T]) {
-        let (d, n) = (self.dim, self.masses.len());
+        self.momenta_to_jacobi_shaped(p, self.dim, self.masses.len());
+    }
+
+    /// [`Jacobi::momenta_to_jacobi`] for `n` bodies in `d` dimensions, the coordinates'
+    /// own: inlined with constants, the loops unroll.
+    #[inline(always)]
+    pub(super) fn momenta_to_jacobi_shaped(&self, p: &mut [T], d: usize, n: usize) {
+        let (p, ratios) = (&mut p[..n * d], &self.ratios[..n]);
         for c in 0..d {
             let mut total = p[c];
             for k in 1..n {
                 let pk = p[k * d + c];
-                let (mass_ratio, inner_ratio) = self.ratios[k];
+                let (mass_ratio, inner_ratio) = ratios[k];
                 p[k * d + c] = inner_ratio * pk - mass_ratio * total;
                 total += pk;
             }

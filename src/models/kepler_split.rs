@@ -6,7 +6,7 @@ use super::democratic_heliocentric::DemocraticHeliocentric;
 use super::jacobi::Jacobi;
 use super::nbody::NBody;
 use super::nbody_shape::{AnyShape, Shape};
-use crate::kepler::{KeplerLanes, LagrangeCoefficients, LaneFlows, LANES};
+use crate::kepler::{KeplerLanes, LagrangeCoefficients, LaneFlows, LaneStates, LANES};
 #[allow(unused_imports)]
 use crate::real::ops::*;
 use crate::{lit, to_f64, Error, Families, Hamiltonian, Problem, QuadraticKinetic, Real, Splittable, State};
@@ -305,15 +305,7 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> KeplerSplit<T, S, K> {
                 dq: [[0.0; LANES]; 3],
                 dp: [[0.0; LANES]; 3],
             };
-            let load = |c: usize, j: usize| {
-                let i = (first + j) * d + c;
-                if j < count && c < d {
-                    (to_f64(q[i]), to_f64(p[i]))
-                } else {
-                    // unused lanes: a unit circle, never read
-                    ((c == 0) as u8 as f64, (c == 1) as u8 as f64)
-                }
-            };
+            let load = |c: usize, j: usize| lane_state(q, p, first, count, d, c, j);
             self.lanes[(first - 1) / LANES].solve_with(to_f64(tau), count, load, &mut flows);
             let mut out = [[[T::zero(); LANES]; 3]; 2];
             for c in 0..d {
@@ -355,6 +347,21 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> KeplerSplit<T, S, K> {
     #[inline(always)]
     fn kepler_in_place(&self, tau: T, q: &mut [T], p: &mut [T]) {
         self.centre_of_mass(tau, p, q);
+        if core::any::TypeId::of::<T>() == core::any::TypeId::of::<f64>() {
+            // the same bits as the flows added below, with fewer copies
+            let (tau, d) = (to_f64(tau), self.bodies.dim());
+            for (first, count) in self.chunks() {
+                let mut states = ChunkStates {
+                    q: &mut *q,
+                    p: &mut *p,
+                    first,
+                    count,
+                    d,
+                };
+                self.lanes[(first - 1) / LANES].advance(tau, count, &mut states);
+            }
+            return;
+        }
         for (first, count) in self.chunks() {
             // each chunk reads its own bodies only
             let chunk = self.kepler_chunk(tau, q, p, first, count);
@@ -413,6 +420,56 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> KeplerSplit<T, S, K> {
         }
     }
 
+    /// The interaction in Jacobi coordinates: the forces of the whole system in the
+    /// scene's coordinates at the Jacobi positions `q`, changed to Jacobi coordinates,
+    /// minus the Kepler problems' forces. For a static state of 2 to 6 bodies in 2-D or
+    /// 3-D, the same operations on arrays of that shape, the loops unrolled.
+    #[inline(always)]
+    fn jacobi_interaction(&self, jacobi: &Jacobi<T>, t: T, q: &[T], f: &mut [T]) {
+        let (d, n) = (self.bodies.dim(), self.kepler.len());
+        // each test is decided at compile time but for the shapes S's length allows
+        macro_rules! static_shapes {
+            ($(($d:literal, $n:literal)),*) => {
+                $(
+                    if S::LEN == Some(2 * $d * $n) && d == $d && n == $n {
+                        return self.jacobi_interaction_shaped::<$d, $n>(jacobi, t, q, f);
+                    }
+                )*
+            };
+        }
+        static_shapes!(
+            (3, 2),
+            (3, 3),
+            (3, 4),
+            (3, 5),
+            (3, 6),
+            (2, 2),
+            (2, 3),
+            (2, 4),
+            (2, 5),
+            (2, 6)
+        );
+        self.scene_forces(t, q, f);
+        self.add_kepler_forces(-T::one(), q, f);
+    }
+
+    /// [`KeplerSplit::jacobi_interaction`] for `N` bodies in `D` dimensions.
+    #[inline(always)]
+    fn jacobi_interaction_shaped<const D: usize, const N: usize>(
+        &self,
+        jacobi: &Jacobi<T>,
+        t: T,
+        q: &[T],
+        f: &mut [T],
+    ) {
+        let mut scene = [[T::zero(); D]; N];
+        let scene = scene.as_flattened_mut();
+        jacobi.positions_from_jacobi_shaped(q, scene, D, N);
+        Hamiltonian::force(&self.bodies, t, scene, f);
+        jacobi.momenta_to_jacobi_shaped(f, D, N);
+        self.add_kepler_forces_shaped(-T::one(), q, f, D, N);
+    }
+
     /// The forces of the whole system in the scene's coordinates at the split's positions
     /// `q`, written into `f`, then changed to the split's coordinates.
     fn scene_forces(&self, t: T, q: &[T], f: &mut [T]) {
@@ -454,14 +511,60 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> KeplerSplit<T, S, K> {
     /// The Kepler problems' forces `-mu_k m'_k q_k / |q_k|^3`, added to `f` with `sign`.
     #[inline(always)]
     fn add_kepler_forces(&self, sign: T, q: &[T], f: &mut [T]) {
-        let d = self.bodies.dim();
-        for (k, &(mu, mass)) in self.kepler.iter().enumerate().skip(1) {
+        self.add_kepler_forces_shaped(sign, q, f, self.bodies.dim(), self.kepler.len());
+    }
+
+    /// [`KeplerSplit::add_kepler_forces`] for the `n` bodies in `d` dimensions: inlined
+    /// with constants, the loop unrolls.
+    #[inline(always)]
+    fn add_kepler_forces_shaped(&self, sign: T, q: &[T], f: &mut [T], d: usize, n: usize) {
+        for (k, &(mu, mass)) in self.kepler[..n].iter().enumerate().skip(1) {
             let qk = &q[k * d..(k + 1) * d];
             let r2 = qk.iter().fold(T::zero(), |s, &x| s + x * x);
             let s = sign * mu * mass / (r2 * r2.sqrt());
             for (f, &x) in f[k * d..(k + 1) * d].iter_mut().zip(qk) {
                 *f -= s * x;
             }
+        }
+    }
+}
+
+/// Component `c` of the position and the momentum of body `first + j` of `(q, p)` in `d`
+/// dimensions, as lane `j` of a [`KeplerLanes`] holding the bodies `first..first + count`:
+/// zeros beyond `d`, a unit circle in the unused lanes (solved, never read).
+#[inline(always)]
+fn lane_state<T: Real>(q: &[T], p: &[T], first: usize, count: usize, d: usize, c: usize, j: usize) -> (f64, f64) {
+    if j >= count {
+        return ((c == 0) as u8 as f64, (c == 1) as u8 as f64);
+    }
+    if c >= d {
+        return (0.0, 0.0);
+    }
+    let i = (first + j) * d + c;
+    (to_f64(q[i]), to_f64(p[i]))
+}
+
+/// The bodies `first..first + count` of a state `(q, p)` as the lanes of a
+/// [`KeplerLanes`] (`count <= LANES`, `first >= 1`; `T` is `f64` wherever it is used).
+struct ChunkStates<'a, T> {
+    q: &'a mut [T],
+    p: &'a mut [T],
+    first: usize,
+    count: usize,
+    d: usize,
+}
+
+impl<T: Real> LaneStates for ChunkStates<'_, T> {
+    #[inline(always)]
+    fn load(&self, c: usize, j: usize) -> (f64, f64) {
+        lane_state(self.q, self.p, self.first, self.count, self.d, c, j)
+    }
+
+    #[inline(always)]
+    fn store(&mut self, c: usize, j: usize, q: f64, p: f64) {
+        if j < self.count && c < self.d {
+            let i = (self.first + j) * self.d + c;
+            (self.q[i], self.p[i]) = (lit(q), lit(p));
         }
     }
 }
@@ -559,12 +662,14 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> Splittable for KeplerSplit<T, S, K
     #[inline]
     fn force(&self, t: T, q: &[T], f: &mut [T]) {
         let d = self.bodies.dim();
-        match &self.planets {
-            None => {
+        match (&self.planets, &self.transform) {
+            (None, Transform::Jacobi(jacobi)) => self.jacobi_interaction(jacobi, t, q, f),
+            (Some(planets), _) => Hamiltonian::force(planets, t, &q[d..], &mut f[d..]),
+            // not built (democratic heliocentric coordinates have the planets' forces)
+            (None, Transform::Democratic(_)) => {
                 self.scene_forces(t, q, f);
                 self.add_kepler_forces(-T::one(), q, f);
             }
-            Some(planets) => Hamiltonian::force(planets, t, &q[d..], &mut f[d..]),
         }
         f[..d].fill(T::zero());
     }
@@ -572,3 +677,78 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> Splittable for KeplerSplit<T, S, K
 
 /// Every Runge-Kutta-Nystrom method ([`Problem::families`]).
 impl<T: Real, S: State<Scalar = T>, K: Shape> QuadraticKinetic for KeplerSplit<T, S, K> {}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use nalgebra::DVector;
+
+    /// A star and three planets in 3-D (G = 1), on eccentric, inclined orbits.
+    fn system() -> (Vec<f64>, [f64; 12], [f64; 12]) {
+        let masses = vec![1.0, 1e-3, 3e-4, 5e-5];
+        let q = [0.0, 0.0, 0.0, 1.0, 0.1, 0.0, -2.0, 0.3, 0.2, 0.5, 3.8, -0.4];
+        let v = [0.0, 0.0, 0.0, 0.1, 1.1, 0.05, -0.1, -0.6, 0.1, -0.5, 0.0, 0.02];
+        (masses, q, v)
+    }
+
+    fn split<S: State<Scalar = f64>>(y: &mut S) -> KeplerSplit<f64, S> {
+        let (masses, q, v) = system();
+        let bodies = NBody::<f64, S>::new(1.0, &masses, 3).unwrap();
+        bodies.set_state(&q, &v, y).unwrap();
+        let split = KeplerSplit::new(bodies, KeplerCoordinates::Jacobi).unwrap();
+        split.scene_to_split(y.as_mut_slice());
+        split
+    }
+
+    #[test]
+    fn the_drift_in_place_is_the_state_plus_its_increment_bit_for_bit() {
+        let mut y = [0.0; 24];
+        let split = split(&mut y);
+        // short steps the lanes solve, and long ones they hand to the scalar solve
+        for tau in [0.01, 0.3, -0.7, 4.0, 40.0] {
+            let (q, p) = y.split_at(12);
+            let (mut moved_q, mut moved_p) = (q.to_vec(), p.to_vec());
+            split.drift(0.0, tau, &mut moved_q, &mut moved_p, &mut [], &mut ());
+            let (mut dq, mut dp) = (vec![0.0; 12], vec![0.0; 12]);
+            split.drift_increment(0.0, tau, q, p, &mut dq, &mut dp, &mut [0.0; 24], &mut ());
+            for i in 0..12 {
+                assert_eq!(moved_q[i].to_bits(), (q[i] + dq[i]).to_bits(), "tau {tau}, q[{i}]");
+                assert_eq!(moved_p[i].to_bits(), (p[i] + dp[i]).to_bits(), "tau {tau}, p[{i}]");
+            }
+        }
+    }
+
+    #[test]
+    fn a_linear_problem_drifts_along_its_line() {
+        // a star and a planet on the x axis, moving out on a bound radial orbit: the lanes
+        // see the planet's y and z components as zeros
+        let bodies = NBody::<f64, [f64; 4]>::new(1.0, &[1.0, 1e-3], 1).unwrap();
+        let mut y = [0.0; 4];
+        bodies.set_state(&[0.0, 1.0], &[0.0, 0.5], &mut y).unwrap();
+        let split = KeplerSplit::new(bodies, KeplerCoordinates::Jacobi).unwrap();
+        split.scene_to_split(&mut y);
+        let (mu, mass) = split.kepler[1];
+        let (q, v) = ([y[1], 0.0, 0.0], [y[3] / mass, 0.0, 0.0]);
+        let c = LagrangeCoefficients::new(mu, 0.1, &q, &v);
+        let (x, vx) = (
+            q[0] + c.f_minus_one * q[0] + c.g * v[0],
+            v[0] + c.f_dot * q[0] + c.g_dot_minus_one * v[0],
+        );
+        let (q_split, p_split) = y.split_at_mut(2);
+        split.drift(0.0, 0.1, q_split, p_split, &mut [], &mut ());
+        assert!((q_split[1] - x).abs() <= 1e-15 && (p_split[1] / mass - vx).abs() <= 1e-15);
+    }
+
+    #[test]
+    fn the_interaction_on_a_static_shape_is_the_run_time_loops_bit_for_bit() {
+        let (mut fixed, mut any) = ([0.0; 24], DVector::zeros(24));
+        let (fixed_split, any_split) = (split(&mut fixed), split(&mut any));
+        assert_eq!(fixed.as_slice(), any.as_slice());
+        let (mut f_fixed, mut f_any) = ([1.0; 12], vec![1.0; 12]);
+        fixed_split.force(0.0, &fixed[..12], &mut f_fixed);
+        any_split.force(0.0, &any.as_slice()[..12], &mut f_any);
+        assert!(f_fixed[3..].iter().all(|f| *f != 0.0 && f.is_finite()));
+        let bits = |f: &[f64]| f.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+        assert_eq!(bits(&f_fixed), bits(&f_any));
+    }
+}
