@@ -323,7 +323,8 @@ fn at(points: &[(f64, f64, f64)], eps: f64, h: f64) -> f64 {
 /// times the round-off floor wherever the step is in its asymptotic regime, so their `p1`
 /// shows only beyond it (h from 0.8 to 1.13): there their error is linear in `eps` and
 /// steeper than `h^8` (measured slopes 10.75 for both), which the test asserts, with the
-/// error at h = 0.4 and eps = 1e-6 below 1e-14 (saba3's `eps h^6` is 6e-14 there).
+/// error at h = 0.4 and eps = 1e-6 below 1e-14 (saba3's `eps h^6` is 6e-14 there). In
+/// double-double arithmetic, tests/kepler_generalized_order.rs fits every term of both.
 #[test]
 fn the_near_integrable_methods_reach_their_generalized_orders() {
     let regime = |points: &[(f64, f64, f64)], masses: &[f64]| -> Vec<(f64, f64, f64)> {

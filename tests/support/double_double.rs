@@ -29,6 +29,7 @@ use nalgebra::{ComplexField, Field, RealField, SimdValue};
 use num_traits::{FromPrimitive, Num, One, Signed, Zero};
 use simba::scalar::SubsetOf;
 use std::cmp::Ordering;
+use std::f64::consts;
 use std::fmt;
 use std::ops::{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Rem, RemAssign, Sub, SubAssign};
 
@@ -62,11 +63,12 @@ fn two_prod(a: f64, b: f64) -> (f64, f64) {
 }
 
 /// Three words of the constants (the third for the reduction of `sin` and `cos` only).
-const PI: [f64; 3] = [3.141592653589793, 1.2246467991473532e-16, -2.9947698097183397e-33];
-const FRAC_PI_2: [f64; 3] = [1.5707963267948966, 6.123233995736766e-17, -1.4973849048591698e-33];
-const TWO_PI: [f64; 2] = [6.283185307179586, 2.4492935982947064e-16];
-const LN_2: [f64; 2] = [0.6931471805599453, 2.3190468138462996e-17];
-const E: [f64; 2] = [2.718281828459045, 1.4456468917292502e-16];
+/// The first word is `f64`'s constant; the others from mpmath at 300 bits.
+const PI: [f64; 3] = [consts::PI, 1.2246467991473532e-16, -2.9947698097183397e-33];
+const FRAC_PI_2: [f64; 3] = [consts::FRAC_PI_2, 6.123233995736766e-17, -1.4973849048591698e-33];
+const TWO_PI: [f64; 2] = [consts::TAU, 2.4492935982947064e-16];
+const LN_2: [f64; 2] = [consts::LN_2, 2.3190468138462996e-17];
+const E: [f64; 2] = [consts::E, 1.4456468917292502e-16];
 
 impl DoubleDouble {
     /// `2^-104`, the spacing of double-double numbers at 1 (as `f64::EPSILON` is `f64`'s).
@@ -189,7 +191,7 @@ impl DoubleDouble {
 
     /// `ln(x)`: one Newton step `y + x exp(-y) - 1` from the `f64` logarithm.
     fn ln_dd(self) -> Self {
-        if !(self.hi > 0.0) || !self.hi.is_finite() {
+        if self.hi <= 0.0 || !self.hi.is_finite() {
             return Self::from_f64(self.hi.ln());
         }
         let y = Self::from_f64(self.hi.ln());
@@ -249,7 +251,7 @@ impl Mul for DoubleDouble {
     /// JMP Algorithm 12 (FMA).
     fn mul(self, b: Self) -> Self {
         let (p, e) = two_prod(self.hi, b.hi);
-        if !p.is_finite() || !(self.hi.is_finite() && b.hi.is_finite()) {
+        if !(p.is_finite() && self.hi.is_finite() && b.hi.is_finite()) {
             return Self::from_f64(p);
         }
         let e = e + (self.hi * b.lo + self.lo * b.hi);
@@ -263,7 +265,7 @@ impl Div for DoubleDouble {
     /// QD's accurate division: three quotient digits, each from the remainder.
     fn div(self, b: Self) -> Self {
         let q1 = self.hi / b.hi;
-        if !q1.is_finite() || !(self.hi.is_finite() && b.hi.is_finite()) {
+        if !(q1.is_finite() && self.hi.is_finite() && b.hi.is_finite()) {
             return Self::from_f64(q1);
         }
         let r = self - b.mul_f64(q1);
@@ -566,7 +568,7 @@ impl ComplexField for DoubleDouble {
     }
     fn floor(self) -> Self {
         let hi = self.hi.floor();
-        if hi == self.hi {
+        if self.hi.fract() == 0.0 {
             // hi is an integer: the fraction is in lo
             let (hi, lo) = fast_two_sum(hi, self.lo.floor());
             Self::normalized(hi, lo)
