@@ -235,9 +235,18 @@ fn generic_code_runs_at_double_double_precision() {
         .all(|e| ComplexField::abs(*e).to_f64() < 1e-30));
 
     let x = dd(2.5, -1.1e-16);
-    let [c0, c1, ..] = stumpff(x * x);
+    let [c0, c1, c2, c3] = stumpff(x * x);
     close("c0", c0, x.cos(), 1e-30);
     close("c1", c1, x.sin() / x, 1e-30);
+    close("c2", c2, (Dd::one() - x.cos()) / (x * x), 1e-30);
+    close("c3", c3, (x - x.sin()) / (x * x * x), 1e-30);
+    // the series side (|z| <= 1, no quartering)
+    let x = f(0.75);
+    let [c0, c1, c2, c3] = stumpff(x * x);
+    close("c0", c0, x.cos(), 1e-31);
+    close("c1", c1, x.sin() / x, 1e-31);
+    close("c2", c2, (Dd::one() - x.cos()) / (x * x), 1e-31);
+    close("c3", c3, (x - x.sin()) / (x * x * x), 1e-31);
 
     let kepler = KeplerDrift::new(Dd::one());
     let (q0, v0) = ([f(1.0), f(0.1), f(0.0)], [f(0.05), f(1.1), f(0.2)]);

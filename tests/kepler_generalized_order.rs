@@ -258,14 +258,19 @@ fn the_loop_is_the_compiled_method_and_exact_coefficients_remove_its_floor() {
 }
 
 /// The `eps h^8` term of both methods, the one the `f64` scans could not reach below
-/// h = 0.8, and its negative control: aba864 with one pair of kicks changed by 1e-9
-/// relative (the method stays symmetric, its kicks no longer sum to 1) fits `h^0`, not
-/// `h^8`.
+/// h = 0.8, and two controls: the same fit gives saba3's `eps h^6` (declared (6, 2)), so
+/// it tells the orders apart; and aba864 with one pair of kicks changed by 1e-9 relative
+/// (the method stays symmetric, its kicks no longer sum to 1) fits `h^0`, not `h^8`.
 #[test]
 fn the_eps_h8_terms_of_saba4_and_aba864_are_measured() {
     for name in ["saba4", "aba864"] {
         assert_generalized_order(name, &[EPS_H8]);
     }
+    let eps_h6 = Term {
+        declared: (1.0, 6.0),
+        ..EPS_H8
+    };
+    assert_generalized_order("saba3", &[eps_h6]);
     let mut perturbed = Fractions::catalog("aba864");
     let n = perturbed.kick.len();
     for i in [0, n - 2] {

@@ -807,8 +807,9 @@ impl RealField for DoubleDouble {
             self
         }
     }
+    /// Panics when `min > max`, as `f64::clamp`.
     fn clamp(self, min: Self, max: Self) -> Self {
-        assert!(min <= max);
+        assert!(min <= max, "clamp: {min} > {max}");
         RealField::min(RealField::max(self, min), max)
     }
     /// Newton on `sin` and `cos` from the `f64` angle: `z + (y/r - sin z) / cos z` where
