@@ -200,6 +200,62 @@ fn the_other_functions_agree_with_mpmath_to_1e_30() {
     assert!(ComplexField::abs(Dd::pi().sin()).to_f64() < 1e-32);
 }
 
+/// The functions no measurement uses are correct too (none falls back to `f64`).
+#[test]
+fn the_remaining_functions_agree_with_mpmath_to_1e_30() {
+    let f = Dd::from_f64;
+    let x = f(0.7);
+    let table = [
+        ("tan", x.tan(), (0.8422883804630794, -3.9128846706146343e-17)),
+        ("acos", x.acos(), (0.7953988301841436, 2.7282065511033407e-17)),
+        ("atan", x.atan(), (0.6107259643892086, 2.2418914462967458e-17)),
+        ("asinh", x.asinh(), (0.6526665660823557, 1.3538893500858175e-17)),
+        ("atanh", x.atanh(), (0.8673005276940531, 2.6798989803716658e-17)),
+        ("acosh", f(1.5).acosh(), (0.9624236501192069, -4.651563402692547e-17)),
+        ("cosh", x.cosh(), (1.255169005630943, -3.986629140481058e-17)),
+        ("exp2", x.exp2(), (1.624504792712471, 4.8844282126282756e-17)),
+        ("log2", x.log2(), (-0.5145731728297583, 8.76352077439819e-18)),
+        ("log10", x.log10(), (-0.1549019599857432, -9.586393079652633e-18)),
+        ("powf", x.powf(f(2.5)), (0.409963413001697, -2.1147976179140544e-17)),
+        ("hypot", f(0.3).hypot(f(0.4)), (0.5, 1.1102230246251566e-17)),
+        ("cbrt", f(-0.7).cbrt(), (-0.8879040017426006, -4.3733757090121296e-17)),
+    ];
+    for (name, got, (h, l)) in table {
+        close(name, got / dd(h, l), Dd::one(), 1e-30);
+    }
+    close("powi", x.powi(-3) * x.powi(3), Dd::one(), 1e-31);
+    close("powf of a negative base", f(-2.0).powf(f(3.0)), f(-8.0), 0.0);
+}
+
+#[test]
+#[allow(clippy::float_cmp)] // exact values
+fn rounding_and_integers_are_exact() {
+    let f = Dd::from_f64;
+    // 4 - 2^-60 (hi = 4, lo < 0): floor 3, ceil 4, round 4, trunc 3
+    let x = f(4.0) - f(2f64.powi(-60));
+    assert_eq!(
+        (
+            x.floor().to_f64(),
+            x.ceil().to_f64(),
+            x.round().to_f64(),
+            x.trunc().to_f64()
+        ),
+        (3.0, 4.0, 4.0, 3.0)
+    );
+    assert_eq!(
+        ((f(3.0) + f(0.5)).round().to_f64(), (f(-2.5)).round().to_f64()),
+        (4.0, -3.0)
+    );
+    assert_eq!(((-x).trunc().to_f64(), (-x).floor().to_f64()), (-3.0, -4.0));
+    close("fract", x.fract(), f(1.0) - f(2f64.powi(-60)), 0.0);
+    close("rem", f(7.5) % f(2.0), f(1.5), 0.0);
+    // i64 and u64 beyond 2^53, exactly
+    let big = <Dd as num_traits::FromPrimitive>::from_i64(i64::MAX).unwrap();
+    assert_eq!((big.hi, big.lo), (9223372036854775808.0, -1.0));
+    let big = <Dd as num_traits::FromPrimitive>::from_u64((1 << 60) + 1).unwrap();
+    assert_eq!((big.hi, big.lo), (2f64.powi(60), 1.0));
+}
+
 #[test]
 fn decimals_are_read_to_the_last_digit() {
     let x = Dd::from_str_radix("0.0711334264982231177779387300061549964174", 10).unwrap();

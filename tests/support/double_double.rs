@@ -389,13 +389,14 @@ impl Signed for DoubleDouble {
 impl FromPrimitive for DoubleDouble {
     fn from_i64(n: i64) -> Option<Self> {
         let hi = n as f64;
-        // the rounding error of `n as f64` is an integer below 2^11: exact in i64 and f64
-        let lo = n.wrapping_sub(hi as i64) as f64;
+        // the rounding error of `n as f64`, an integer below 2^10, exact in f64 (in i128:
+        // `hi` may be 2^63, beyond i64)
+        let lo = (i128::from(n) - hi as i128) as f64;
         Some(Self::new(hi, lo))
     }
     fn from_u64(n: u64) -> Option<Self> {
         let hi = n as f64;
-        let lo = (n as i128 - hi as i128) as f64;
+        let lo = (i128::from(n) - hi as i128) as f64;
         Some(Self::new(hi, lo))
     }
     fn from_f64(x: f64) -> Option<Self> {
