@@ -69,10 +69,38 @@ pub fn gyration_coefficients<T: Real>(x: T) -> [T; 3] {
 /// The Stumpff functions `(c1(z), c2(z), c3(z))` by their Taylor series (`c1(x^2) = sin x / x`,
 /// `c2(x^2) = (1 - cos x) / x^2`, `c3(x^2) = (x - sin x) / x^3`, for either sign of `z`),
 /// accurate to round-off for `|z| <= 1`: the coefficients of [`gyration_coefficients`], shared
-/// with the Kepler drift ([`crate::kepler::stumpff`]).
+/// with the Kepler drift ([`crate::kepler::stumpff`]). A scalar finer than `f64` (a
+/// double-double) sums the series to its own precision ([`stumpff_series_to_precision`]);
+/// the test is on a constant, so `f64` compiles to the 9-term series alone.
 #[inline(always)]
 pub(crate) fn stumpff_series<T: Real>(z: T) -> [T; 3] {
+    if T::default_epsilon() < lit::<T>(0.5 * f64::EPSILON) {
+        return stumpff_series_to_precision(z);
+    }
     [series(&S1, z), series(&C2, z), series(&C3, z)]
+}
+
+/// [`stumpff_series`] for a scalar finer than `f64`: `c_k(z) = (1/k!) (1 - z / ((k+1)(k+2))
+/// (1 - z / ((k+3)(k+4)) (...)))` by Horner's rule, to the term below the scalar's epsilon
+/// (`1/(2n + 1)! < eps`: 15 terms for a double-double), every factor an exact integer (no
+/// `f64` coefficient, which would be rounded to `f64`'s precision).
+#[cold]
+fn stumpff_series_to_precision<T: Real>(z: T) -> [T; 3] {
+    let eps = to_f64(T::default_epsilon());
+    let (mut terms, mut factorial) = (1u32, 1.0f64);
+    while 1.0 / factorial >= eps && terms < 40 {
+        terms += 1;
+        factorial *= f64::from(2 * terms) * f64::from(2 * terms + 1);
+    }
+    let mut out = [T::zero(); 3];
+    for (k, c) in (1u32..=3).zip(out.iter_mut()) {
+        let mut sum = T::one();
+        for j in (1..=terms).rev() {
+            sum = T::one() - z * sum / lit::<T>(f64::from((2 * j + k - 1) * (2 * j + k)));
+        }
+        *c = sum / lit::<T>([1.0, 2.0, 6.0][k as usize - 1]);
+    }
+    out
 }
 
 /// `sum_k c_k y^k` by Horner's rule.
