@@ -15,7 +15,7 @@ use dense::Between;
 pub use dense::{hermite, hermite5, hermite_order};
 pub use events::{Crossing, Event, EventHit};
 pub use record::{Interrupted, Recorder, Solution, Stats, StopEvent};
-pub(crate) use run::{steps_in_place, steps_inline};
+pub(crate) use run::{steps_in_place, steps_unchecked};
 
 #[allow(unused_imports)]
 use crate::real::ops::*;

@@ -359,6 +359,39 @@ pub(crate) fn steps_inline<P: Problem, St: Stepper<P> + ?Sized>(
     Ok(())
 }
 
+/// The loop of [`steps_inline`] without its per-step check: steps `range` on a copy of `y`,
+/// and true, with `y` the state reached, when every step succeeded and that state is finite;
+/// false, with `y` untouched, otherwise. For a stepper that runs it on a copy of itself and
+/// on false replays the run from `y` through [`steps_in_place`], which finds the failing step: the outcome is then that of
+/// the checked loop, and a run that succeeds pays no check per step (on the outer solar
+/// system the check cost the triple jump 3.4% of a step, docs/benchmarks.md). A value that
+/// turns non-finite and back within one run would escape it; no flow of this crate does
+/// that (NaN stays NaN, and an infinite position stays infinite under drifts and kicks).
+#[inline(always)]
+pub(crate) fn steps_unchecked<P: Problem, St: Stepper<P> + ?Sized>(
+    stepper: &mut St,
+    p: &P,
+    StepRun { t0, h, range }: StepRun<P::Scalar>,
+    y: &mut P::State,
+) -> bool {
+    // on a local copy: the compiler keeps a local state's parts in registers across steps
+    let mut local = y.clone();
+    let mut failed = None;
+    for i in range {
+        // no early return and no call in the loop
+        if let Err(e) = stepper.step_in_place(p, t0 + lit::<P::Scalar>(i as f64) * h, h, &mut local) {
+            failed = Some(e);
+            break;
+        }
+    }
+    // on failure `y` keeps the state the run started from, for the replay
+    let done = failed.is_none() && local.is_finite();
+    if done {
+        *y = local;
+    }
+    done
+}
+
 /// Step `i`, from `t` by `h`, in place; an error when the state is no longer finite.
 #[inline(always)]
 fn step_checked<P: Problem, St: Stepper<P> + ?Sized>(
