@@ -6,27 +6,31 @@
 //! ```sh
 //! cargo run --release --example outer_solar_front -- time [--span DAYS] [--dt DAYS] [--reps N] [--methods LIST]
 //! cargo run --release --example outer_solar_front -- front [--span DAYS] [--dts LIST] [--cadence DAYS] [--methods LIST]
-//!     [--kepler-dts LIST]
+//!     [--kepler-dts LIST] [--comp-dts LIST]
 //! cargo run --release --example outer_solar_front -- plot FRONT.json OUT.svg
 //! ```
 //!
 //! Our methods: splittings and compositions over the N-body problem's `T + V` split, and
 //! (`kepler/...`) over the Kepler split in Jacobi coordinates (`KeplerSplit`: the drift every
 //! planet's exact Kepler motion, the kick the planets' mutual pull; `kepler/wisdom_holman` is
-//! Wisdom-Holman, drift-kick-drift as REBOUND's WHFast, uncorrected). `--methods a,b,...`
-//! picks some (default: all).
+//! Wisdom-Holman, drift-kick-drift as REBOUND's WHFast, uncorrected; `kepler+comp/...` the
+//! same with compensated summation, `Stepper::set_compensated`). `--methods a,b,...` picks
+//! some (default: all).
 //!
 //! - `time`: ns per step of each method at one `dt` (default 10 days) over `span` (default
 //!   360000 days), best of `reps` runs (default 3). One call is one round: the script calls
 //!   it between REBOUND's rounds so that the two are interleaved.
 //! - `front`: for each method and each `dt` (default 100, 50, 20, 10, 5, 2, 1 days; the
-//!   `kepler/` methods also at the steps of `--kepler-dts`, which may exceed the cadence): max
+//!   `kepler/` methods also at the steps of `--kepler-dts`, which may exceed the cadence; the
+//!   `kepler+comp/` ones only at `--comp-dts`, default 300, 200, 150, 100, 50): max
 //!   |dE/E| sampled every `cadence` days (default 100), the positions at `span` and their
 //!   error against a reference run of ours (Kahan-Li 8 at dt = 10 days; the script measures
 //!   every run, ours and REBOUND's, against REBOUND's IAS15 instead, which has the smaller
 //!   round-off), and the run's wall time (best of 3, no sampling). Then our adaptive
 //!   `dop853` and `verner9` at tolerances `--tols` (default 1e-8, 1e-10, 1e-12, 1e-14;
-//!   energy checked at every accepted step).
+//!   energy checked at every accepted step). Also `compensation_check` (a compensated run
+//!   against the same run uncompensated at a coarse step; asserted below 1e-9 AU) and
+//!   `candidates`, compensated runs at short steps for the script's check of the reference.
 //! - `plot`: reads the combined front written by the script and draws the work-precision
 //!   diagrams (error against seconds) with plotters.
 
@@ -67,32 +71,69 @@ type Sampled = fn(&Nb, &[f64; 24], f64, usize, usize) -> ([f64; 24], f64);
 /// A series of the plot: its label and its points (seconds, position error, max |dE/E|).
 type Series = (String, Vec<(f64, f64, f64)>);
 
-/// `steps` steps of `h` in place, the fixed-step driver's loop without records.
-fn run<M: SplittingMethod>(nb: &Nb, y0: &[f64; 24], h: f64, steps: usize) -> [f64; 24]
+/// One step of `h` on `y`: in place (the fixed-step driver's path), or with compensated
+/// summation (`COMP`) through `step` and `accept`, which keep Kahan's carry from one step to
+/// the next (a compensated splitting stepper does not step in place).
+#[inline(always)]
+fn advance<P, St, const COMP: bool>(st: &mut St, p: &P, t: f64, h: f64, y: &mut [f64; 24]) -> Result<(), stormer::Error>
+where
+    P: Problem<Scalar = f64, State = [f64; 24]>,
+    St: Stepper<P>,
+{
+    if COMP {
+        let from = *y;
+        st.step(p, t, h, &from, y)?;
+        st.accept();
+        Ok(())
+    } else {
+        st.step_in_place(p, t, h, y)
+    }
+}
+
+/// A splitting stepper for `problem` from `y0`, compensated if `COMP`.
+fn stepper<M: SplittingMethod, P: Problem<Scalar = f64, State = [f64; 24]>, const COMP: bool>(
+    y0: &[f64; 24],
+) -> SplittingStepper<M, [f64; 24]>
+where
+    SplittingStepper<M, [f64; 24]>: Stepper<P>,
+{
+    let mut st = SplittingStepper::<M, [f64; 24]>::new(y0).expect("a splitting stepper");
+    Stepper::<P>::set_compensated(&mut st, COMP).expect("a compensated form");
+    assert!(COMP || Stepper::<P>::steps_in_place(&st));
+    st
+}
+
+/// `steps` steps of `h`, the fixed-step driver's loop without records.
+fn run<M: SplittingMethod, const COMP: bool>(nb: &Nb, y0: &[f64; 24], h: f64, steps: usize) -> [f64; 24]
 where
     SplittingStepper<M, [f64; 24]>: Stepper<Nb>,
 {
-    let mut st = SplittingStepper::<M, [f64; 24]>::new(y0).expect("a splitting stepper");
-    assert!(Stepper::<Nb>::steps_in_place(&st));
+    let mut st = stepper::<M, Nb, COMP>(y0);
     let mut y = *y0;
     for i in 0..steps {
-        let r = st.step_in_place(nb, i as f64 * h, h, &mut y);
+        let r = advance::<_, _, COMP>(&mut st, nb, i as f64 * h, h, &mut y);
         debug_assert!(r.is_ok());
     }
     y
 }
 
 /// The same, with max |dE/E| sampled every `every` steps (and at the end).
-fn sampled<M: SplittingMethod>(nb: &Nb, y0: &[f64; 24], h: f64, steps: usize, every: usize) -> ([f64; 24], f64)
+fn sampled<M: SplittingMethod, const COMP: bool>(
+    nb: &Nb,
+    y0: &[f64; 24],
+    h: f64,
+    steps: usize,
+    every: usize,
+) -> ([f64; 24], f64)
 where
     SplittingStepper<M, [f64; 24]>: Stepper<Nb>,
 {
-    let mut st = SplittingStepper::<M, [f64; 24]>::new(y0).expect("a splitting stepper");
+    let mut st = stepper::<M, Nb, COMP>(y0);
     let e0 = nb.energy(0.0, y0).expect("an energy");
     let mut y = *y0;
     let mut worst: f64 = 0.0;
     for i in 0..steps {
-        st.step_in_place(nb, i as f64 * h, h, &mut y).expect("a finite step");
+        advance::<_, _, COMP>(&mut st, nb, i as f64 * h, h, &mut y).expect("a finite step");
         if (i + 1) % every == 0 || i + 1 == steps {
             let e = nb.energy((i + 1) as f64 * h, &y).expect("an energy");
             worst = worst.max(((e - e0) / e0).abs());
@@ -104,34 +145,38 @@ where
 /// The same over the Kepler split in Jacobi coordinates (`KeplerSplit`, the drift every
 /// planet's exact Kepler motion): the state changed to Jacobi coordinates before the loop
 /// and back after it.
-fn run_kepler<M: SplittingMethod>(nb: &Nb, y0: &[f64; 24], h: f64, steps: usize) -> [f64; 24]
+fn run_kepler<M: SplittingMethod, const COMP: bool>(nb: &Nb, y0: &[f64; 24], h: f64, steps: usize) -> [f64; 24]
 where
     SplittingStepper<M, [f64; 24]>: Stepper<Split>,
 {
     let split = Split::new(nb.clone(), KeplerCoordinates::Jacobi).expect("one dominant body");
     let mut y = split.from_scene(y0);
-    let mut st = SplittingStepper::<M, [f64; 24]>::new(&y).expect("a splitting stepper");
-    assert!(Stepper::<Split>::steps_in_place(&st));
+    let mut st = stepper::<M, Split, COMP>(&y);
     for i in 0..steps {
-        let r = st.step_in_place(&split, i as f64 * h, h, &mut y);
+        let r = advance::<_, _, COMP>(&mut st, &split, i as f64 * h, h, &mut y);
         debug_assert!(r.is_ok());
     }
     split.to_scene(&y)
 }
 
 /// [`run_kepler`] with max |dE/E| (the N-body energy) sampled every `every` steps.
-fn sampled_kepler<M: SplittingMethod>(nb: &Nb, y0: &[f64; 24], h: f64, steps: usize, every: usize) -> ([f64; 24], f64)
+fn sampled_kepler<M: SplittingMethod, const COMP: bool>(
+    nb: &Nb,
+    y0: &[f64; 24],
+    h: f64,
+    steps: usize,
+    every: usize,
+) -> ([f64; 24], f64)
 where
     SplittingStepper<M, [f64; 24]>: Stepper<Split>,
 {
     let split = Split::new(nb.clone(), KeplerCoordinates::Jacobi).expect("one dominant body");
     let mut y = split.from_scene(y0);
-    let mut st = SplittingStepper::<M, [f64; 24]>::new(&y).expect("a splitting stepper");
+    let mut st = stepper::<M, Split, COMP>(&y);
     let e0 = nb.energy(0.0, y0).expect("an energy");
     let mut worst: f64 = 0.0;
     for i in 0..steps {
-        st.step_in_place(&split, i as f64 * h, h, &mut y)
-            .expect("a finite step");
+        advance::<_, _, COMP>(&mut st, &split, i as f64 * h, h, &mut y).expect("a finite step");
         if (i + 1) % every == 0 || i + 1 == steps {
             let e = split.energy((i + 1) as f64 * h, &y).expect("an energy");
             worst = worst.max(((e - e0) / e0).abs());
@@ -140,14 +185,22 @@ where
     (split.to_scene(&y), worst)
 }
 
+/// A method over the Kepler split; `compensated` for Kahan's summation of each step's
+/// increment (the Kepler drift's increment form).
 macro_rules! kepler_method {
     ($ty:ty, $name:literal, $order:literal, $evals:literal) => {
+        kepler_method!($ty, $name, $order, $evals, false)
+    };
+    ($ty:ty, $name:literal, $order:literal, $evals:literal, compensated) => {
+        kepler_method!($ty, $name, $order, $evals, true)
+    };
+    ($ty:ty, $name:literal, $order:literal, $evals:literal, $comp:literal) => {
         Method {
             name: $name,
             order: $order,
             evals: $evals,
-            run: run_kepler::<$ty>,
-            sampled: sampled_kepler::<$ty>,
+            run: run_kepler::<$ty, $comp>,
+            sampled: sampled_kepler::<$ty, $comp>,
         }
     };
 }
@@ -158,8 +211,8 @@ macro_rules! method {
             name: $name,
             order: $order,
             evals: $evals,
-            run: run::<$ty>,
-            sampled: sampled::<$ty>,
+            run: run::<$ty, false>,
+            sampled: sampled::<$ty, false>,
         }
     };
 }
@@ -180,6 +233,10 @@ fn methods() -> Vec<Method> {
         kepler_method!(Abah864, "kepler/abah864", 4, 7),
         kepler_method!(Aba864, "kepler/aba864", 4, 7),
         kepler_method!(Aba1064, "kepler/aba1064", 4, 9),
+        // the same with compensated summation (`kepler+comp/`, at `--comp-dts` only): the
+        // round-off of 1e4 uncompensated steps is the floor of the runs above (~3e-11 AU)
+        kepler_method!(Aba864, "kepler+comp/aba864", 4, 7, compensated),
+        kepler_method!(Aba1064, "kepler+comp/aba1064", 4, 9, compensated),
     ]
 }
 
@@ -243,6 +300,20 @@ fn num(args: &[String], name: &str, default: f64) -> f64 {
     arg(args, name).map_or(default, |s| {
         s.parse().unwrap_or_else(|_| panic!("{name}: not a number: {s}"))
     })
+}
+
+/// The comma-separated step sizes of option `name` (`default` when absent; "" for none).
+fn list(args: &[String], name: &str, default: &str) -> Vec<f64> {
+    arg(args, name)
+        .unwrap_or_else(|| default.into())
+        .split(',')
+        .filter(|s| !s.trim().is_empty())
+        .map(|s| {
+            s.trim()
+                .parse()
+                .unwrap_or_else(|_| panic!("{name}: not a list of step sizes: {s}"))
+        })
+        .collect()
 }
 
 fn steps_for(span: f64, h: f64) -> usize {
@@ -310,18 +381,9 @@ fn front(args: &[String]) {
     let (nb, y0) = problem();
     let span = num(args, "--span", 360000.0);
     let cadence = num(args, "--cadence", 100.0);
-    let kepler_dts: Vec<f64> = arg(args, "--kepler-dts")
-        .map(|list| {
-            list.split(',')
-                .map(|s| s.trim().parse().expect("a list of step sizes"))
-                .collect()
-        })
-        .unwrap_or_default();
-    let dts: Vec<f64> = arg(args, "--dts")
-        .unwrap_or_else(|| "100,50,20,10,5,2,1".into())
-        .split(',')
-        .map(|s| s.trim().parse().expect("a list of step sizes"))
-        .collect();
+    let kepler_dts = list(args, "--kepler-dts", "");
+    let dts = list(args, "--dts", "100,50,20,10,5,2,1");
+    let comp_dts = list(args, "--comp-dts", "300,200,150,100,50");
     let all = selected(args);
     let catalogue = methods();
     let reference_method = catalogue.iter().find(|m| m.name == "kahan_li8").expect("kahan_li8");
@@ -335,13 +397,16 @@ fn front(args: &[String]) {
     let coarse = (reference_method.run)(&nb, &y0, 0.5 * h_ref, steps_for(span, 0.5 * h_ref));
     let mut rows = Vec::new();
     for m in &all {
-        // the Kepler split's methods also at longer steps (`--kepler-dts`, default none)
-        let longer = if m.name.starts_with("kepler/") {
-            &kepler_dts[..]
+        // the Kepler split's methods also at longer steps (`--kepler-dts`, default none);
+        // the compensated ones at `--comp-dts` only
+        let (longer, usual) = if m.name.starts_with("kepler+comp/") {
+            (&comp_dts[..], &[][..])
+        } else if m.name.starts_with("kepler/") {
+            (&kepler_dts[..], &dts[..])
         } else {
-            &[][..]
+            (&[][..], &dts[..])
         };
-        for &h in longer.iter().chain(&dts) {
+        for &h in longer.iter().chain(usual) {
             let steps = steps_for(span, h);
             let every = steps_for(cadence.max(h), h);
             let (y, de) = (m.sampled)(&nb, &y0, h, steps, every);
@@ -388,12 +453,55 @@ fn front(args: &[String]) {
     println!(
         "{{\"span\": {span:e}, \"cadence\": {cadence:e}, \"G\": {G:e}, \"masses\": {}, \"y0\": {y0_json}, \
          \"reference\": {{\"method\": \"kahan_li8\", \"dt\": {h_ref:e}, \"seconds\": {ref_secs:e}, \
-         \"positions\": {}, \"self_check\": {:e}}}, \"rows\": [\n{}\n]}}",
+         \"positions\": {}, \"self_check\": {:e}}}, \"compensation_check\": {:e}, \"candidates\": [{}], \"rows\": [\n{}\n]}}",
         json_list(&MASSES),
         json_list(&reference[..12]),
         position_error(&coarse, &reference),
+        compensation_check(&nb, &y0, span),
+        candidates(&nb, &y0, span).join(", "),
         rows.join(",\n")
     );
+}
+
+/// How far a compensated Kepler-split run is from the same run uncompensated, where the
+/// truncation error (3e-7 AU for ABA(10,6,4) at 600 days) dwarfs the round-off that
+/// compensation removes: the two must agree to round-off (~1e-10 AU), or the compensated
+/// form is not the same method.
+fn compensation_check(nb: &Nb, y0: &[f64; 24], span: f64) -> f64 {
+    let (h, steps) = (600.0, steps_for(span, 600.0));
+    let plain = run_kepler::<Aba1064, false>(nb, y0, h, steps);
+    let compensated = run_kepler::<Aba1064, true>(nb, y0, h, steps);
+    let gap = position_error(&compensated, &plain);
+    assert!(
+        gap < 1e-9,
+        "compensated aba1064 is {gap:e} AU from the uncompensated run at dt 600"
+    );
+    gap
+}
+
+/// Candidates for a reference better than IAS15's round-off: compensated runs at short
+/// steps, where the truncation error is far below 1e-12 AU, by two methods of different
+/// kinds (the Kepler split's ABA(10,6,4) and ABA(8,6,4), and Kahan-Li 8 over `T + V`, no
+/// Kepler solver and no coordinate change), so that errors they share are unlikely. The
+/// script measures them against each other and against IAS15.
+fn candidates(nb: &Nb, y0: &[f64; 24], span: f64) -> Vec<String> {
+    type Run = fn(&Nb, &[f64; 24], f64, usize) -> [f64; 24];
+    let runs: [(&str, f64, Run); 5] = [
+        ("kepler+comp/aba1064", 20.0, run_kepler::<Aba1064, true>),
+        ("kepler+comp/aba1064", 10.0, run_kepler::<Aba1064, true>),
+        ("kepler+comp/aba864", 10.0, run_kepler::<Aba864, true>),
+        ("kahan_li8+comp", 2.0, run::<KahanLi8, true>),
+        ("kahan_li8+comp", 1.0, run::<KahanLi8, true>),
+    ];
+    runs.iter()
+        .map(|&(name, h, run)| {
+            let y = run(nb, y0, h, steps_for(span, h));
+            format!(
+                "{{\"method\": \"{name}\", \"dt\": {h:e}, \"positions\": {}}}",
+                json_list(&y[..12])
+            )
+        })
+        .collect()
 }
 
 fn plot(args: &[String]) {
@@ -432,7 +540,7 @@ fn plot(args: &[String]) {
             }
         }
     }
-    let root = SVGBackend::new(output, (1500, 640)).into_drawing_area();
+    let root = SVGBackend::new(output, (1500, 700)).into_drawing_area();
     root.fill(&WHITE).expect("draw");
     let (plots, legend) = root.split_horizontally(1260);
     let panels = plots.split_evenly((1, 2));
