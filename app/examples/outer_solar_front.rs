@@ -103,22 +103,59 @@ where
     st
 }
 
-/// `steps` steps of `h`, the fixed-step driver's loop without records.
-fn run<M: SplittingMethod, const COMP: bool>(nb: &Nb, y0: &[f64; 24], h: f64, steps: usize) -> [f64; 24]
-where
-    SplittingStepper<M, [f64; 24]>: Stepper<Nb>,
-{
-    let mut st = stepper::<M, Nb, COMP>(y0);
-    let mut y = *y0;
-    for i in 0..steps {
-        let r = advance::<_, _, COMP>(&mut st, nb, i as f64 * h, h, &mut y);
-        debug_assert!(r.is_ok());
-    }
-    y
+/// The coordinates a method steps in: the scene's (the N-body problem's T + V split), or
+/// Jacobi coordinates over the Kepler split; the state changed to them before the loop and
+/// back after it.
+trait Space: Problem<Scalar = f64, State = [f64; 24]> + Sized {
+    fn of(nb: &Nb) -> Self;
+    fn from_scene(&self, y: &[f64; 24]) -> [f64; 24];
+    fn to_scene(&self, y: &[f64; 24]) -> [f64; 24];
 }
 
-/// The same, with max |dE/E| sampled every `every` steps (and at the end).
-fn sampled<M: SplittingMethod, const COMP: bool>(
+impl Space for Nb {
+    fn of(nb: &Nb) -> Self {
+        nb.clone()
+    }
+    fn from_scene(&self, y: &[f64; 24]) -> [f64; 24] {
+        *y
+    }
+    fn to_scene(&self, y: &[f64; 24]) -> [f64; 24] {
+        *y
+    }
+}
+
+/// The Kepler split in Jacobi coordinates (`KeplerSplit`, the drift every planet's exact
+/// Kepler motion).
+impl Space for Split {
+    fn of(nb: &Nb) -> Self {
+        Split::new(nb.clone(), KeplerCoordinates::Jacobi).expect("one dominant body")
+    }
+    fn from_scene(&self, y: &[f64; 24]) -> [f64; 24] {
+        KeplerSplit::from_scene(self, y)
+    }
+    fn to_scene(&self, y: &[f64; 24]) -> [f64; 24] {
+        KeplerSplit::to_scene(self, y)
+    }
+}
+
+/// `steps` steps of `h` in `Sp`, the fixed-step driver's loop without records.
+fn run<M: SplittingMethod, Sp: Space, const COMP: bool>(nb: &Nb, y0: &[f64; 24], h: f64, steps: usize) -> [f64; 24]
+where
+    SplittingStepper<M, [f64; 24]>: Stepper<Sp>,
+{
+    let space = Sp::of(nb);
+    let mut y = space.from_scene(y0);
+    let mut st = stepper::<M, Sp, COMP>(&y);
+    for i in 0..steps {
+        let r = advance::<_, _, COMP>(&mut st, &space, i as f64 * h, h, &mut y);
+        debug_assert!(r.is_ok());
+    }
+    space.to_scene(&y)
+}
+
+/// The same, with max |dE/E| of the N-body energy sampled every `every` steps (and at the
+/// end).
+fn sampled<M: SplittingMethod, Sp: Space, const COMP: bool>(
     nb: &Nb,
     y0: &[f64; 24],
     h: f64,
@@ -126,117 +163,58 @@ fn sampled<M: SplittingMethod, const COMP: bool>(
     every: usize,
 ) -> ([f64; 24], f64)
 where
-    SplittingStepper<M, [f64; 24]>: Stepper<Nb>,
+    SplittingStepper<M, [f64; 24]>: Stepper<Sp>,
 {
-    let mut st = stepper::<M, Nb, COMP>(y0);
+    let space = Sp::of(nb);
     let e0 = nb.energy(0.0, y0).expect("an energy");
-    let mut y = *y0;
+    let mut y = space.from_scene(y0);
+    let mut st = stepper::<M, Sp, COMP>(&y);
     let mut worst: f64 = 0.0;
     for i in 0..steps {
-        advance::<_, _, COMP>(&mut st, nb, i as f64 * h, h, &mut y).expect("a finite step");
+        advance::<_, _, COMP>(&mut st, &space, i as f64 * h, h, &mut y).expect("a finite step");
         if (i + 1) % every == 0 || i + 1 == steps {
-            let e = nb.energy((i + 1) as f64 * h, &y).expect("an energy");
+            let e = space.energy((i + 1) as f64 * h, &y).expect("an energy");
             worst = worst.max(((e - e0) / e0).abs());
         }
     }
-    (y, worst)
+    (space.to_scene(&y), worst)
 }
 
-/// The same over the Kepler split in Jacobi coordinates (`KeplerSplit`, the drift every
-/// planet's exact Kepler motion): the state changed to Jacobi coordinates before the loop
-/// and back after it.
-fn run_kepler<M: SplittingMethod, const COMP: bool>(nb: &Nb, y0: &[f64; 24], h: f64, steps: usize) -> [f64; 24]
+/// A method stepping in `Sp` (the scene's coordinates `Nb`, or the Kepler split `Split`),
+/// `true` for Kahan's summation of each step's increment (the Kepler drift's increment form).
+fn method<M: SplittingMethod, Sp: Space, const COMP: bool>(name: &'static str, order: usize, evals: usize) -> Method
 where
-    SplittingStepper<M, [f64; 24]>: Stepper<Split>,
+    SplittingStepper<M, [f64; 24]>: Stepper<Sp>,
 {
-    let split = Split::new(nb.clone(), KeplerCoordinates::Jacobi).expect("one dominant body");
-    let mut y = split.from_scene(y0);
-    let mut st = stepper::<M, Split, COMP>(&y);
-    for i in 0..steps {
-        let r = advance::<_, _, COMP>(&mut st, &split, i as f64 * h, h, &mut y);
-        debug_assert!(r.is_ok());
+    Method {
+        name,
+        order,
+        evals,
+        run: run::<M, Sp, COMP>,
+        sampled: sampled::<M, Sp, COMP>,
     }
-    split.to_scene(&y)
-}
-
-/// [`run_kepler`] with max |dE/E| (the N-body energy) sampled every `every` steps.
-fn sampled_kepler<M: SplittingMethod, const COMP: bool>(
-    nb: &Nb,
-    y0: &[f64; 24],
-    h: f64,
-    steps: usize,
-    every: usize,
-) -> ([f64; 24], f64)
-where
-    SplittingStepper<M, [f64; 24]>: Stepper<Split>,
-{
-    let split = Split::new(nb.clone(), KeplerCoordinates::Jacobi).expect("one dominant body");
-    let mut y = split.from_scene(y0);
-    let mut st = stepper::<M, Split, COMP>(&y);
-    let e0 = nb.energy(0.0, y0).expect("an energy");
-    let mut worst: f64 = 0.0;
-    for i in 0..steps {
-        advance::<_, _, COMP>(&mut st, &split, i as f64 * h, h, &mut y).expect("a finite step");
-        if (i + 1) % every == 0 || i + 1 == steps {
-            let e = split.energy((i + 1) as f64 * h, &y).expect("an energy");
-            worst = worst.max(((e - e0) / e0).abs());
-        }
-    }
-    (split.to_scene(&y), worst)
-}
-
-/// A method over the Kepler split; `compensated` for Kahan's summation of each step's
-/// increment (the Kepler drift's increment form).
-macro_rules! kepler_method {
-    ($ty:ty, $name:literal, $order:literal, $evals:literal) => {
-        kepler_method!($ty, $name, $order, $evals, false)
-    };
-    ($ty:ty, $name:literal, $order:literal, $evals:literal, compensated) => {
-        kepler_method!($ty, $name, $order, $evals, true)
-    };
-    ($ty:ty, $name:literal, $order:literal, $evals:literal, $comp:literal) => {
-        Method {
-            name: $name,
-            order: $order,
-            evals: $evals,
-            run: run_kepler::<$ty, $comp>,
-            sampled: sampled_kepler::<$ty, $comp>,
-        }
-    };
-}
-
-macro_rules! method {
-    ($ty:ty, $name:literal, $order:literal, $evals:literal) => {
-        Method {
-            name: $name,
-            order: $order,
-            evals: $evals,
-            run: run::<$ty, false>,
-            sampled: sampled::<$ty, false>,
-        }
-    };
 }
 
 fn methods() -> Vec<Method> {
     vec![
-        method!(VelocityVerletKdk, "velocity_verlet_kdk", 2, 1),
-        method!(TripleJump4, "triple_jump4", 4, 3),
-        method!(BlanesMoanSrkn6b, "blanes_moan_srkn6b", 4, 6),
-        method!(KahanLi6, "kahan_li6", 6, 9),
-        method!(BlanesMoanSrkn11b, "blanes_moan_srkn11b", 6, 11),
-        method!(KahanLi8, "kahan_li8", 8, 17),
+        method::<VelocityVerletKdk, Nb, false>("velocity_verlet_kdk", 2, 1),
+        method::<TripleJump4, Nb, false>("triple_jump4", 4, 3),
+        method::<BlanesMoanSrkn6b, Nb, false>("blanes_moan_srkn6b", 4, 6),
+        method::<KahanLi6, Nb, false>("kahan_li6", 6, 9),
+        method::<BlanesMoanSrkn11b, Nb, false>("blanes_moan_srkn11b", 6, 11),
+        method::<KahanLi8, Nb, false>("kahan_li8", 8, 17),
         // over the Kepler split: `order` is the order in h, `evals` the kicks per step
-        kepler_method!(StormerVerletDkd, "kepler/wisdom_holman", 2, 1),
-        kepler_method!(VelocityVerletKdk, "kepler/velocity_verlet_kdk", 2, 1),
-        kepler_method!(Sbab4, "kepler/sbab4", 2, 4),
-        kepler_method!(Saba4, "kepler/saba4", 2, 4),
-        kepler_method!(Abah864, "kepler/abah864", 4, 7),
-        kepler_method!(Aba864, "kepler/aba864", 4, 7),
-        kepler_method!(Aba1064, "kepler/aba1064", 4, 9),
+        method::<StormerVerletDkd, Split, false>("kepler/wisdom_holman", 2, 1),
+        method::<VelocityVerletKdk, Split, false>("kepler/velocity_verlet_kdk", 2, 1),
+        method::<Sbab4, Split, false>("kepler/sbab4", 2, 4),
+        method::<Saba4, Split, false>("kepler/saba4", 2, 4),
+        method::<Abah864, Split, false>("kepler/abah864", 4, 7),
+        method::<Aba864, Split, false>("kepler/aba864", 4, 7),
+        method::<Aba1064, Split, false>("kepler/aba1064", 4, 9),
         // the same with compensated summation (`kepler+comp/`, at `--comp-dts` only): the
         // round-off of 1e4 uncompensated steps is the floor of the runs above (~3e-11 AU)
-        kepler_method!(Aba864, "kepler+comp/aba864", 4, 7, compensated),
-        kepler_method!(Aba1064, "kepler+comp/aba1064", 4, 9, compensated),
+        method::<Aba864, Split, true>("kepler+comp/aba864", 4, 7),
+        method::<Aba1064, Split, true>("kepler+comp/aba1064", 4, 9),
     ]
 }
 
@@ -469,8 +447,8 @@ fn front(args: &[String]) {
 /// form is not the same method.
 fn compensation_check(nb: &Nb, y0: &[f64; 24], span: f64) -> f64 {
     let (h, steps) = (600.0, steps_for(span, 600.0));
-    let plain = run_kepler::<Aba1064, false>(nb, y0, h, steps);
-    let compensated = run_kepler::<Aba1064, true>(nb, y0, h, steps);
+    let plain = run::<Aba1064, Split, false>(nb, y0, h, steps);
+    let compensated = run::<Aba1064, Split, true>(nb, y0, h, steps);
     let gap = position_error(&compensated, &plain);
     assert!(
         gap < 1e-9,
@@ -487,11 +465,11 @@ fn compensation_check(nb: &Nb, y0: &[f64; 24], span: f64) -> f64 {
 fn candidates(nb: &Nb, y0: &[f64; 24], span: f64) -> Vec<String> {
     type Run = fn(&Nb, &[f64; 24], f64, usize) -> [f64; 24];
     let runs: [(&str, f64, Run); 5] = [
-        ("kepler+comp/aba1064", 20.0, run_kepler::<Aba1064, true>),
-        ("kepler+comp/aba1064", 10.0, run_kepler::<Aba1064, true>),
-        ("kepler+comp/aba864", 10.0, run_kepler::<Aba864, true>),
-        ("kahan_li8+comp", 2.0, run::<KahanLi8, true>),
-        ("kahan_li8+comp", 1.0, run::<KahanLi8, true>),
+        ("kepler+comp/aba1064", 20.0, run::<Aba1064, Split, true>),
+        ("kepler+comp/aba1064", 10.0, run::<Aba1064, Split, true>),
+        ("kepler+comp/aba864", 10.0, run::<Aba864, Split, true>),
+        ("kahan_li8+comp", 2.0, run::<KahanLi8, Nb, true>),
+        ("kahan_li8+comp", 1.0, run::<KahanLi8, Nb, true>),
     ];
     runs.iter()
         .map(|&(name, h, run)| {

@@ -437,18 +437,7 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> KeplerSplit<T, S, K> {
                 )*
             };
         }
-        static_shapes!(
-            (3, 2),
-            (3, 3),
-            (3, 4),
-            (3, 5),
-            (3, 6),
-            (2, 2),
-            (2, 3),
-            (2, 4),
-            (2, 5),
-            (2, 6)
-        );
+        super::nbody_shape::unrolled_shapes!(static_shapes);
         self.scene_forces(t, q, f);
         self.add_kepler_forces(-T::one(), q, f);
     }

@@ -442,18 +442,7 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> NBody<T, S, K> {
                 )*
             };
         }
-        static_shapes!(
-            (3, 2),
-            (3, 3),
-            (3, 4),
-            (3, 5),
-            (3, 6),
-            (2, 2),
-            (2, 3),
-            (2, 4),
-            (2, 5),
-            (2, 6)
-        );
+        super::nbody_shape::unrolled_shapes!(static_shapes);
         self.force_any_shape(q, f)
     }
 

@@ -4,6 +4,27 @@
 use super::NBody;
 use crate::{Real, State};
 
+/// Expands `$each!((D, N), ...)` over the shapes that have an unrolled force loop: 2 to 6
+/// bodies in 3-D and in 2-D. One list for [`NBody`]'s force and the Kepler split's
+/// interaction, which choose among them the same way.
+macro_rules! unrolled_shapes {
+    ($each:ident) => {
+        $each!(
+            (3, 2),
+            (3, 3),
+            (3, 4),
+            (3, 5),
+            (3, 6),
+            (2, 2),
+            (2, 3),
+            (2, 4),
+            (2, 5),
+            (2, 6)
+        )
+    };
+}
+pub(super) use unrolled_shapes;
+
 /// How [`NBody`] computes its forces: a type-level choice, so that a problem whose bodies
 /// are known when the program is compiled carries no dispatch and no fallback code in its
 /// step loop (a call anywhere in a loop, even on a branch never taken, makes the register
