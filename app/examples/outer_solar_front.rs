@@ -107,19 +107,21 @@ where
 /// Jacobi coordinates over the Kepler split; the state changed to them before the loop and
 /// back after it.
 trait Space: Problem<Scalar = f64, State = [f64; 24]> + Sized {
+    /// The problem in these coordinates.
     fn of(nb: &Nb) -> Self;
-    fn from_scene(&self, y: &[f64; 24]) -> [f64; 24];
-    fn to_scene(&self, y: &[f64; 24]) -> [f64; 24];
+    /// A scene state in these coordinates, and back.
+    fn enter(&self, y: &[f64; 24]) -> [f64; 24];
+    fn leave(&self, y: &[f64; 24]) -> [f64; 24];
 }
 
 impl Space for Nb {
     fn of(nb: &Nb) -> Self {
         nb.clone()
     }
-    fn from_scene(&self, y: &[f64; 24]) -> [f64; 24] {
+    fn enter(&self, y: &[f64; 24]) -> [f64; 24] {
         *y
     }
-    fn to_scene(&self, y: &[f64; 24]) -> [f64; 24] {
+    fn leave(&self, y: &[f64; 24]) -> [f64; 24] {
         *y
     }
 }
@@ -130,10 +132,10 @@ impl Space for Split {
     fn of(nb: &Nb) -> Self {
         Split::new(nb.clone(), KeplerCoordinates::Jacobi).expect("one dominant body")
     }
-    fn from_scene(&self, y: &[f64; 24]) -> [f64; 24] {
+    fn enter(&self, y: &[f64; 24]) -> [f64; 24] {
         KeplerSplit::from_scene(self, y)
     }
-    fn to_scene(&self, y: &[f64; 24]) -> [f64; 24] {
+    fn leave(&self, y: &[f64; 24]) -> [f64; 24] {
         KeplerSplit::to_scene(self, y)
     }
 }
@@ -144,13 +146,13 @@ where
     SplittingStepper<M, [f64; 24]>: Stepper<Sp>,
 {
     let space = Sp::of(nb);
-    let mut y = space.from_scene(y0);
+    let mut y = space.enter(y0);
     let mut st = stepper::<M, Sp, COMP>(&y);
     for i in 0..steps {
         let r = advance::<_, _, COMP>(&mut st, &space, i as f64 * h, h, &mut y);
         debug_assert!(r.is_ok());
     }
-    space.to_scene(&y)
+    space.leave(&y)
 }
 
 /// The same, with max |dE/E| of the N-body energy sampled every `every` steps (and at the
@@ -167,7 +169,7 @@ where
 {
     let space = Sp::of(nb);
     let e0 = nb.energy(0.0, y0).expect("an energy");
-    let mut y = space.from_scene(y0);
+    let mut y = space.enter(y0);
     let mut st = stepper::<M, Sp, COMP>(&y);
     let mut worst: f64 = 0.0;
     for i in 0..steps {
@@ -177,7 +179,7 @@ where
             worst = worst.max(((e - e0) / e0).abs());
         }
     }
-    (space.to_scene(&y), worst)
+    (space.leave(&y), worst)
 }
 
 /// A method stepping in `Sp` (the scene's coordinates `Nb`, or the Kepler split `Split`),
