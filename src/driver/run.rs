@@ -316,26 +316,12 @@ where
 }
 
 /// Steps `range` of size `h` from `t0`, in place, each checked for finiteness and counted
-/// in `steps`. Out of
-/// line and free of calls, so that the register allocation of the inlined step is not
-/// spoiled by the recorder's and the error paths' calls (inlined into the loop with them,
-/// the outer solar system's Verlet step cost 1.30x the hand-written loop, 1.04x out of
-/// line on a local copy: docs/benchmarks.md).
+/// in `steps`. Out of line and free of calls, so that the register allocation of the
+/// inlined step is not spoiled by the recorder's and the error paths' calls (inlined into
+/// the loop with them, the outer solar system's Verlet step cost 1.30x the hand-written
+/// loop, 1.04x out of line on a local copy: docs/benchmarks.md).
 #[inline(never)]
 pub(crate) fn steps_in_place<P: Problem, St: Stepper<P> + ?Sized>(
-    stepper: &mut St,
-    p: &P,
-    run: StepRun<P::Scalar>,
-    y: &mut P::State,
-    steps: &mut u64,
-) -> Result<(), Error> {
-    steps_inline(stepper, p, run, y, steps)
-}
-
-/// The loop of [`steps_in_place`], inlined into a stepper's own
-/// [`Stepper::run_in_place`] (which runs it on a local copy of the stepper).
-#[inline(always)]
-pub(crate) fn steps_inline<P: Problem, St: Stepper<P> + ?Sized>(
     stepper: &mut St,
     p: &P,
     StepRun { t0, h, range }: StepRun<P::Scalar>,
@@ -359,14 +345,15 @@ pub(crate) fn steps_inline<P: Problem, St: Stepper<P> + ?Sized>(
     Ok(())
 }
 
-/// The loop of [`steps_inline`] without its per-step check: steps `range` on a copy of `y`,
-/// and true, with `y` the state reached, when every step succeeded and that state is finite;
-/// false, with `y` untouched, otherwise. For a stepper that runs it on a copy of itself and
-/// on false replays the run from `y` through [`steps_in_place`], which finds the failing step: the outcome is then that of
-/// the checked loop, and a run that succeeds pays no check per step (on the outer solar
-/// system the check cost the triple jump 3.4% of a step, docs/benchmarks.md). A value that
-/// turns non-finite and back within one run would escape it; no flow of this crate does
-/// that (NaN stays NaN, and an infinite position stays infinite under drifts and kicks).
+/// The loop of [`steps_in_place`] without its per-step check: steps `range` on a copy of
+/// `y`, and true, with `y` the state reached, when every step succeeded and that state is
+/// finite; false, with `y` untouched, otherwise. For a stepper that runs it on a copy of
+/// itself and, on false, replays the run from `y` through [`steps_in_place`], which finds
+/// the failing step: the outcome is then that of the checked loop, and a run that succeeds
+/// pays no check per step (on the outer solar system the check cost the triple jump 3.4% of
+/// a step, docs/benchmarks.md). A value that turns non-finite and back within one run would
+/// escape it; no flow of this crate does that (NaN stays NaN, and an infinite position stays
+/// infinite under drifts and kicks).
 #[inline(always)]
 pub(crate) fn steps_unchecked<P: Problem, St: Stepper<P> + ?Sized>(
     stepper: &mut St,
@@ -378,7 +365,8 @@ pub(crate) fn steps_unchecked<P: Problem, St: Stepper<P> + ?Sized>(
     let mut local = y.clone();
     let mut failed = None;
     for i in range {
-        // no early return and no call in the loop
+        // the error moved out, not dropped: its destructor would be a call in the loop, and
+        // a call anywhere in it keeps the state in memory (1.088 of the plain loop, not 1.016)
         if let Err(e) = stepper.step_in_place(p, t0 + lit::<P::Scalar>(i as f64) * h, h, &mut local) {
             failed = Some(e);
             break;

@@ -117,7 +117,8 @@ pub trait Stepper<P: Problem> {
     /// The fixed-step driver's `run` of steps in place on `y`, each checked finite, adding
     /// those taken to `steps`. The default loops over [`Stepper::step_in_place`] out of
     /// line; a stepper may run the same loop on a local copy of itself, whose scratch the
-    /// compiler can then keep in registers.
+    /// compiler can then keep in registers, and check the state at the end of the run only
+    /// if it replays a failed run step by step (the outcome of the per-step check).
     #[doc(hidden)]
     fn run_in_place(&mut self, p: &P, run: StepRun<P::Scalar>, y: &mut P::State, steps: &mut u64) -> Result<(), Error> {
         crate::driver::steps_in_place(self, p, run, y, steps)
