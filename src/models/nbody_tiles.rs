@@ -5,8 +5,8 @@
 //!
 //! - **Blocks.** Bodies sit in chunks of `L` slots (a chunk stores the `x` of its `L` bodies,
 //!   then their `y`, then `z`, so that they load into one register per coordinate), and the
-//!   chunks are split evenly into blocks of at least [`BLOCK_MIN`] bodies, chosen from the
-//!   numbers of bodies alone ([`Layout`]). Slots past the last body are padding, masked out.
+//!   chunks are split evenly into blocks of about [`BLOCK_MIN`] bodies or more, chosen from
+//!   the numbers of bodies alone ([`Layout`]). Slots past the last body are padding, masked out.
 //! - **Tiles.** The pairs of two blocks `I < J` form a tile: every body `i` of `I` sums its
 //!   pulls from `J` in registers (Newton's third law: each pull is also added to the body of
 //!   `J`, lane by lane). The pairs inside a block form its triangle.
@@ -251,8 +251,9 @@ pub(super) struct Layout {
 impl Layout {
     /// The layout of `n` bodies of which the first `active` pull, for SIMD width `lanes`.
     pub(super) fn new(n: usize, active: usize, lanes: usize) -> Self {
-        // blocks of at least BLOCK_MIN bodies, and at most MAX_BLOCKS - 2 blocks' worth of
-        // bodies: the two kinds round up once each (fewer bodies than BLOCK_MIN: one block)
+        // as many blocks as blocks of `block` bodies would need, `block` at least BLOCK_MIN
+        // and at most MAX_BLOCKS - 2 blocks' worth of bodies (the two kinds round up once
+        // each, the active ones once more to an even count); fewer bodies: one block
         let block = BLOCK_MIN.min(n).max(n.div_ceil(MAX_BLOCKS - 2)).max(1);
         // an even number of active blocks: an odd one leaves a block out of every round
         // (3 blocks: one tile a round, nothing for a second thread)
