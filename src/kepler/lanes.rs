@@ -29,25 +29,15 @@ const SHORT_SHIFT: f64 = 3e-5;
 const CONVERGED: f64 = 1e-9;
 
 /// Taylor coefficients of `c2(z) = sum_j (-z)^j / (2j + 2)!` and `c3(z) = sum_j (-z)^j /
-/// (2j + 3)!`, `j = 0..7` (the signs included).
-const C2: [f64; 7] = [
-    0.5,
-    -0.041666666666666664,
-    0.001388888888888889,
-    -2.48015873015873e-05,
-    2.755731922398589e-07,
-    -2.08767569878681e-09,
-    1.1470745597729725e-11,
-];
-const C3: [f64; 7] = [
-    0.16666666666666666,
-    -0.008333333333333333,
-    0.0001984126984126984,
-    -2.7557319223985893e-06,
-    2.505210838544172e-08,
-    -1.6059043836821613e-10,
-    7.647163731819816e-13,
-];
+/// (2j + 3)!`, `j = 0..7` (the signs included): the first seven of the scalar Stumpff
+/// series' (`crate::magnetic::stumpff_series`), enough for the lanes' shorter arguments.
+const C2: [f64; 7] = first_seven(&crate::magnetic::STUMPFF_C2);
+const C3: [f64; 7] = first_seven(&crate::magnetic::STUMPFF_C3);
+
+/// The first seven terms of a nine-term series.
+const fn first_seven(c: &[f64; 9]) -> [f64; 7] {
+    [c[0], c[1], c[2], c[3], c[4], c[5], c[6]]
+}
 
 /// Four values, one per lane, and the arithmetic the solve needs, lane by lane: the
 /// portable [`Portable`] and, on x86-64 CPUs with AVX2, one AVX2 register ([`Avx2`]). The

@@ -12,7 +12,7 @@ mod gyration;
 mod lorentz;
 mod relativistic_kick;
 
-pub(crate) use gyration::stumpff_series;
 pub use gyration::{cross, gyration_coefficients, sin_and_versine, Gyration, GyrationCache};
+pub(crate) use gyration::{stumpff_series, C2 as STUMPFF_C2, C3 as STUMPFF_C3};
 pub use lorentz::{Charged, Lorentz};
 pub use relativistic_kick::RelativisticKick;
