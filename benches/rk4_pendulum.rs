@@ -17,7 +17,7 @@ mod interleaved;
 use std::hint::black_box;
 
 use criterion::{criterion_group, Criterion};
-use stormer::{catalog::Rk4, registry, ExplicitRk, ImplicitOptions, Problem, RuntimeRk, Stepper, Tableau};
+use stormer::{catalog::Rk4, registry, ExplicitRk, ImplicitOptions, Method, Problem, RuntimeRk, Stepper, Tableau};
 
 const STEPS: usize = 1000;
 const H: f64 = 0.01;
@@ -100,8 +100,11 @@ fn assert_bitwise_equal() {
         bits(reference),
         "run-time RK4 differs from the hand-written loop"
     );
-    // The boxed stepper of the registry (the CLI's path) is the same code too.
-    let mut boxed = registry::stepper::<Pendulum>("rk4", &Y0, &ImplicitOptions::default()).expect("rk4");
+    // The compiled dispatch of a catalog name (the CLI's release path) is the same code too.
+    let rk4 = Method::named("rk4").expect("rk4");
+    let mut boxed = rk4
+        .compiled_stepper_for(&Pendulum, &Y0, &ImplicitOptions::default())
+        .expect("rk4");
     assert_eq!(bits(with_stepper(&mut boxed, STEPS * 10, H, Y0)), bits(reference));
 }
 

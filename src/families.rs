@@ -18,7 +18,7 @@ use crate::magnetic::{Charged, Lorentz};
 use crate::method::SplittingData;
 use crate::models::RelativisticParticles;
 use crate::stepper::{ParticleMethod, RelativisticMethod};
-use crate::{registry, Error, Problem, Real, RuntimeSplitting, Splitting, State, Stepper};
+use crate::{Error, Problem, Real, RuntimeSplitting, Splitting, State, Stepper};
 
 /// A splitting or composition to build: compiled into the crate (its generated stepper is
 /// used) or held in memory (read from a file, or built with [`Splitting::splitting`]).
@@ -134,10 +134,22 @@ impl<P: Problem> Families<P> {
         }
     }
 
-    /// A stepper for the splitting or composition `method`, or the sentence saying why this
-    /// problem does not admit it and what to use instead.
+    /// Whether this problem admits the splitting or composition `method`: `Ok`, or the
+    /// sentence saying why not and what to use instead.
+    pub fn admit_splitting(&self, method: SplittingSource<'_>) -> Result<(), Error> {
+        self.splitting_builder(method).map(|_| ())
+    }
+
+    /// A stepper for the splitting or composition `method` (its run-time stepper, built
+    /// from its data), or the sentence saying why this problem does not admit it and what
+    /// to use instead.
     pub fn splitting(&self, method: SplittingSource<'_>, y0: &P::State) -> BuildResult<P> {
-        let build = self.splitting.as_ref().map_err(|why| Error::Unsupported {
+        self.splitting_builder(method)?(method, y0)
+    }
+
+    /// The builder of `method`'s stepper, or the refusal.
+    fn splitting_builder(&self, method: SplittingSource<'_>) -> Result<SplittingBuilder<P>, Error> {
+        let build = *self.splitting.as_ref().map_err(|why| Error::Unsupported {
             name: method.name().to_string(),
             reason: format!("{why}; use a Runge-Kutta method instead, such as rk4 or dop853"),
         })?;
@@ -147,7 +159,7 @@ impl<P: Problem> Families<P> {
                 reason: why.into(),
             });
         }
-        build(method, y0)
+        Ok(build)
     }
 
     /// A charged-particle pusher, or the sentence saying why it does not apply.
@@ -241,18 +253,23 @@ impl<L: Lorentz + 'static> Families<Charged<L>> {
     }
 }
 
+/// The run-time data of a splitting source.
+fn runtime_word(method: SplittingSource<'_>) -> Result<std::borrow::Cow<'_, Splitting>, Error> {
+    Ok(match method {
+        SplittingSource::Compiled(d) => std::borrow::Cow::Owned(Splitting::from_data(d)?),
+        SplittingSource::Runtime(s) => std::borrow::Cow::Borrowed(s),
+    })
+}
+
 /// A general splitting's stepper; the caller has refused Runge-Kutta-Nystrom methods.
 fn general<P: Splittable + 'static>(method: SplittingSource<'_>, y0: &P::State) -> BuildResult<P> {
-    match method {
-        SplittingSource::Compiled(d) => registry::compiled_general_splitting::<P>(d, y0),
-        SplittingSource::Runtime(s) => Ok(Box::new(RuntimeSplitting::<P::State, P::FlowCache>::new(s, y0)?)),
-    }
+    Ok(Box::new(RuntimeSplitting::<P::State, P::FlowCache>::new(
+        &*runtime_word(method)?,
+        y0,
+    )?))
 }
 
 /// Any splitting's stepper, on a quadratic kinetic energy.
 fn quadratic<P: QuadraticKinetic + 'static>(method: SplittingSource<'_>, y0: &P::State) -> BuildResult<P> {
-    match method {
-        SplittingSource::Compiled(d) => registry::compiled_splitting::<P>(d, y0),
-        SplittingSource::Runtime(s) => Ok(Box::new(RuntimeSplitting::new_quadratic(s, y0)?)),
-    }
+    Ok(Box::new(RuntimeSplitting::new_quadratic(&*runtime_word(method)?, y0)?))
 }

@@ -3,35 +3,12 @@
 //! whose [`Method::stepper_for`] builds the stepper.
 
 use crate::catalog;
-use crate::families::SplittingSource;
-use crate::flows::{QuadraticKinetic, Splittable};
 use crate::method::{ButcherMethod, SplittingData, SplittingMethod, StepperResult, TableauData};
-use crate::{
-    Error, Families, ImplicitOptions, ImplicitRk, Method, Problem, RuntimeRk, RuntimeSplitting, Splitting,
-    SplittingStepper, Tableau,
-};
+use crate::{Error, ImplicitOptions, ImplicitRk, Method, Problem, RuntimeRk, Tableau};
 
 macro_rules! data_list {
     ($($method:ident),* $(,)?) => {
         &[$(<catalog::$method as ButcherMethod>::DATA),*]
-    };
-}
-
-macro_rules! dispatch {
-    ($($method:ident),* $(,)?) => {
-        /// The generated stepper of the compiled tableau `data` (matched by its unique
-        /// catalog name; a tableau declared outside the catalog runs as its run-time twin).
-        pub(crate) fn compiled_tableau<P>(data: &TableauData, y0: &P::State, implicit: &ImplicitOptions) -> StepperResult<P>
-        where
-            P: Problem + 'static,
-        {
-            $(
-                if data.name == <catalog::$method as ButcherMethod>::DATA.name {
-                    return Ok(<catalog::$method as ButcherMethod>::dyn_stepper::<P>(y0, implicit));
-                }
-            )*
-            runtime_tableau(&Tableau::from_data(data)?, y0, implicit)
-        }
     };
 }
 
@@ -41,50 +18,14 @@ macro_rules! splitting_data_list {
     };
 }
 
-macro_rules! splitting_dispatch {
-    (general: [$($g:ident),* $(,)?], quadratic: [$($r:ident),* $(,)?] $(,)?) => {
-        /// The generated stepper of the compiled general splitting `data`; the caller has
-        /// refused Runge-Kutta-Nystrom methods ([`crate::Families`]). A splitting declared
-        /// outside the catalog runs as its run-time twin.
-        pub(crate) fn compiled_general_splitting<P>(data: &SplittingData, y0: &P::State) -> StepperResult<P>
-        where
-            P: Splittable + 'static,
-        {
-            $(
-                if data.name == <catalog::$g as SplittingMethod>::DATA.name {
-                    return SplittingStepper::<catalog::$g, P::State, P::FlowCache>::boxed::<P>(y0);
-                }
-            )*
-            Ok(Box::new(RuntimeSplitting::<P::State, P::FlowCache>::new(&Splitting::from_data(data)?, y0)?))
-        }
+/// Every Butcher method compiled into the crate, in catalog order. A static, so that each
+/// entry has one address: [`Method::named`] hands out these entries, and the compiled
+/// dispatch (`Method::compiled_stepper_for`) recognises the catalog's own methods by it.
+pub static BUTCHER: &[TableauData] = catalog::for_each_butcher_method!(data_list);
 
-        /// The generated stepper of any compiled splitting `data`, on a quadratic kinetic
-        /// energy.
-        pub(crate) fn compiled_splitting<P>(data: &SplittingData, y0: &P::State) -> StepperResult<P>
-        where
-            P: QuadraticKinetic + 'static,
-        {
-            $(
-                if data.name == <catalog::$r as SplittingMethod>::DATA.name {
-                    return SplittingStepper::<catalog::$r, P::State, P::FlowCache>::boxed::<P>(y0);
-                }
-            )*
-            if data.requires_quadratic_kinetic {
-                return Ok(Box::new(RuntimeSplitting::new_quadratic(&Splitting::from_data(data)?, y0)?));
-            }
-            compiled_general_splitting::<P>(data, y0)
-        }
-    };
-}
-
-/// Every Butcher method compiled into the crate, in catalog order.
-pub const BUTCHER: &[TableauData] = catalog::for_each_butcher_method!(data_list);
-
-/// Every splitting and composition compiled into the crate, in catalog order.
-pub const SPLITTING: &[SplittingData] = catalog::for_each_splitting_method!(splitting_data_list);
-
-catalog::for_each_butcher_method!(dispatch);
-catalog::for_each_splitting_method!(splitting_dispatch);
+/// Every splitting and composition compiled into the crate, in catalog order (a static, as
+/// [`BUTCHER`]).
+pub static SPLITTING: &[SplittingData] = catalog::for_each_splitting_method!(splitting_data_list);
 
 /// The names users bring from other libraries, as `(alias, catalog name, where it comes
 /// from)`. An alias is matched with the spelling rules of [`lookup`] (case, `-`, `_` and
@@ -191,17 +132,8 @@ pub fn aliases_of(name: &str) -> impl Iterator<Item = &'static str> + '_ {
 /// Looks a catalog method of any family up by name or alias: `-`, `_` and spaces are one
 /// separator, and separators are optional when that names one method (`rk-4` is `rk4`);
 /// an unknown name is an error that suggests the nearest names and aliases. This is the
-/// one place a name becomes a [`Method`].
-///
-/// ```
-/// use stormer::registry::lookup;
-/// assert_eq!(lookup("rk-4").unwrap().name(), "rk4");
-/// assert_eq!(lookup("Tsit5").unwrap().name(), "tsitouras5");
-/// assert_eq!(lookup("leapfrog").unwrap().name(), "stormer_verlet_dkd");
-/// let err = lookup("rk-5").unwrap_err().to_string();
-/// assert!(err.contains("did you mean"), "{err}");
-/// ```
-pub fn lookup(name: &str) -> Result<Method, Error> {
+/// one place a name becomes a [`Method`] ([`Method::named`]).
+pub(crate) fn lookup(name: &str) -> Result<Method, Error> {
     let key = normalize(name);
     let loose = |s: &str| normalize(s).replace('_', "");
     let alias = ALIASES.iter().find(|a| loose(a.0) == loose(&key)).map(|a| a.1);
@@ -276,36 +208,8 @@ fn nearest(key: &str) -> Vec<String> {
         .collect()
 }
 
-/// The stepper of the catalog tableau `name` for a problem type `P` (any problem: a
-/// Runge-Kutta method needs only `rhs`). The same as
-/// `Method::named(name)?.stepper_for(..)` for a tableau, without a problem value.
-pub fn stepper<P>(name: &str, y0: &P::State, implicit: &ImplicitOptions) -> StepperResult<P>
-where
-    P: Problem + 'static,
-{
-    compiled_tableau::<P>(find(name)?, y0, implicit)
-}
-
-/// The stepper of the catalog splitting or composition `name` for a splittable problem
-/// type; a Runge-Kutta-Nystrom method is refused ([`Families::general_splittings`]).
-pub fn splitting_stepper<P>(name: &str, y0: &P::State) -> StepperResult<P>
-where
-    P: Splittable + 'static,
-{
-    Families::<P>::general_splittings().splitting(SplittingSource::Compiled(find_splitting(name)?), y0)
-}
-
-/// The stepper of any catalog splitting or composition `name` for a problem type whose
-/// kinetic energy is quadratic ([`Families::all_splittings`]).
-pub fn splitting_stepper_quadratic<P>(name: &str, y0: &P::State) -> StepperResult<P>
-where
-    P: QuadraticKinetic + 'static,
-{
-    Families::<P>::all_splittings().splitting(SplittingSource::Compiled(find_splitting(name)?), y0)
-}
-
-/// The stepper of a tableau built at run time (a method file, [`theta`]).
-pub fn runtime_tableau<P>(tableau: &Tableau, y0: &P::State, implicit: &ImplicitOptions) -> StepperResult<P>
+/// The stepper of a tableau held as data (a catalog entry, a method file, [`theta`]).
+pub(crate) fn runtime_tableau<P>(tableau: &Tableau, y0: &P::State, implicit: &ImplicitOptions) -> StepperResult<P>
 where
     P: Problem + 'static,
 {

@@ -22,7 +22,7 @@
 use stormer::catalog::{TripleJump4, VelocityVerletKdk};
 use stormer::driver::Recorder;
 use stormer::order::splitting::Flow;
-use stormer::{registry, Driver, Error, SecondOrder, SplittingMethod};
+use stormer::{Driver, Error, Method, SecondOrder, SplittingMethod};
 
 /// The state length of the acceptance ensemble: 16 oscillators.
 const ENSEMBLE: usize = 32;
@@ -178,7 +178,8 @@ fn run<M: SplittingMethod, const L: usize>(
         max_energy_error: 0.0,
         energy0: None,
     };
-    let mut stepper = registry::splitting_stepper::<Oscillators<L>>(method, &y0).unwrap();
+    let method = Method::named(method).unwrap();
+    let mut stepper = method.stepper_for(&problem, &y0, &Default::default()).unwrap();
     let driver = Driver::fixed(h).every(every);
     let driver = if compensated { driver.compensated() } else { driver };
     let (stats, _) = driver

@@ -11,13 +11,18 @@
 
 use std::marker::PhantomData;
 
-use stormer::catalog::{ImplicitMidpoint, Rk4};
+use stormer::catalog::{
+    Dop853, DormandPrince5, GaussLegendre4, ImplicitMidpoint, RadauIia5, Rk4, TripleJump4, VelocityVerletKdk,
+};
 use stormer::magnetic::{Charged, Lorentz};
 use stormer::stepper::{Boris, BorisRotation, Composed};
 use stormer::{
-    registry, ButcherMethod, Driver, Error, ImplicitOptions, ImplicitRk, Problem, Real, RuntimeRk, RuntimeSplitting,
-    SecondOrder, Splittable, Splitting, StepControl, Stepper, Tableau, Tolerances,
+    ButcherMethod, Driver, Error, ImplicitOptions, ImplicitRk, Problem, Real, RuntimeRk, RuntimeSplitting, SecondOrder,
+    Splittable, Splitting, SplittingStepper, StepControl, Stepper, Tableau, Tolerances,
 };
+
+/// A compiled splitting's boxed stepper for problem `P`.
+type SplittingStepperFn<P> = fn(&<P as Problem>::State) -> Result<Box<dyn Stepper<P>>, Error>;
 
 /// `q'' = 0`, in `f64` (`FREE`) or `f32` (`FREE32`).
 struct Free<T = f64>(PhantomData<T>);
@@ -53,18 +58,12 @@ fn steppers() -> Vec<(&'static str, Box<dyn Stepper<Free>>)> {
     let verlet = Splitting::splitting("my_verlet", &[0.0, 1.0], &[0.5, 0.5], 2, false).unwrap();
     let w = 1.0 / (2.0 - 2f64.cbrt());
     let jump = Splitting::composition("my_jump", &[w, 1.0 - 2.0 * w, w], 4).unwrap();
-    let midpoint = registry::stepper::<Free>("implicit_midpoint", &y0, &implicit).unwrap();
+    let midpoint = ImplicitMidpoint::dyn_stepper::<Free>(&y0, &implicit);
     vec![
-        ("rk4 (compiled)", registry::stepper("rk4", &y0, &implicit).unwrap()),
-        (
-            "dop853 (compiled, FSAL)",
-            registry::stepper("dop853", &y0, &implicit).unwrap(),
-        ),
+        ("rk4 (compiled)", Rk4::dyn_stepper(&y0, &implicit)),
+        ("dop853 (compiled, FSAL)", Dop853::dyn_stepper(&y0, &implicit)),
         ("rk4 (run time)", Box::new(RuntimeRk::new(&rk4, &y0).unwrap())),
-        (
-            "gauss_legendre4",
-            registry::stepper("gauss_legendre4", &y0, &implicit).unwrap(),
-        ),
+        ("gauss_legendre4", GaussLegendre4::dyn_stepper(&y0, &implicit)),
         (
             "implicit_midpoint (Newton)",
             Box::new(ImplicitRk::new(
@@ -73,14 +72,14 @@ fn steppers() -> Vec<(&'static str, Box<dyn Stepper<Free>>)> {
                 ImplicitOptions::newton(),
             )),
         ),
-        ("radau_iia5", registry::stepper("radau_iia5", &y0, &implicit).unwrap()),
+        ("radau_iia5", RadauIia5::dyn_stepper(&y0, &implicit)),
         (
             "velocity_verlet_kdk",
-            registry::splitting_stepper("velocity_verlet_kdk", &y0).unwrap(),
+            SplittingStepper::<VelocityVerletKdk, _, _>::boxed(&y0).unwrap(),
         ),
         (
             "triple_jump4",
-            registry::splitting_stepper("triple_jump4", &y0).unwrap(),
+            SplittingStepper::<TripleJump4, _, _>::boxed(&y0).unwrap(),
         ),
         (
             "my_verlet (run time)",
@@ -137,7 +136,7 @@ fn adaptive_runs_and_stop_conditions_work_compensated() {
     let y0 = [1.0, 0.0];
     let tol = Tolerances::new(1e-10, 1e-10);
     let run = |compensated: bool| {
-        let mut dopri5 = registry::stepper::<Damped>("dormand_prince5", &y0, &ImplicitOptions::default()).unwrap();
+        let mut dopri5 = DormandPrince5::dyn_stepper::<Damped>(&y0, &ImplicitOptions::default());
         // a first step far too large: rejections from the start
         let control = StepControl::Adaptive {
             tol,
@@ -255,9 +254,17 @@ fn drift_increments_add_what_the_drifts_do() {
 fn charged_particles_run_compensated() {
     // exact gyration, no force: every method follows the helix to round-off
     let y0 = [1.0, 0.0, 0.0, 0.0, 1.0, 0.1, -1.0, 0.5, 0.0, 0.2, 0.0, 0.3];
-    for name in ["velocity_verlet_kdk", "triple_jump4"] {
-        let mut plain = registry::splitting_stepper::<Charged<Field<12>>>(name, &y0).unwrap();
-        let mut comp = registry::splitting_stepper::<Charged<Field<12>>>(name, &y0).unwrap();
+    type Helix = Charged<Field<12>>;
+    let compiled: [(&str, SplittingStepperFn<Helix>); 2] = [
+        (
+            "velocity_verlet_kdk",
+            SplittingStepper::<VelocityVerletKdk, _, _>::boxed,
+        ),
+        ("triple_jump4", SplittingStepper::<TripleJump4, _, _>::boxed),
+    ];
+    for (name, compiled) in compiled {
+        let mut plain = compiled(&y0).unwrap();
+        let mut comp = compiled(&y0).unwrap();
         let a = Driver::fixed(0.01)
             .every(u64::MAX)
             .run(&Charged(UNIFORM), &mut plain, 0.0, &y0, 100.0);
@@ -304,9 +311,9 @@ fn in_f32_too() {
     for name in ["rk4", "velocity_verlet_kdk"] {
         let error = |compensated: bool| {
             let mut stepper = if name == "rk4" {
-                registry::stepper::<Free<f32>>(name, &y0, &ImplicitOptions::default()).unwrap()
+                Rk4::dyn_stepper::<Free<f32>>(&y0, &ImplicitOptions::default())
             } else {
-                registry::splitting_stepper::<Free<f32>>(name, &y0).unwrap()
+                SplittingStepper::<VelocityVerletKdk, _, _>::boxed::<Free<f32>>(&y0).unwrap()
             };
             let driver = Driver::fixed(h).every(u64::MAX);
             let driver = if compensated { driver.compensated() } else { driver };
@@ -325,7 +332,7 @@ fn in_f32_too() {
 #[test]
 fn a_compensated_compiled_splitting_does_not_step_in_place() {
     let y0 = [0.0, 1.0];
-    let mut verlet = registry::splitting_stepper::<Free>("velocity_verlet_kdk", &y0).unwrap();
+    let mut verlet = SplittingStepper::<VelocityVerletKdk, _, _>::boxed::<Free>(&y0).unwrap();
     assert!(verlet.steps_in_place());
     verlet.set_compensated(true).unwrap();
     assert!(!verlet.steps_in_place());

@@ -16,7 +16,7 @@ use stormer::catalog::{
     BackwardEuler, Dop853, DormandPrince5, GaussLegendre4, GaussLegendre6, ImplicitMidpoint, Kutta3, LobattoIiia4,
     RadauIia3, RadauIia5, Rk4, Trapezoidal, Verner9,
 };
-use stormer::{hermite_order, registry, Driver, Error, ExplicitRk, Solution, Tolerances};
+use stormer::{hermite_order, Driver, Error, ExplicitRk, Method, Solution, Tolerances};
 use stormer::{ButcherMethod, ExplicitMethod, ImplicitOptions, ImplicitRk, Tableau};
 
 /// `n + 1` times from `a` to `b`.
@@ -280,7 +280,7 @@ fn collocation_methods_interpolate_by_their_collocation_polynomial() {
         ("lobatto_iiia4", collocation_error::<LobattoIiia4>, 3),
     ];
     for (name, error, s) in cases {
-        let tableau = registry::lookup(name).unwrap().tableau().unwrap().unwrap();
+        let tableau = Method::named(name).unwrap().tableau().unwrap().unwrap();
         assert_eq!(tableau.info().dense_order, Some(s), "{name}");
         let ((coarse, [plain, dense]), (fine, _)) = (error(0.02), error(0.01));
         assert_eq!(plain, dense, "{name}: output cost evaluations");
@@ -316,7 +316,8 @@ fn output_costs_no_evaluation_where_the_method_has_the_slopes() {
 #[test]
 fn a_splitting_gives_the_same_states_with_and_without_output_times() {
     let y0 = [1.0, 0.0];
-    let mut verlet = registry::splitting_stepper::<Oscillator>("velocity_verlet_kdk", &y0).unwrap();
+    let verlet = Method::named("velocity_verlet_kdk").unwrap();
+    let mut verlet = verlet.stepper_for(&Oscillator, &y0, &Default::default()).unwrap();
     let plain = Driver::fixed(0.05)
         .run(&Oscillator, &mut verlet, 0.0, &y0, 5.0)
         .unwrap();

@@ -28,7 +28,8 @@ impl Problem for Decay32 {
 #[test]
 fn f32_fixed_steps_divide_the_span_exactly() {
     for n in 1..3000u32 {
-        let mut s = stormer::registry::stepper::<Decay32>("euler", &[1.0], &Default::default()).unwrap();
+        let euler = stormer::Method::named("euler").unwrap();
+        let mut s = euler.stepper_for(&Decay32, &[1.0], &Default::default()).unwrap();
         let sol = Driver::fixed(1.0 / n as f32)
             .every(u64::MAX)
             .run(&Decay32, &mut s, 0.0, &[1.0], 1.0)

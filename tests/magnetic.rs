@@ -8,7 +8,7 @@ mod users_magnetic_verlet;
 use std::marker::PhantomData;
 use stormer::magnetic::{Charged, Gyration, Lorentz};
 use stormer::stepper::{Boris, BorisRotation, EulerCromer};
-use stormer::{lit, registry, to_f64, Driver, Real, Stepper};
+use stormer::{lit, to_f64, Driver, Method, Real, Stepper};
 use users_magnetic_verlet::users_magnetic_verlet;
 
 /// A uniform field along axis 3 (`omega = (0, 0, w)`), a uniform acceleration `e`, and
@@ -148,7 +148,10 @@ fn zero_field_is_a_straight_drift_exactly() {
     // and through the problem: a particle with w = 0 moves in a straight line
     let y0 = [0.0, 0.0, 0.0, 1.0, 1.0, 0.0];
     let p = Charged(particle::<f64>(0.0, [0.0; 3], false));
-    let mut s = registry::splitting_stepper::<Charged<Particle<f64>>>("stormer_verlet_dkd", &y0).unwrap();
+    let mut s = Method::named("stormer_verlet_dkd")
+        .unwrap()
+        .stepper_for(&p, &y0, &Default::default())
+        .unwrap();
     let sol = Driver::fixed(0.5).run(&p, &mut s, 0.0, &y0, 2.0).unwrap();
     assert_eq!(sol.y.last().unwrap(), &[2.0, 2.0, 0.0, 1.0, 1.0, 0.0]);
 }
@@ -225,7 +228,10 @@ fn boris_gets_the_e_cross_b_drift_and_exact_phase_does_not_at_large_steps() {
         "exact phase error {exact_phase}, predicted {predicted}"
     );
 
-    let mut verlet = registry::splitting_stepper::<Charged<Particle<f64>>>("velocity_verlet_kdk", &y0).unwrap();
+    let mut verlet = Method::named("velocity_verlet_kdk")
+        .unwrap()
+        .stepper_for(&p, &y0, &Default::default())
+        .unwrap();
     let sol = Driver::fixed(h).run(&p, &mut verlet, 0.0, &y0, t_end).unwrap();
     let verlet_error = distance(&sol.y.last().unwrap()[..3], &exact);
     assert!(verlet_error < 1e-3, "magnetic Verlet: {verlet_error}");
@@ -239,7 +245,10 @@ fn velocity_verlet_with_the_gyration_drift_is_the_users_magnetic_verlet() {
     let (w, h) = (1.0f64, 0.01);
     let p = Charged(particle::<f64>(w, [0.0; 3], true));
     let y0 = [1.0, 1.0, 1.0, 0.0, 0.0, 0.0];
-    let mut verlet = registry::splitting_stepper::<Charged<Particle<f64>>>("velocity_verlet_kdk", &y0).unwrap();
+    let mut verlet = Method::named("velocity_verlet_kdk")
+        .unwrap()
+        .stepper_for(&p, &y0, &Default::default())
+        .unwrap();
     let sol = Driver::fixed(h).run(&p, &mut verlet, 0.0, &y0, 10.0).unwrap();
     let users = users_magnetic_verlet(w, h, [1.0, 1.0, 1.0], 1000);
     let (q, v) = users[1000].split_at(3);
@@ -260,7 +269,10 @@ fn magnetic_verlet_energy_error_on_coulomb_plus_field() {
     let e0 = -1.0 / 3f64.sqrt();
     let long = if cfg!(debug_assertions) { 1e3 } else { 1e4 };
     for t_end in [100.0, long] {
-        let mut verlet = registry::splitting_stepper::<Charged<Particle<f64>>>("velocity_verlet_kdk", &y0).unwrap();
+        let mut verlet = Method::named("velocity_verlet_kdk")
+            .unwrap()
+            .stepper_for(&p, &y0, &Default::default())
+            .unwrap();
         let sol = Driver::fixed(0.01)
             .every(10)
             .run(&p, &mut verlet, 0.0, &y0, t_end)
@@ -281,7 +293,10 @@ fn compositions_of_the_magnetic_verlet_reach_their_order() {
     let y0 = [1.0, 1.0, 1.0, 0.0, 0.0, 0.0];
     let t_end = 2.0;
     let run = |name: &str, n: usize| {
-        let mut s = registry::splitting_stepper::<Charged<Particle<f64>>>(name, &y0).unwrap();
+        let mut s = Method::named(name)
+            .unwrap()
+            .stepper_for(&p, &y0, &Default::default())
+            .unwrap();
         let sol = Driver::fixed(t_end / n as f64)
             .run(&p, &mut s, 0.0, &y0, t_end)
             .unwrap();
@@ -311,7 +326,10 @@ fn euler_cromer_is_first_order_and_bounded() {
     let sol = Driver::fixed(0.01).run(&p, &mut ec, 0.0, &y0, 100.0).unwrap();
     let worst = sol.y.iter().map(|y| (speed2(y) - 1.0).abs()).fold(0.0, f64::max);
     assert!(worst < 0.02, "{worst}");
-    let mut euler = registry::stepper::<Charged<Particle<f64>>>("euler", &y0, &Default::default()).unwrap();
+    let mut euler = Method::named("euler")
+        .unwrap()
+        .stepper_for(&p, &y0, &Default::default())
+        .unwrap();
     let sol = Driver::fixed(0.01).run(&p, &mut euler, 0.0, &y0, 100.0).unwrap();
     let growth = speed2(sol.y.last().unwrap());
     assert!(growth > 2.0, "explicit Euler should spiral out: |v|^2 = {growth}");
@@ -332,7 +350,10 @@ fn euler_cromer_is_first_order_and_bounded() {
 fn magnetic_verlet_in_f32() {
     let p = Charged(particle::<f32>(1.0, [0.0; 3], true));
     let y0 = [1.0f32, 1.0, 1.0, 0.0, 0.0, 0.0];
-    let mut verlet = registry::splitting_stepper::<Charged<Particle<f32>>>("velocity_verlet_kdk", &y0).unwrap();
+    let mut verlet = Method::named("velocity_verlet_kdk")
+        .unwrap()
+        .stepper_for(&p, &y0, &Default::default())
+        .unwrap();
     let sol = Driver::fixed(0.01f32)
         .every(10)
         .run(&p, &mut verlet, 0.0, &y0, 100.0)

@@ -154,7 +154,10 @@ fn every_catalog_splitting_matches_its_runtime_word_and_stage_count() {
     let y0 = [0.5, -0.3, 0.1, 0.2];
     let steps = 50;
     for data in stormer::registry::SPLITTING {
-        let mut compiled = stormer::registry::splitting_stepper_quadratic::<Coupled>(data.name, &y0).unwrap();
+        let named = stormer::Method::named(data.name).unwrap();
+        let mut compiled = named
+            .compiled_stepper_for_quadratic(&Coupled, &y0, &Default::default())
+            .unwrap();
         let method = Splitting::from_data(data).unwrap();
         let mut runtime = RuntimeSplitting::new_quadratic(&method, &y0).unwrap();
         let a = Driver::fixed(0.05).run(&Coupled, &mut compiled, 0.0, &y0, 2.5).unwrap();

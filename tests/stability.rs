@@ -4,7 +4,7 @@
 //! Known values: Stormer-Verlet 2, RK4 2 sqrt(2).
 
 use stormer::order::stability::{butcher_interval, splitting_interval, Interval};
-use stormer::{registry, Driver, ImplicitOptions, Stepper};
+use stormer::{registry, Driver, ImplicitOptions, Method, Stepper};
 
 #[path = "support/problems.rs"]
 mod problems;
@@ -26,7 +26,7 @@ fn catalog() -> Vec<(&'static str, Interval)> {
 }
 
 fn stepper(name: &str) -> Box<dyn Stepper<Oscillator>> {
-    let method = registry::lookup(name).unwrap();
+    let method = Method::named(name).unwrap();
     method
         .stepper_for(&Oscillator, &Y0, &ImplicitOptions::default())
         .unwrap()

@@ -51,7 +51,7 @@ use stormer::catalog::{TripleJump4, VelocityVerletKdk};
 use stormer::driver::Recorder;
 use stormer::models::{Bodies, NBody};
 use stormer::order::splitting::Flow;
-use stormer::{registry, Driver, Hamiltonian, SplittingMethod, SplittingStepper, Stepper};
+use stormer::{Driver, Hamiltonian, Method, SplittingMethod, SplittingStepper, Stepper};
 use stormer_app::scenes::{self, AnyScene};
 
 const STEPS: usize = 1000;
@@ -497,7 +497,10 @@ fn assert_bitwise_equal(s: &Setup) {
     assert_method_bitwise_equal::<TripleJump4>(s, n, &jump, &hand_jump_nbody(s, &c, n, H, &s.y0));
     // the boxed steppers of the registry (the CLI's path) are the same code too
     for (name, want) in [("velocity_verlet_kdk", &verlet), ("triple_jump4", &jump)] {
-        let mut boxed = registry::splitting_stepper_quadratic::<Problem>(name, &s.y0).expect("catalog method");
+        let method = Method::named(name).expect("catalog method");
+        let mut boxed = method
+            .compiled_stepper_for_quadratic(&s.nbody, &s.y0, &Default::default())
+            .expect("admitted");
         let got = with_stepper(&s.nbody, &mut boxed, n, H, &s.y0);
         assert_eq!(
             bits(&got),

@@ -45,7 +45,10 @@ fn splitting(s: &Setup<Charged<RestrictedThreeBody>>, name: &str) -> Box<dyn Ste
 }
 
 fn dop853(s: &Setup<Charged<RestrictedThreeBody>>) -> Box<dyn Stepper<Charged<RestrictedThreeBody>>> {
-    registry::stepper("dop853", &s.y0, &ImplicitOptions::fixed_point()).unwrap()
+    let dop853 = Method::named("dop853").unwrap();
+    dop853
+        .stepper_for(&s.model, &s.y0, &ImplicitOptions::fixed_point())
+        .unwrap()
 }
 
 /// The largest change of the Jacobi integral over the records.

@@ -1,9 +1,10 @@
 //! The charged-particle scenes (`scenes/*.toml`, model `charged-particles`), run the way
 //! `stormer run` runs them: through `Method::stepper_for`, which asks the model which families it admits.
 
+use nalgebra::DVector;
 use stormer::magnetic::Charged;
 use stormer::models::ChargedParticles;
-use stormer::{registry, Driver, Method, Stepper};
+use stormer::{registry, Driver, Method, RuntimeSplitting, Splitting, Stepper};
 use stormer_app::scenes::{self, AnyScene, ChargedScene, Setup};
 
 fn setup(name: &str) -> Setup<ChargedScene> {
@@ -38,11 +39,12 @@ fn coulomb_magnetic_has_no_energy_drift_to_1e4() {
     let s = setup("coulomb-magnetic");
     let model: ChargedParticles<f64, [f64; 6]> = s.model.0.converted();
     let y0: [f64; 6] = std::array::from_fn(|i| s.y0[i]);
-    let mut verlet =
-        registry::splitting_stepper::<Charged<ChargedParticles<f64, [f64; 6]>>>("velocity_verlet_kdk", &y0).unwrap();
+    let problem = Charged(model);
+    let verlet = Method::named("velocity_verlet_kdk").unwrap();
+    let mut verlet = verlet.stepper_for(&problem, &y0, &Default::default()).unwrap();
     let sol = Driver::fixed(s.run.dt)
         .every(10)
-        .run(&Charged(model), &mut verlet, 0.0, &y0, 1e4)
+        .run(&problem, &mut verlet, 0.0, &y0, 1e4)
         .unwrap();
     let e0 = -1.0 / 3f64.sqrt();
     assert!((sol.energy[0] - e0).abs() <= f64::EPSILON);
@@ -143,12 +145,13 @@ fn in_the_magnetic_bottle_boris_is_second_order_and_the_splittings_first() {
         .err()
         .unwrap();
     assert!(refused.to_string().contains("not uniform"), "{refused}");
-    // and the typed library path (which does not ask the problem) shows why: order 1. If this fails, the drift
+    // and the run-time stepper built directly (which does not ask the problem) shows why: order 1. If this fails, the drift
     // became a second-order flow in non-uniform fields: lift the scene's refusal and
     // update docs/charged-particles.md and scenes/magnetic-bottle.toml
     for name in ["velocity_verlet_kdk", "kahan_li6"] {
         let run = |n: usize| {
-            let mut st = registry::splitting_stepper::<ChargedScene>(name, &s.y0).unwrap();
+            let word = Splitting::from_data(registry::find_splitting(name).unwrap()).unwrap();
+            let mut st = RuntimeSplitting::<DVector<f64>, _>::new(&word, &s.y0).unwrap();
             let sol = Driver::fixed(t_end / n as f64)
                 .every(u64::MAX)
                 .run(&s.model, &mut st, 0.0, &s.y0, t_end);

@@ -129,7 +129,7 @@ fn adaptive_dop853_on_the_harmonic_oscillator() {
 
 #[test]
 fn csv_round_trip_is_bitwise() {
-    use stormer::{registry, Driver, ImplicitOptions};
+    use stormer::{Driver, ImplicitOptions, Method};
     use stormer_app::scenes::Pendulum;
     let dir = workdir("roundtrip");
     let (_, header, rows) = run_csv(
@@ -141,7 +141,8 @@ fn csv_round_trip_is_bitwise() {
     );
     assert_eq!(header, ["t", "theta", "omega", "energy"]);
     let y0 = [std::f64::consts::FRAC_PI_4, 0.0];
-    let mut stepper = registry::stepper::<Pendulum>("dop853", &y0, &ImplicitOptions::default()).unwrap();
+    let dop853 = Method::named("dop853").unwrap();
+    let mut stepper = dop853.stepper_for(&Pendulum, &y0, &ImplicitOptions::default()).unwrap();
     let sol = Driver::fixed(0.03)
         .every(7)
         .run(&Pendulum, &mut stepper, 0.0, &y0, 7.0)

@@ -18,7 +18,7 @@
 
 use nalgebra::DVector;
 use stormer::models::NBody;
-use stormer::{registry, Driver, ImplicitOptions, Method, Stepper};
+use stormer::{Driver, ImplicitOptions, Method, Stepper};
 use stormer_app::scenes::{self, AnyScene, Setup};
 
 type Scene = Setup<NBody<f64, DVector<f64>>>;
@@ -53,7 +53,7 @@ struct Drift {
 fn run(scene: &Scene, method: &str, steps: u64) -> Drift {
     let y0 = &scene.y0;
     let model = &scene.model;
-    let resolved = registry::lookup(method).unwrap();
+    let resolved = Method::named(method).unwrap();
     let stepper = resolved.stepper_for(model, y0, &ImplicitOptions::default());
     let (mut stepper, kicks, subflows): (Box<dyn Stepper<_>>, u64, u64) = match resolved {
         Method::Splitting(d) => {

@@ -4,7 +4,7 @@
 //! `Omega = -mu R^3 rho |omega| / m`.
 
 use std::f64::consts::PI;
-use stormer::{registry, Crossing, Driver, ImplicitOptions, Problem, Solution, StepControl, StopEvent, Tolerances};
+use stormer::{Crossing, Driver, ImplicitOptions, Method, Problem, Solution, StepControl, StopEvent, Tolerances};
 use stormer_app::scenes::{self, AnyScene, Scene, Setup, SpinningBall};
 
 #[path = "support/refusals.rs"]
@@ -31,7 +31,10 @@ fn flight(
     control: StepControl<f64>,
 ) -> (Solution<f64, [f64; 4]>, StopEvent<f64, [f64; 4]>) {
     let stop = s.model.stop().unwrap();
-    let mut stepper = registry::stepper::<SpinningBall>(method, &s.y0, &ImplicitOptions::fixed_point()).unwrap();
+    let method = Method::named(method).unwrap();
+    let mut stepper = method
+        .stepper_for(&s.model, &s.y0, &ImplicitOptions::fixed_point())
+        .unwrap();
     let sol = Driver::with(control)
         .stop_when(|t, y| (stop.g)(&s.model, t, y))
         .run(&s.model, &mut stepper, s.run.t0, &s.y0, s.run.t_end)
@@ -119,7 +122,10 @@ fn the_landing_on_dop853s_continuous_extension_takes_no_extra_step() {
         h_max: None,
     };
     let run = |driver: Driver<'_, f64, [f64; 4]>| {
-        let mut stepper = registry::stepper::<SpinningBall>("dop853", &s.y0, &ImplicitOptions::fixed_point()).unwrap();
+        let dop853 = Method::named("dop853").unwrap();
+        let mut stepper = dop853
+            .stepper_for(&s.model, &s.y0, &ImplicitOptions::fixed_point())
+            .unwrap();
         driver
             .run(&s.model, &mut stepper, s.run.t0, &s.y0, s.run.t_end)
             .unwrap()
@@ -151,7 +157,10 @@ fn the_drag_takes_the_energy() {
     // and the loss is the work of the drag, int m k |v|^3 dt (Simpson on a finer run)
     let k = 0.5 * 1.3 * 0.4 * PI * 0.11 * 0.11 / 0.42;
     let h = landing.t / 2000.0;
-    let mut rk4 = registry::stepper::<SpinningBall>("rk4", &s.y0, &ImplicitOptions::fixed_point()).unwrap();
+    let rk4 = Method::named("rk4").unwrap();
+    let mut rk4 = rk4
+        .stepper_for(&s.model, &s.y0, &ImplicitOptions::fixed_point())
+        .unwrap();
     let run = Driver::fixed(h).run(&s.model, &mut rk4, 0.0, &s.y0, landing.t).unwrap();
     let power: Vec<f64> = run
         .y

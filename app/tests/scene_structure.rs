@@ -17,7 +17,7 @@ mod scene_structure {
     use stormer::models::ChargedParticles;
     use stormer::stepper::ParticleMethod;
     use stormer::verify::{defect_bound, jacobian_dual, symplectic_defect, Dual64, SYMPLECTIC_FACTOR};
-    use stormer::{lit, registry, Stepper};
+    use stormer::{lit, Method, Stepper};
     use stormer_app::scenes::{self, AnyScene};
 
     type Model = ChargedParticles<Dual64, DVector<Dual64>>;
@@ -32,10 +32,10 @@ mod scene_structure {
         let y: DVector<Dual64> = s.y0.map(lit);
         let mut stepper: Box<dyn Stepper<Charged<Model>>> = match ParticleMethod::find(name) {
             Some(m) => m.stepper::<Model>(&y).unwrap(),
-            None => match registry::find_splitting(name) {
-                Ok(_) => registry::splitting_stepper::<Charged<Model>>(name, &y).unwrap(),
-                Err(_) => registry::stepper::<Charged<Model>>(name, &y, &Default::default()).unwrap(),
-            },
+            None => Method::named(name)
+                .unwrap()
+                .stepper_for(&p, &y, &Default::default())
+                .unwrap(),
         };
         let j = jacobian_dual(&mut stepper, &p, 0.0, h, &y).unwrap();
         let mut y1 = y.clone();

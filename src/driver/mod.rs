@@ -192,7 +192,7 @@ impl<'a, T: Real, S: State<Scalar = T>> Driver<'a, T, S> {
     /// the error (docs/stability-and-limits.md).
     ///
     /// ```
-    /// use stormer::{registry, Driver, SecondOrder};
+    /// use stormer::{Driver, Method, SecondOrder};
     /// struct Oscillator;
     /// impl SecondOrder for Oscillator {
     ///     type Scalar = f64;
@@ -200,7 +200,8 @@ impl<'a, T: Real, S: State<Scalar = T>> Driver<'a, T, S> {
     ///     fn acceleration(&self, _t: f64, q: &[f64], a: &mut [f64]) { a[0] = -q[0]; }
     /// }
     /// let y0 = [1.0, 0.0];
-    /// let mut verlet = registry::splitting_stepper::<Oscillator>("velocity_verlet_kdk", &y0).unwrap();
+    /// let verlet = Method::named("velocity_verlet_kdk").unwrap();
+    /// let mut verlet = verlet.stepper_for(&Oscillator, &y0, &Default::default()).unwrap();
     /// let solution = Driver::fixed(1.0 / 64.0).compensated().run(&Oscillator, &mut verlet, 0.0, &y0, 10.0).unwrap();
     /// assert_eq!(solution.stats.steps, 640);
     /// ```

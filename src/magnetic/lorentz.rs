@@ -57,7 +57,7 @@ pub trait Lorentz {
 ///
 /// ```
 /// use stormer::magnetic::{Charged, Lorentz};
-/// use stormer::{registry, Driver};
+/// use stormer::{Driver, Method};
 /// /// A particle gyrating in a uniform field along z, no electric field.
 /// struct Cyclotron;
 /// impl Lorentz for Cyclotron {
@@ -68,7 +68,8 @@ pub trait Lorentz {
 ///     fn acceleration(&self, _t: f64, _q: &[f64], a: &mut [f64]) { a.fill(0.0); }
 /// }
 /// let y0 = [1.0, 0.0, 0.0, 0.0, 1.0, 0.0];
-/// let mut verlet = registry::splitting_stepper::<Charged<Cyclotron>>("velocity_verlet_kdk", &y0).unwrap();
+/// let verlet = Method::named("velocity_verlet_kdk").unwrap();
+/// let mut verlet = verlet.stepper_for(&Charged(Cyclotron), &y0, &Default::default()).unwrap();
 /// let period = 2.0 * std::f64::consts::PI;
 /// let sol = Driver::fixed(period / 7.0).run(&Charged(Cyclotron), &mut verlet, 0.0, &y0, period).unwrap();
 /// let y = sol.y.last().unwrap();

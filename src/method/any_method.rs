@@ -56,7 +56,7 @@ pub enum Method {
 impl Method {
     /// Resolves what a user names: a charged-particle pusher, a method file (a path: it
     /// ends in `.toml`, has a path separator, or names an existing file), or a catalog name
-    /// or alias (spelling rules and suggestions of [`registry::lookup`]).
+    /// or alias (spelling rules and suggestions of [`Method::named`]).
     pub fn resolve(name_or_path: &str) -> Result<Self, Error> {
         if let Some(pusher) = ParticleMethod::find(name_or_path) {
             return Ok(Method::Particle(pusher));
@@ -70,7 +70,18 @@ impl Method {
         Method::named(name_or_path)
     }
 
-    /// A catalog method by name or alias.
+    /// A catalog method by name or alias: `-`, `_` and spaces are one separator, and
+    /// separators are optional when that names one method (`rk-4` is `rk4`); an unknown
+    /// name is an error that suggests the nearest names and aliases.
+    ///
+    /// ```
+    /// use stormer::Method;
+    /// assert_eq!(Method::named("rk-4").unwrap().name(), "rk4");
+    /// assert_eq!(Method::named("Tsit5").unwrap().name(), "tsitouras5");
+    /// assert_eq!(Method::named("leapfrog").unwrap().name(), "stormer_verlet_dkd");
+    /// let err = Method::named("rk-5").unwrap_err().to_string();
+    /// assert!(err.contains("did you mean"), "{err}");
+    /// ```
     pub fn named(name: &str) -> Result<Self, Error> {
         registry::lookup(name)
     }
@@ -176,7 +187,7 @@ impl Method {
         P: Problem + 'static,
     {
         match self {
-            Method::Tableau(d) => registry::compiled_tableau::<P>(d, y0, implicit),
+            Method::Tableau(d) => registry::runtime_tableau::<P>(&Tableau::from_data(d)?, y0, implicit),
             Method::RuntimeTableau(t) => registry::runtime_tableau::<P>(t, y0, implicit),
             Method::Splitting(d) => problem.families().splitting(SplittingSource::Compiled(d), y0),
             Method::RuntimeSplitting(s) => problem.families().splitting(SplittingSource::Runtime(s), y0),

@@ -2,6 +2,7 @@
 
 mod any_method;
 mod butcher;
+mod compiled;
 mod file;
 mod info;
 mod splitting;

@@ -38,7 +38,7 @@ use nalgebra::{DMatrix, DVector};
 /// ```
 /// use stormer::magnetic::Charged;
 /// use stormer::models::{ChargedParticles, MagneticField};
-/// use stormer::{registry, Driver, Problem};
+/// use stormer::{Driver, Method, Problem};
 /// // SCENES.md 5: unit charge and mass, Coulomb centre, field along axis 3 of strength 1
 /// let model = ChargedParticles::<f64, [f64; 6]>::new(&[1.0], &[1.0])
 ///     .unwrap()
@@ -47,7 +47,7 @@ use nalgebra::{DMatrix, DVector};
 /// let y0 = [1.0, 1.0, 1.0, 0.0, 0.0, 0.0];
 /// let problem = Charged(model);
 /// assert_eq!(problem.energy(0.0, &y0), Some(-1.0 / 3f64.sqrt()));
-/// let mut verlet = registry::splitting_stepper::<Charged<_>>("velocity_verlet_kdk", &y0)?;
+/// let mut verlet = Method::named("velocity_verlet_kdk")?.stepper_for(&problem, &y0, &Default::default())?;
 /// let sol = Driver::fixed(0.01).every(10).run(&problem, &mut verlet, 0.0, &y0, 10.0)?;
 /// let worst = sol.energy.iter().map(|e| (e - sol.energy[0]).abs()).fold(0.0, f64::max);
 /// assert!(worst < 2e-4);

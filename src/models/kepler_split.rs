@@ -95,14 +95,15 @@ enum Transform<T> {
 ///
 /// ```
 /// use stormer::models::{KeplerCoordinates, KeplerSplit, NBody};
-/// use stormer::{registry, Driver, Problem};
+/// use stormer::{Driver, Method, Problem};
 /// // a star and two planets in the plane, G = 1
 /// let bodies = NBody::<f64, [f64; 12]>::new(1.0, &[1.0, 1e-3, 1e-3], 2).unwrap();
 /// let mut y = [0.0; 12];
 /// bodies.set_state(&[0.0, 0.0, 1.0, 0.0, 0.0, 2.0], &[0.0, 0.0, 0.0, 1.0, -0.7, 0.0], &mut y).unwrap();
 /// let split = KeplerSplit::new(bodies, KeplerCoordinates::Jacobi).unwrap();
 /// let y0 = split.from_scene(&y);
-/// let mut stepper = registry::splitting_stepper("stormer_verlet_dkd", &y0).unwrap();
+/// let dkd = Method::named("stormer_verlet_dkd").unwrap();
+/// let mut stepper = dkd.stepper_for(&split, &y0, &Default::default()).unwrap();
 /// let run = Driver::fixed(0.05).run(&split, &mut stepper, 0.0, &y0, 100.0).unwrap();
 /// let (e0, e1) = (split.energy(0.0, &y0).unwrap(), split.energy(100.0, run.y.last().unwrap()).unwrap());
 /// assert!(((e1 - e0) / e0).abs() < 1e-6);

@@ -12,7 +12,7 @@ use crate::{lit, Error, MethodInfo, Problem, Splitting, State};
 ///
 /// ```
 /// use stormer::stepper::Composed;
-/// use stormer::{registry, ImplicitOptions, Problem, Splitting, Stepper};
+/// use stormer::{ImplicitOptions, Method, Problem, Splitting, Stepper};
 /// struct Oscillator;
 /// impl Problem for Oscillator {
 ///     type Scalar = f64;
@@ -20,7 +20,8 @@ use crate::{lit, Error, MethodInfo, Problem, Splitting, State};
 ///     fn rhs(&self, _t: f64, y: &[f64; 2], dy: &mut [f64; 2]) { *dy = [y[1], -y[0]]; }
 /// }
 /// let y0 = [1.0, 0.0];
-/// let base = registry::stepper::<Oscillator>("implicit_midpoint", &y0, &ImplicitOptions::default()).unwrap();
+/// let midpoint = Method::named("implicit_midpoint").unwrap();
+/// let base = midpoint.stepper_for(&Oscillator, &y0, &ImplicitOptions::default()).unwrap();
 /// let w = 1.0 / (2.0 - 2f64.cbrt());
 /// let jump = Splitting::composition("triple_jump4", &[w, 1.0 - 2.0 * w, w], 4).unwrap();
 /// let mut s = Composed::new(&jump, base, &y0).unwrap();

@@ -46,7 +46,7 @@ impl ParticleMethod {
         }
     }
 
-    /// The method called `name` (`-`, `_`, spaces and case as in [`crate::registry::lookup`]).
+    /// The method called `name` (`-`, `_`, spaces and case as in [`crate::Method::named`]).
     pub fn find(name: &str) -> Option<Self> {
         find_named(PARTICLE_METHODS, Self::name, name)
     }

@@ -66,9 +66,9 @@ dual_scalar!(Dual32, f32);
 /// ```
 /// use num_dual::Dual64;
 /// use stormer::verify::{jacobian_dual, problems::Pendulum};
-/// use stormer::{registry, lit, ImplicitOptions};
+/// use stormer::{lit, Method};
 /// let y = Pendulum::<Dual64>::initial();
-/// let mut rk4 = registry::stepper::<Pendulum<Dual64>>("rk4", &y, &ImplicitOptions::default()).unwrap();
+/// let mut rk4 = Method::named("rk4").unwrap().stepper_for(&Pendulum::new(), &y, &Default::default()).unwrap();
 /// let j = jacobian_dual(&mut rk4, &Pendulum::new(), 0.0, 0.1, &y).unwrap();
 /// // d q_new / d p = h + O(h^3)
 /// assert!((j[(0, 1)] - 0.1).abs() < 1e-3);

@@ -24,9 +24,9 @@ pub fn increment<T: Real>(yj: T) -> T {
 ///
 /// ```
 /// use stormer::verify::{jacobian_fd, problems::Pendulum};
-/// use stormer::{registry, ImplicitOptions};
+/// use stormer::Method;
 /// let y = Pendulum::<f64>::initial();
-/// let mut rk4 = registry::stepper::<Pendulum<f64>>("rk4", &y, &ImplicitOptions::default()).unwrap();
+/// let mut rk4 = Method::named("rk4").unwrap().stepper_for(&Pendulum::new(), &y, &Default::default()).unwrap();
 /// let j = jacobian_fd(&mut rk4, &Pendulum::new(), 0.0, 0.1, &y).unwrap();
 /// assert!((j[(0, 0)] - (1.0 - 0.1f64.powi(2) / 2.0 * 1f64.cos())).abs() < 1e-3);
 /// ```

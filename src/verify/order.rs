@@ -3,7 +3,7 @@
 
 #[allow(unused_imports)]
 use crate::real::ops::*;
-use crate::{lit, registry, to_f64, Error, ImplicitOptions, Problem, Real, State, Stepper};
+use crate::{lit, to_f64, Error, ImplicitOptions, Method, Problem, Real, State, Stepper};
 
 /// How [`measure_order`] samples and fits the error.
 ///
@@ -95,9 +95,9 @@ pub struct OrderMeasurement {
 ///
 /// ```
 /// use stormer::verify::{measure_order, problems::QuarticKinetic, OrderOptions};
-/// use stormer::{registry, ImplicitOptions};
+/// use stormer::Method;
 /// let (p, y0) = (QuarticKinetic::<f64>::new(), QuarticKinetic::<f64>::initial());
-/// let mut rk4 = registry::stepper::<QuarticKinetic<f64>>("rk4", &y0, &ImplicitOptions::default()).unwrap();
+/// let mut rk4 = Method::named("rk4").unwrap().stepper_for(&p, &y0, &Default::default()).unwrap();
 /// let m = measure_order(&mut rk4, &p, 0.0, &y0, &OrderOptions::default()).unwrap();
 /// assert!((m.order - 4.0).abs() < 0.2, "{}", m.order);
 /// ```
@@ -241,7 +241,7 @@ where
     if !span.is_finite() {
         return Err(Error::invalid("span", format!("must be finite, got {span}")));
     }
-    let mut stepper = registry::stepper::<P>("verner9", y0, &ImplicitOptions::default())?;
+    let mut stepper = Method::named("verner9")?.stepper_for(problem, y0, &ImplicitOptions::default())?;
     let n = (span.abs() / 0.01).ceil().max(1.0);
     let h = lit::<P::Scalar>(span) / lit::<P::Scalar>(n);
     let (mut y, mut next) = (y0.clone(), y0.clone());

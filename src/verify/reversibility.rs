@@ -14,11 +14,12 @@ use crate::{Error, Problem, State, Stepper};
 ///
 /// ```
 /// use stormer::verify::{problems::Pendulum, reversibility_defect};
-/// use stormer::{registry, ImplicitOptions};
+/// use stormer::{ImplicitOptions, Method};
 /// let y = Pendulum::<f64>::initial();
 /// let options = ImplicitOptions::default();
-/// let mut midpoint = registry::stepper::<Pendulum<f64>>("implicit_midpoint", &y, &options).unwrap();
-/// let mut rk4 = registry::stepper::<Pendulum<f64>>("rk4", &y, &options).unwrap();
+/// let midpoint = Method::named("implicit_midpoint").unwrap();
+/// let mut midpoint = midpoint.stepper_for(&Pendulum::new(), &y, &options).unwrap();
+/// let mut rk4 = Method::named("rk4").unwrap().stepper_for(&Pendulum::new(), &y, &options).unwrap();
 /// let p = Pendulum::new();
 /// assert!(reversibility_defect(&mut midpoint, &p, 0.0, 0.2, &y).unwrap() < 1e-15);
 /// assert!(reversibility_defect(&mut rk4, &p, 0.0, 0.2, &y).unwrap() > 1e-7);

@@ -144,7 +144,7 @@ pub fn max_difference(a: &[f64], b: &[f64]) -> f64 {
 impl<'s, S: Scene> SceneRun<'s, S> {
     /// Builds `method`'s stepper on the scene and the run's settings from `options`.
     pub fn new(setup: &'s Setup<S>, method: &Method, options: &Options) -> Result<Self, Error> {
-        let mut stepper = method.stepper_for(&setup.model, &setup.y0, &options.implicit)?;
+        let mut stepper = setup.model.stepper(method, &setup.y0, &options.implicit)?;
         if options.compensated {
             // refused here, before an output file is created (the driver turns it on too)
             stepper.set_compensated(true)?;

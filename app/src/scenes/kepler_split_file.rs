@@ -22,6 +22,8 @@ use toml::Spanned;
 pub type SplitBodies = KeplerSplit<f64, DVector<f64>>;
 
 impl Scene for SplitBodies {
+    crate::compiled_in_release!(compiled_stepper_for_quadratic);
+
     /// An n-body scene file: the split is chosen by its `[run]` table (or `--split`).
     const MODEL: &'static str = "n-body";
     const INITIAL: &'static str = "list of [[bodies]]";

@@ -75,8 +75,9 @@ pub use relativistic_file::{RelativisticParameters, RelativisticScene};
 use nalgebra::DVector;
 use serde::de::DeserializeOwned;
 use stormer::magnetic::Charged;
+use stormer::method::StepperResult;
 use stormer::models::{CentralForce, NBody};
-use stormer::{Error, Problem};
+use stormer::{Error, ImplicitOptions, Method, Problem};
 
 /// A model of a scene: a problem in `f64` that knows how a scene file describes it.
 ///
@@ -129,6 +130,34 @@ pub trait Scene: Problem<Scalar = f64> + Sized + 'static {
     fn scene_state<'a>(&self, y: &'a Self::State) -> std::borrow::Cow<'a, Self::State> {
         std::borrow::Cow::Borrowed(y)
     }
+
+    /// The stepper of `method` on this model: a catalog method's stepper built from its
+    /// data ([`Method::stepper_for`]). The models whose runs users time (the pendulum and
+    /// the n-body runs, plain and split) dispatch to the generated steppers in release
+    /// builds ([`compiled_in_release!`](crate::compiled_in_release)); debug builds, the
+    /// tests', compile no catalog-wide dispatch (docs/build-shape.md).
+    fn stepper(&self, method: &Method, y0: &Self::State, implicit: &ImplicitOptions) -> StepperResult<Self> {
+        method.stepper_for(self, y0, implicit)
+    }
+}
+
+/// A [`Scene::stepper`] that, in release builds, runs every catalog method by its
+/// generated stepper (`Method::compiled_stepper_for_quadratic` or
+/// `..._for_splittable`); the same bits as the run-time steppers of debug builds
+/// (the library's tests/methods/compiled_vs_runtime.rs).
+#[macro_export]
+macro_rules! compiled_in_release {
+    ($dispatch:ident) => {
+        #[cfg(not(debug_assertions))]
+        fn stepper(
+            &self,
+            method: &stormer::Method,
+            y0: &Self::State,
+            implicit: &stormer::ImplicitOptions,
+        ) -> stormer::method::StepperResult<Self> {
+            method.$dispatch(self, y0, implicit)
+        }
+    };
 }
 
 /// A stop condition of a scene's model ([`Scene::stop`]): where the run ends, and what

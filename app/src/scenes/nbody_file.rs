@@ -110,6 +110,8 @@ impl Taken {
 }
 
 impl Scene for NBody<f64, DVector<f64>> {
+    crate::compiled_in_release!(compiled_stepper_for_quadratic);
+
     const MODEL: &'static str = "n-body";
     const INITIAL: &'static str = "list of [[bodies]]";
     type Parameters = GravityParameters;

@@ -61,6 +61,8 @@ pub struct PendulumInitial {
 }
 
 impl Scene for Pendulum {
+    crate::compiled_in_release!(compiled_stepper_for_quadratic);
+
     const MODEL: &'static str = "pendulum";
     type Parameters = NoParameters;
     type Initial = PendulumInitial;

@@ -137,7 +137,8 @@ fn an_adaptive_implicit_step_the_solver_cannot_solve_is_retried_smaller() {
             dy[0] = -1000.0 * (y[0] - t.cos());
         }
     }
-    let mut trapezoidal = stormer::registry::stepper::<Stiff>("trapezoidal", &[1.0], &Default::default()).unwrap();
+    let trapezoidal = stormer::Method::named("trapezoidal").unwrap();
+    let mut trapezoidal = trapezoidal.stepper_for(&Stiff, &[1.0], &Default::default()).unwrap();
     let run = Driver::adaptive(Tolerances::new(1e-6, 1e-6)).run(&Stiff, &mut *trapezoidal, 0.0, &[1.0], 2.0);
     let sol = run.unwrap_or_else(|e| panic!("{}", e.error));
     let y = sol.y.last().unwrap()[0];

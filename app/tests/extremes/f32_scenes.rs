@@ -17,28 +17,17 @@
 use nalgebra::DVector;
 use stormer::magnetic::{Charged, Lorentz};
 use stormer::models::{CentralForce, KeplerSplit, NBody};
-use stormer::stepper::{ParticleMethod, PARTICLE_METHODS};
-use stormer::{
-    lit, registry, Driver, Error, Method, Problem, QuadraticKinetic, Real, SecondOrder, State, Stepper, Tolerances,
-};
+use stormer::stepper::PARTICLE_METHODS;
+use stormer::{lit, registry, Driver, Method, Problem, Real, SecondOrder, State, Stepper, Tolerances};
 use stormer_app::scenes::{self, AnyScene, Scene, Setup};
 
 /// Steps per run: enough for round-off to accumulate, few enough for a debug build.
 const STEPS: usize = 100;
 
-/// A stepper of `P` for a splitting's name, or the error refusing it.
-type SplittingStepperFn<P> = fn(&str, &<P as Problem>::State) -> Result<Box<dyn Stepper<P>>, Error>;
-
-/// A stepper of `P` for a charged-particle method, or the error refusing it.
-type ParticleStepperFn<P> = fn(ParticleMethod, &<P as Problem>::State) -> Result<Box<dyn Stepper<P>>, Error>;
-
-/// The `f32` model of a scene, its initial state, and how its splitting and
-/// charged-particle steppers are made.
+/// The `f32` model of a scene and its initial state.
 struct Twin<P: Problem<Scalar = f32>> {
     problem: P,
     y0: P::State,
-    splitting: SplittingStepperFn<P>,
-    particle: Option<ParticleStepperFn<P>>,
 }
 
 /// Two tableaus lose one to two more digits than the rest in f32 (measured on every
@@ -87,18 +76,13 @@ fn deviation<A: State<Scalar = f32>, B: State<Scalar = f64>>(a: &[A], b: &[B]) -
         .fold(0.0, f64::max)
 }
 
-/// The `f32` stepper of `name` for the twin (the scene admits the method).
+/// The `f32` stepper of `name` for the twin (the scene admits the method, and so must its
+/// twin: the same problem class).
 fn f32_stepper<P: Problem<Scalar = f32> + 'static>(twin: &Twin<P>, name: &str) -> Box<dyn Stepper<P>> {
-    if let Some(m) = ParticleMethod::find(name) {
-        return (twin
-            .particle
-            .expect("particle methods only where the scene admits them"))(m, &twin.y0)
-        .unwrap();
-    }
-    match registry::lookup(name).unwrap() {
-        Method::Splitting(_) => (twin.splitting)(name, &twin.y0).unwrap(),
-        _ => registry::stepper::<P>(name, &twin.y0, &Default::default()).unwrap(),
-    }
+    let method = Method::resolve(name).unwrap();
+    method
+        .stepper_for(&twin.problem, &twin.y0, &Default::default())
+        .unwrap()
 }
 
 /// The stepper `stormer run` would use, or `None` when the scene refuses the method.
@@ -112,7 +96,10 @@ fn measure<S: Scene, P: Problem<Scalar = f32> + 'static>(setup: &Setup<S>, twin:
     let h = setup.run.dt;
     let t_end = h * STEPS as f64;
     let mut m = Measured::default();
-    let mut dop853 = registry::stepper::<S>("dop853", &setup.y0, &Default::default()).unwrap();
+    let dop853 = Method::named("dop853").unwrap();
+    let mut dop853 = dop853
+        .stepper_for(&setup.model, &setup.y0, &Default::default())
+        .unwrap();
     let reference = Driver::adaptive(Tolerances::new(1e-13, 1e-13))
         .every(u64::MAX)
         .run(&setup.model, &mut dop853, 0.0, &setup.y0, t_end)
@@ -311,46 +298,8 @@ fn dvector_f32(y: &DVector<f64>) -> DVector<f32> {
     y.map(|x| x as f32)
 }
 
-fn refused<P: Problem>(name: &str, _y0: &P::State) -> Result<Box<dyn Stepper<P>>, Error> {
-    Err(Error::Unsupported {
-        name: name.into(),
-        reason: "not a Hamiltonian".into(),
-    })
-}
-
-fn particle<L: Lorentz + 'static>(m: ParticleMethod, y0: &L::State) -> Result<Box<dyn Stepper<Charged<L>>>, Error> {
-    m.stepper::<L>(y0)
-}
-
-/// A twin whose splittings are those of a quadratic kinetic energy; no charged-particle
-/// methods.
-fn quadratic<P: QuadraticKinetic<Scalar = f32> + 'static>(problem: P, y0: P::State) -> Twin<P> {
-    Twin {
-        problem,
-        y0,
-        splitting: registry::splitting_stepper_quadratic,
-        particle: None,
-    }
-}
-
-/// A twin of a scene that is not Hamiltonian: no splitting, no charged-particle method.
-fn not_hamiltonian<P: Problem<Scalar = f32>>(problem: P, y0: P::State) -> Twin<P> {
-    Twin {
-        problem,
-        y0,
-        splitting: refused,
-        particle: None,
-    }
-}
-
-/// A charged-particle twin: the general splittings and the charged-particle methods.
-fn charged<L: Lorentz<Scalar = f32> + 'static>(lorentz: L, y0: L::State) -> Twin<Charged<L>> {
-    Twin {
-        problem: Charged(lorentz),
-        y0,
-        splitting: registry::splitting_stepper,
-        particle: Some(particle::<L>),
-    }
+fn twin<P: Problem<Scalar = f32>>(problem: P, y0: P::State) -> Twin<P> {
+    Twin { problem, y0 }
 }
 
 /// Measures every method on the named built-in scene, in f32 against f64.
@@ -358,19 +307,16 @@ fn scene(name: &str) -> Measured {
     match scenes::load(name).unwrap() {
         AnyScene::Harmonic(s) => {
             let w0_squared = (s.model.w0 * s.model.w0) as f32;
-            measure(&s, &quadratic(HarmonicTwin { w0_squared }, to_f32(&s.y0)))
+            measure(&s, &twin(HarmonicTwin { w0_squared }, to_f32(&s.y0)))
         }
-        AnyScene::Pendulum(s) => measure(&s, &quadratic(PendulumTwin(core::marker::PhantomData), to_f32(&s.y0))),
-        AnyScene::HenonHeiles(s) => measure(
-            &s,
-            &quadratic(HenonHeilesTwin(core::marker::PhantomData), to_f32(&s.y0)),
-        ),
+        AnyScene::Pendulum(s) => measure(&s, &twin(PendulumTwin(core::marker::PhantomData), to_f32(&s.y0))),
+        AnyScene::HenonHeiles(s) => measure(&s, &twin(HenonHeilesTwin(core::marker::PhantomData), to_f32(&s.y0))),
         AnyScene::DampedOscillator(s) => {
             let problem = DampedTwin {
                 w0_squared: (s.model.w0 * s.model.w0) as f32,
                 damping: (s.model.w0 / s.model.q) as f32,
             };
-            measure(&s, &not_hamiltonian(problem, to_f32(&s.y0)))
+            measure(&s, &twin(problem, to_f32(&s.y0)))
         }
         AnyScene::SpinningBall(s) => {
             let b = &s.model;
@@ -381,31 +327,31 @@ fn scene(name: &str) -> Measured {
                 magnus: (-b.magnus_rate()) as f32,
                 mass: b.mass as f32,
             };
-            measure(&s, &not_hamiltonian(problem, to_f32(&s.y0)))
+            measure(&s, &twin(problem, to_f32(&s.y0)))
         }
         AnyScene::RestrictedThreeBody(s) => {
             let mu = s.model.0.mu as f32;
-            measure(&s, &charged(ThreeBodyTwin { mu }, to_f32(&s.y0)))
+            measure(&s, &twin(Charged(ThreeBodyTwin { mu }), to_f32(&s.y0)))
         }
         AnyScene::CentralForce(s) => {
             let problem = CentralForce::<f32, DVector<f32>>::new(s.model.mu as f32);
-            measure(&s, &quadratic(problem, dvector_f32(&s.y0)))
+            measure(&s, &twin(problem, dvector_f32(&s.y0)))
         }
         AnyScene::NBody(s) => {
             let masses: Vec<f32> = s.model.masses().iter().map(|&m| m as f32).collect();
             let problem = NBody::<f32, DVector<f32>>::new(s.model.g() as f32, &masses, s.model.dim()).unwrap();
-            measure(&s, &quadratic(problem, dvector_f32(&s.y0)))
+            measure(&s, &twin(problem, dvector_f32(&s.y0)))
         }
         AnyScene::KeplerSplit(s) => {
             let b = s.model.bodies();
             let masses: Vec<f32> = b.masses().iter().map(|&m| m as f32).collect();
             let bodies = NBody::<f32, DVector<f32>>::new(b.g() as f32, &masses, b.dim()).unwrap();
             let problem = KeplerSplit::new(bodies, s.model.coordinates()).unwrap();
-            measure(&s, &quadratic(problem, dvector_f32(&s.y0)))
+            measure(&s, &twin(problem, dvector_f32(&s.y0)))
         }
         AnyScene::ChargedParticles(s) => {
             let lorentz = s.model.0.converted::<f32, DVector<f32>>();
-            measure(&s, &charged(lorentz, dvector_f32(&s.y0)))
+            measure(&s, &twin(Charged(lorentz), dvector_f32(&s.y0)))
         }
         other => panic!("a model this test does not know: {}", other.model()),
     }

@@ -6,7 +6,7 @@ use std::ops::Range;
 
 use nalgebra::DVector;
 use stormer::models::NBody;
-use stormer::{registry, Driver, Error, Method, Real, State, Stepper};
+use stormer::{Driver, Error, Method, Real, State, Stepper};
 use stormer_app::scenes::{self, AnyScene, ChargedScene, Setup};
 
 /// The cyclotron scene with field `b` along z: the helix of radius `1/b` (a line at b = 0)
@@ -85,12 +85,8 @@ t_end = 10.0
 }
 
 fn nbody_stepper(s: &Setup<NBody<f64, DVector<f64>>>, name: &str) -> Box<dyn Stepper<NBody<f64, DVector<f64>>>> {
-    match registry::find_splitting(name) {
-        Ok(d) => Method::Splitting(d)
-            .stepper_for(&s.model, &s.y0, &Default::default())
-            .unwrap(),
-        Err(_) => registry::stepper(name, &s.y0, &Default::default()).unwrap(),
-    }
+    let method = Method::named(name).unwrap();
+    method.stepper_for(&s.model, &s.y0, &Default::default()).unwrap()
 }
 
 /// Field 0 and 1e-12 (the gyration's `sin(w h)/w` and `(1 - cos(w h))/w^2` at and near
@@ -272,7 +268,8 @@ fn masses_of_1e30_and_1e_30_in_f32() {
         model
             .set_state(&[0.0, 0.0, 2.5, 0.0], &[0.0, -0.3, 0.0, 3.0], &mut y0)
             .unwrap();
-        let mut verlet = registry::splitting_stepper_quadratic::<Two>("velocity_verlet_kdk", &y0).unwrap();
+        let verlet = Method::named("velocity_verlet_kdk").unwrap();
+        let mut verlet = verlet.stepper_for(&model, &y0, &Default::default()).unwrap();
         let sol = Driver::fixed(0.01f32).run(&model, &mut verlet, 0.0, &y0, 10.0).unwrap();
         let (e0, de) = (sol.energy[0], max_energy_error(&sol.energy));
         (sol, e0 / scale, de)
