@@ -110,6 +110,24 @@ impl<L: Lorentz> Problem for Charged<L> {
     }
 }
 
+/// Debug builds check what [`Lorentz::uniform`] declares, at every drift: each particle's
+/// field at its position is the field at the origin. A field declared uniform that is not
+/// would run every splitting with the gyration of the first drift's positions, silently.
+#[cfg(debug_assertions)]
+fn assert_declared_uniform<L: Lorentz>(field: &L, q: &[L::Scalar]) {
+    let origin = vec![<L::Scalar as num_traits::Zero>::zero(); q.len()];
+    for k in 0..q.len() / 3 {
+        let (here, at_origin) = (field.omega(k, q), field.omega(k, &origin));
+        #[allow(clippy::float_cmp)] // a uniform field gives the same numbers everywhere
+        let same = here == at_origin;
+        assert!(
+            same,
+            "the problem declares a uniform magnetic field (Lorentz::uniform() is true), but particle {k}'s \
+             field is {here:?} at its position and {at_origin:?} at the origin: return false from uniform()"
+        );
+    }
+}
+
 impl<L: Lorentz> Splittable for Charged<L> {
     type FlowCache = GyrationCache<L::Scalar>;
 
@@ -126,6 +144,8 @@ impl<L: Lorentz> Splittable for Charged<L> {
         cache: &mut Self::FlowCache,
     ) {
         if self.0.uniform() {
+            #[cfg(debug_assertions)]
+            assert_declared_uniform(&self.0, q);
             let field = &self.0;
             if let Some(gyrations) = cache.get(tau, q, |k, q| field.omega(k, q)) {
                 for ((g, q), v) in gyrations.iter().zip(q.chunks_exact_mut(3)).zip(v.chunks_exact_mut(3)) {
@@ -178,5 +198,36 @@ impl<L: Lorentz> Splittable for Charged<L> {
     #[inline(always)]
     fn force(&self, t: Self::Scalar, q: &[Self::Scalar], f: &mut [Self::Scalar]) {
         self.0.acceleration(t, q, f)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{Charged, Lorentz};
+    use crate::flows::Splittable;
+
+    /// A field that grows along x but claims to be uniform.
+    struct Mislabelled;
+    impl Lorentz for Mislabelled {
+        type Scalar = f64;
+        type State = [f64; 6];
+        fn omega(&self, _k: usize, q: &[f64]) -> [f64; 3] {
+            [0.0, 0.0, 1.0 + q[0]]
+        }
+        fn uniform(&self) -> bool {
+            true
+        }
+        fn acceleration(&self, _t: f64, _q: &[f64], a: &mut [f64]) {
+            a.fill(0.0);
+        }
+    }
+
+    #[test]
+    #[cfg(debug_assertions)]
+    #[should_panic(expected = "declares a uniform magnetic field")]
+    fn a_field_declared_uniform_that_varies_is_caught_in_debug_builds() {
+        let (mut q, mut v, mut scratch) = ([1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0; 9]);
+        let mut cache = Default::default();
+        Charged(Mislabelled).drift(0.0, 0.1, &mut q, &mut v, &mut scratch, &mut cache);
     }
 }

@@ -167,3 +167,67 @@ impl Method {
         self.compiled_stepper_for(problem, y0, implicit)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use crate::{Method, Problem};
+
+    crate::tableau! {
+        /// Heun's third-order method, declared under the catalog's name "rk4".
+        struct NamedLikeRk4 {
+            name: "rk4",
+            order: 3,
+            c: [0, 1/3, 2/3],
+            a: [[0, 0, 0], [1/3, 0, 0], [0, 2/3, 0]],
+            b: [1/4, 0, 3/4],
+        }
+    }
+
+    /// y' = y t: not linear in t, so third- and fourth-order methods differ in one step.
+    struct Growth;
+    impl Problem for Growth {
+        type Scalar = f64;
+        type State = [f64; 1];
+        fn rhs(&self, t: f64, y: &[f64; 1], dy: &mut [f64; 1]) {
+            dy[0] = y[0] * t * t;
+        }
+    }
+
+    fn one_step(method: &Method, compiled: bool) -> f64 {
+        let options = Default::default();
+        let mut stepper = if compiled {
+            method.compiled_stepper_for(&Growth, &[1.0], &options).unwrap()
+        } else {
+            method.stepper_for(&Growth, &[1.0], &options).unwrap()
+        };
+        let mut y = [0.0];
+        stepper.step(&Growth, 0.5, 0.5, &[1.0], &mut y).unwrap();
+        y[0]
+    }
+
+    /// A user's tableau named like a catalog method runs its own coefficients on both
+    /// routes: the compiled dispatch recognises the catalog's entries by address, not by
+    /// name.
+    #[test]
+    fn a_tableau_named_like_a_catalog_method_runs_its_own_coefficients() {
+        use crate::ButcherMethod;
+        let users = Method::Tableau(&<NamedLikeRk4 as ButcherMethod>::DATA);
+        let catalog = Method::named("rk4").unwrap();
+        let (own, catalog_rk4) = (one_step(&users, false), one_step(&catalog, false));
+        assert_ne!(
+            own.to_bits(),
+            catalog_rk4.to_bits(),
+            "the two methods differ on this step"
+        );
+        assert_eq!(one_step(&users, true).to_bits(), own.to_bits());
+        assert_eq!(one_step(&catalog, true).to_bits(), catalog_rk4.to_bits());
+        // Heun 3 by hand: k1 = f(t, y), k2 = f(t + h/3, y + h k1/3), k3 = f(t + 2h/3, y + 2h k2/3)
+        let (t, h, y) = (0.5f64, 0.5f64, 1.0f64);
+        let f = |t: f64, y: f64| y * t * t;
+        let k1 = f(t, y);
+        let k2 = f(t + h / 3.0, y + h * k1 / 3.0);
+        let k3 = f(t + 2.0 * h / 3.0, y + 2.0 * h * k2 / 3.0);
+        let heun3 = y + h * (k1 / 4.0 + 3.0 * k3 / 4.0);
+        assert!((own - heun3).abs() < 1e-15, "{own} against {heun3}");
+    }
+}
