@@ -96,8 +96,8 @@ pub mod guide {
 /// The everyday items in one import.
 pub mod prelude {
     pub use crate::{
-        Driver, Error, ExplicitRk, ImplicitOptions, ImplicitRk, Problem, Real, RuntimeRk, Solution, State, Stepper,
-        Tableau, Tolerances,
+        Driver, Error, ExplicitRk, Hamiltonian, ImplicitOptions, ImplicitRk, Method, Problem, Real, RuntimeRk,
+        SecondOrder, Solution, State, Stepper, Tableau, Tolerances,
     };
 }
 
