@@ -730,6 +730,59 @@ fn fixed_point_steps_do_not_allocate_and_newton_steps_allocate_once() {
     assert_eq!(allocations_per_run(ImplicitSolver::Newton, 100), 100);
 }
 
+/// `y_i' = -y_i` for as many components as the state has.
+struct Decays;
+
+impl Problem for Decays {
+    type Scalar = f64;
+    type State = nalgebra::DVector<f64>;
+    fn rhs(&self, _t: f64, y: &Self::State, dy: &mut Self::State) {
+        dy.copy_from(y);
+        dy.neg_mut();
+    }
+}
+
+/// Newton's dense matrices (the `n x n` Jacobian and the `(s n) x (s n)` matrix) take
+/// `(n^2 + (s n)^2) 8` bytes: above `ImplicitOptions::newton_memory` the first Newton step is
+/// refused, before anything is allocated or evaluated, with an error naming the sizes and
+/// the fixed-point solver (issue #30, defect 2: 10^4 particles aborted the process on a
+/// failed allocation of 28.8 GB). Here 200 components, 1.5 MiB, against a limit of 1 MiB,
+/// then of 2 MiB, which runs; through the driver, the error is not retried.
+#[test]
+fn newton_refuses_matrices_above_its_memory_limit_before_allocating_them() {
+    let y0 = nalgebra::DVector::from_element(200, 1.0);
+    let limited = |bytes| ImplicitOptions {
+        newton_memory: bytes,
+        ..ImplicitOptions::newton()
+    };
+    let mut refused = ImplicitRk::new(&tableau::<GaussLegendre4>(), &y0, limited(1 << 20));
+    let mut y = y0.clone();
+    let error = refused.step(&Decays, 0.0, 0.1, &y0, &mut y).unwrap_err();
+    assert!(matches!(error, Error::Unsupported { .. }), "{error}");
+    let message = error.to_string();
+    for must in [
+        "method gauss_legendre4 cannot be used here: its Newton solver would need 1.5 MiB",
+        "the 400 x 400 matrix of 2 stages of 200 components and the 200 x 200 Jacobian",
+        "more than the limit of 1.0 MiB",
+        "use the fixed-point solver",
+    ] {
+        assert!(message.contains(must), "{must:?} not in {message}");
+    }
+    let counters = Stepper::<Decays>::counters(&refused);
+    assert_eq!((counters.evaluations, counters.jacobians), (0, 0));
+    let interrupted = Driver::fixed(0.1)
+        .run(&Decays, &mut refused, 0.0, &y0, 1.0)
+        .unwrap_err();
+    assert_eq!(interrupted.error, error);
+    assert_eq!(interrupted.solution.t, [0.0]);
+    // under the limit, the same problem runs
+    let mut admitted = ImplicitRk::new(&tableau::<GaussLegendre4>(), &y0, limited(2 << 20));
+    let sol = Driver::fixed(0.1).run(&Decays, &mut admitted, 0.0, &y0, 1.0).unwrap();
+    let end = sol.y.last().unwrap();
+    // fourth order at h = 0.1: 5e-8 from exp(-1)
+    assert!(end.iter().all(|x| (x - (-1.0f64).exp()).abs() < 1e-6), "{}", end[0]);
+}
+
 /// The oscillator on a heap-allocated state.
 struct DynOscillator;
 

@@ -15,4 +15,5 @@ mod relativistic_kick;
 pub use gyration::{cross, gyration_coefficients, sin_and_versine, Gyration, GyrationCache};
 pub(crate) use gyration::{stumpff_series, C2 as STUMPFF_C2, C3 as STUMPFF_C3};
 pub use lorentz::{Charged, Lorentz};
+pub(crate) use relativistic_kick::cayley_rotate;
 pub use relativistic_kick::RelativisticKick;

@@ -52,9 +52,10 @@ fn mean_gamma_squared<T: Real>(g0_squared: T, tau2: T, ustar: T) -> T {
 }
 
 /// The Cayley rotation of `u` by `t` (Boris's form): `u' = u + u x t`,
-/// `u <- u + (2 / (1 + |t|^2)) u' x t`.
+/// `u <- u + (2 / (1 + |t|^2)) u' x t`, a rotation by `2 atan |t|` (shared with the
+/// non-relativistic [`crate::stepper::Boris`]).
 #[inline(always)]
-fn rotate<T: Real>(u: &mut [T; 3], t: &[T; 3]) {
+pub(crate) fn cayley_rotate<T: Real>(u: &mut [T; 3], t: &[T; 3]) {
     let turned = cross(u, t);
     let u1 = [u[0] + turned[0], u[1] + turned[1], u[2] + turned[2]];
     let s = (T::one() + T::one()) / (T::one() + dot(t, t));
@@ -85,7 +86,7 @@ impl RelativisticKick {
                     u[i] += e[i];
                 }
                 let g = (T::one() + dot(u, u) * inv_c2).sqrt();
-                rotate(u, &tau.map(|x| x / g));
+                cayley_rotate(u, &tau.map(|x| x / g));
                 for i in 0..3 {
                     u[i] += e[i];
                 }
@@ -96,7 +97,7 @@ impl RelativisticKick {
                 }
                 let g2 = mean_gamma_squared(T::one() + dot(u, u) * inv_c2, dot(tau, tau), dot(u, tau) * inv_c);
                 let g = g2.sqrt();
-                rotate(u, &tau.map(|x| x / g));
+                cayley_rotate(u, &tau.map(|x| x / g));
                 for i in 0..3 {
                     u[i] += e[i];
                 }

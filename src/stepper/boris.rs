@@ -5,7 +5,7 @@ use super::boris_lanes::push_lanes;
 use super::particle_chunks::{check_particles_in_3d, try_for_each_chunk};
 use super::{Counters, ParticleMethod, Stepper};
 use crate::hamiltonian::halves_mut;
-use crate::magnetic::{cross, Charged, Lorentz};
+use crate::magnetic::{cayley_rotate, Charged, Lorentz};
 use crate::models::ExternalFields;
 #[allow(unused_imports)]
 use crate::real::ops::*;
@@ -24,23 +24,33 @@ pub enum BorisRotation {
     ExactPhase,
 }
 
-/// Boris-Buneman in synchronized form. From `(q_n, v_n)`, with `W = (h/2) Omega` (each
-/// particle with its own `omega`, at the positions where the step reads it):
+/// Boris-Buneman in synchronized drift-kick-drift form. From `(q_n, v_n)`, the fields read
+/// once, at the middle of the step: `a = a(t_n + h/2, q_{n+1/2})` and `W = (h/2) Omega` with
+/// each particle's `omega` at `q_{n+1/2}`:
 ///
 /// ```text
-/// v_{n+1/2} = v_n + (h/2) a(t_n, q_n) + W v_n
-/// q_{n+1}   = q_n + h v_{n+1/2}
-/// v_{n+1}   = (I - W)^-1 (v_{n+1/2} + (h/2) a(t_n + h, q_{n+1}))
+/// q_{n+1/2} = q_n + (h/2) v_n
+/// v-        = v_n + (h/2) a
+/// v+        = (I - W)^-1 (I + W) v-          (the Cayley rotation)
+/// v_{n+1}   = v+ + (h/2) a
+/// q_{n+1}   = q_{n+1/2} + (h/2) v_{n+1}
 /// ```
 ///
-/// The positions are those of the classic leapfrog Boris push (`v_{n+1/2}` is its
-/// half-step velocity), and the velocity update of a pure magnetic field is the Cayley
-/// rotation of SCENES.md 6: `v+ = v- + w h/(1 + (w h/2)^2) (v- x e + (w h/2)(v- x e) x e)`.
-/// Explicit, symmetric, second order, one force evaluation per step (the last one is
-/// reused); in a uniform field it preserves phase-space volume but is not symplectic (in a
-/// non-uniform one, this synchronized form does not keep the volume either); in a pure magnetic
-/// field it keeps `|v|` exactly for any `h`, and with crossed uniform fields it moves
-/// along the E x B drift exactly.
+/// The kick is the classic Boris-Buneman push (half the electric kick, one rotation, the
+/// other half), between two half drifts, as the relativistic pushers do it
+/// ([`super::RelativisticPush`]). Explicit, symmetric, second order, one force and field
+/// evaluation per step. What it keeps:
+///
+/// - **`|v|` in any static magnetic field**, uniform or not, for any `h`: without an
+///   electric force the only change of a velocity is one rotation (up to round-off);
+/// - **the phase-space volume in any field**: the drifts are shears and the kick, at fixed
+///   positions, a shift and a rotation of each velocity;
+/// - **the E x B drift** of crossed uniform fields: the drift velocity is a fixed point of
+///   the kick, so a particle started on it moves with it exactly, at any step; in a pure
+///   uniform field the guiding centre stays put and the positions circle on the exact
+///   Larmor radius (only the phase is off: `2 atan(w h/2)` per step instead of `w h`).
+///
+/// It is not symplectic for the magnetic two-form.
 ///
 /// Particles that move in external fields alone ([`Lorentz::external_fields`]) are pushed
 /// one by one, each step of each particle done at once (its state read and written once
@@ -51,27 +61,28 @@ pub enum BorisRotation {
 /// use stormer::magnetic::{Charged, Lorentz};
 /// use stormer::stepper::{Boris, BorisRotation};
 /// use stormer::Stepper;
+/// /// A field that changes from place to place (and need not be divergence-free).
 /// struct Field;
 /// impl Lorentz for Field {
 ///     type Scalar = f64;
 ///     type State = [f64; 6];
-///     fn omega(&self, _k: usize, _q: &[f64]) -> [f64; 3] { [0.3, -1.0, 2.0] }
+///     fn omega(&self, _k: usize, q: &[f64]) -> [f64; 3] { [0.3 + q[1].sin(), -1.0, 2.0 * (q[0] * q[2]).cos()] }
 ///     fn acceleration(&self, _t: f64, _q: &[f64], a: &mut [f64]) { a.fill(0.0); }
 /// }
-/// let y0 = [0.0, 0.0, 0.0, 1.0, 2.0, 3.0];
+/// let y0 = [0.5, 0.0, 1.0, 1.0, 2.0, 3.0];
 /// let mut boris = Boris::new(BorisRotation::Cayley, &y0).unwrap();
-/// let mut y = [0.0; 6];
-/// boris.step(&Charged(Field), 0.0, 10.0, &y0, &mut y).unwrap(); // a huge step
-/// let speed2 = |y: &[f64; 6]| y[3] * y[3] + y[4] * y[4] + y[5] * y[5];
-/// assert!((speed2(&y) - 14.0).abs() < 1e-13);
+/// let mut y = y0;
+/// for n in 0..100 {
+///     boris.step_in_place(&Charged(Field), n as f64, 1.0, &mut y).unwrap(); // huge steps
+/// }
+/// let speed2 = y[3] * y[3] + y[4] * y[4] + y[5] * y[5];
+/// assert!((speed2 - 14.0).abs() < 1e-12);
 /// ```
 #[derive(Debug, Clone)]
 pub struct Boris<S> {
     rotation: BorisRotation,
-    /// The acceleration: its second half holds `a(t, q)` of the last evaluation.
+    /// The acceleration at the middle of the step (its second half; the first is unused).
     work: S,
-    cached: bool,
-    fresh: bool,
     counters: Counters,
 }
 
@@ -86,15 +97,13 @@ impl<S: State> Boris<S> {
         Ok(Boris {
             rotation,
             work: y0.zeros_like(),
-            cached: false,
-            fresh: false,
             counters: Counters::default(),
         })
     }
 }
 
-/// `W = (h/2) omega`, rescaled for the exact phase; `None` when the exact phase is asked
-/// for an angle of `pi` or more.
+/// Boris's vector `t = -(h/2) omega` (so that `v x t = W v`), rescaled for the exact phase;
+/// `None` when the exact phase is asked for an angle of `pi` or more.
 #[inline(always)]
 fn half_turn<T: crate::Real>(rotation: BorisRotation, omega: [T; 3], h: T) -> Option<[T; 3]> {
     let half = lit::<T>(0.5) * h;
@@ -112,17 +121,25 @@ fn half_turn<T: crate::Real>(rotation: BorisRotation, omega: [T; 3], h: T) -> Op
             }
         }
     };
-    Some([omega[0] * scale, omega[1] * scale, omega[2] * scale])
+    Some([-(omega[0] * scale), -(omega[1] * scale), -(omega[2] * scale)])
 }
 
-/// `(I - W)^-1 b = b + (w x b + w x (w x b)) / (1 + |w|^2)`.
+/// The kick of particle `k` at fixed position: half its acceleration `a`, the rotation by
+/// `t`, the other half.
 #[inline(always)]
-fn solve_turn<T: crate::Real>(w: &[T; 3], b: &mut [T]) {
-    let wb = cross(w, b);
-    let wwb = cross(w, &wb);
-    let d = T::one() / (T::one() + w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+fn kick<T: crate::Real>(v: &mut [T], half: T, a: &[T], t: &[T; 3]) {
+    let mut u = [v[0] + half * a[0], v[1] + half * a[1], v[2] + half * a[2]];
+    cayley_rotate(&mut u, t);
     for i in 0..3 {
-        b[i] += (wb[i] + wwb[i]) * d;
+        v[i] = u[i] + half * a[i];
+    }
+}
+
+/// `q += (h/2) v`, component by component.
+#[inline(always)]
+fn half_drift<T: crate::Real>(q: &mut [T], v: &[T], half: T) {
+    for (q, &v) in q.iter_mut().zip(v) {
+        *q += half * v;
     }
 }
 
@@ -137,49 +154,30 @@ fn too_fast<T: crate::Real>(t: T) -> Error {
 }
 
 impl<S: State> Boris<S> {
-    /// One step in place; `cached`: the acceleration buffer holds `a(t, q)`.
+    /// One step in place.
     fn advance<L: Lorentz<State = S, Scalar = S::Scalar>>(
         &mut self,
         p: &Charged<L>,
         t: L::Scalar,
         h: L::Scalar,
         y: &mut S,
-        cached: bool,
     ) -> Result<(), Error> {
         let (q, v) = halves_mut(y.as_mut_slice());
+        self.counters.evaluations += 1;
+        let rotation = self.rotation;
         if let Some(fields) = p.0.external_fields() {
-            self.counters.evaluations += if cached { 1 } else { 2 };
-            let rotation = self.rotation;
             return try_for_each_chunk(q, v, |first, q, v| push_each(rotation, &fields, t, h, first, q, v));
         }
-        let (_, a) = halves_mut(self.work.as_mut_slice());
-        if !cached {
-            p.0.acceleration(t, q, a);
-            self.counters.evaluations += 1;
-        }
         let half = lit::<L::Scalar>(0.5) * h;
-        let particles = q.len() / 3;
-        for k in 0..particles {
-            let w = half_turn(self.rotation, p.0.omega(k, q), h).ok_or_else(|| too_fast(t))?;
-            let (vk, ak) = (&mut v[3 * k..3 * k + 3], &a[3 * k..3 * k + 3]);
-            let turn = cross(&w, vk);
-            for i in 0..3 {
-                vk[i] += half * ak[i] + turn[i];
-            }
+        half_drift(q, v, half);
+        // every particle's fields at the middle positions before any velocity moves
+        let (_, a) = halves_mut(self.work.as_mut_slice());
+        p.0.acceleration(t + half, q, a);
+        for (k, (vk, ak)) in v.chunks_exact_mut(3).zip(a.chunks_exact(3)).enumerate() {
+            let turn = half_turn(rotation, p.0.omega(k, q), h).ok_or_else(|| too_fast(t))?;
+            kick(vk, half, ak, &turn);
         }
-        for (q, &v) in q.iter_mut().zip(v.iter()) {
-            *q += h * v;
-        }
-        p.0.acceleration(t + h, q, a);
-        self.counters.evaluations += 1;
-        for k in 0..particles {
-            let w = half_turn(self.rotation, p.0.omega(k, q), h).ok_or_else(|| too_fast(t))?;
-            let (vk, ak) = (&mut v[3 * k..3 * k + 3], &a[3 * k..3 * k + 3]);
-            for i in 0..3 {
-                vk[i] += half * ak[i];
-            }
-            solve_turn(&w, vk);
-        }
+        half_drift(q, v, half);
         Ok(())
     }
 }
@@ -207,20 +205,10 @@ fn push_each<T: Real>(
     let half = lit::<T>(0.5) * h;
     for (j, (qk, vk)) in q.chunks_exact_mut(3).zip(v.chunks_exact_mut(3)).enumerate() {
         let k = first + j;
-        let a = fields.acceleration(k);
-        let w = half_turn(rotation, fields.omega(k, qk), h).ok_or_else(|| too_fast(t))?;
-        let turn = cross(&w, vk);
-        for i in 0..3 {
-            vk[i] += half * a[i] + turn[i];
-        }
-        for i in 0..3 {
-            qk[i] += h * vk[i];
-        }
-        let w = half_turn(rotation, fields.omega(k, qk), h).ok_or_else(|| too_fast(t))?;
-        for i in 0..3 {
-            vk[i] += half * a[i];
-        }
-        solve_turn(&w, vk);
+        half_drift(qk, vk, half);
+        let turn = half_turn(rotation, fields.omega(k, qk), h).ok_or_else(|| too_fast(t))?;
+        kick(vk, half, &fields.acceleration(k), &turn);
+        half_drift(qk, vk, half);
     }
     Ok(())
 }
@@ -234,12 +222,8 @@ impl<T: Real, L: Lorentz<Scalar = T>> Stepper<Charged<L>> for Boris<L::State> {
     }
 
     fn step(&mut self, p: &Charged<L>, t: T, h: T, y: &L::State, y_new: &mut L::State) -> Result<(), Error> {
-        let cached = self.cached;
-        self.cached = false;
         y_new.copy_from(y);
-        self.advance(p, t, h, y_new, cached)?;
-        self.fresh = true;
-        Ok(())
+        self.advance(p, t, h, y_new)
     }
 
     fn steps_in_place(&self) -> bool {
@@ -247,22 +231,13 @@ impl<T: Real, L: Lorentz<Scalar = T>> Stepper<Charged<L>> for Boris<L::State> {
     }
 
     fn step_in_place(&mut self, p: &Charged<L>, t: T, h: T, y: &mut L::State) -> Result<(), Error> {
-        let cached = self.cached;
-        self.cached = false;
-        self.advance(p, t, h, y, cached)?;
-        self.cached = true;
-        self.fresh = false;
-        Ok(())
+        self.advance(p, t, h, y)
     }
 
-    fn accept(&mut self) {
-        self.cached = self.fresh;
-    }
+    /// Nothing carries over from one step to the next.
+    fn accept(&mut self) {}
 
-    fn reset(&mut self) {
-        self.cached = false;
-        self.fresh = false;
-    }
+    fn reset(&mut self) {}
 
     fn counters(&self) -> Counters {
         self.counters

@@ -25,13 +25,13 @@ fn cross<T: Real>(a: &Vec3<T>, b: &Vec3<T>) -> Vec3<T> {
     c
 }
 
-/// Each lane's `(h/2) a`, half turn `W = (h/2) omega` and `1 / (1 + |W|^2)`: constant for
-/// a particle in a uniform field, computed as Boris's general loop computes them.
+/// Each lane's `(h/2) a`, Boris vector `t = -(h/2) omega` and `2 / (1 + |t|^2)`: constant
+/// for a particle in a uniform field, computed as Boris's general loop computes them.
 #[derive(Clone, Copy)]
 struct Constants<T> {
     half_a: Vec3<T>,
     turn: Vec3<T>,
-    d: [T; LANES],
+    s: [T; LANES],
 }
 
 impl<T: Real> Constants<T> {
@@ -43,16 +43,18 @@ impl<T: Real> Constants<T> {
         let omega = fields.omega(k, &[T::zero(); 3]);
         for i in 0..3 {
             self.half_a[i][l] = half * a[i];
-            self.turn[i][l] = omega[i] * half;
+            self.turn[i][l] = -(omega[i] * half);
         }
-        let w = [self.turn[0][l], self.turn[1][l], self.turn[2][l]];
-        self.d[l] = T::one() / (T::one() + w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+        let t = [self.turn[0][l], self.turn[1][l], self.turn[2][l]];
+        self.s[l] = (T::one() + T::one()) / (T::one() + (t[0] * t[0] + t[1] * t[1] + t[2] * t[2]));
     }
 }
 
-/// One step of a group of [`LANES`] particles (positions `qg`, velocities `vg`).
+/// One step of a group of [`LANES`] particles (positions `qg`, velocities `vg`): half a
+/// drift, the kick (half the electric kick, the Cayley rotation, the other half), half a
+/// drift.
 #[inline(always)]
-fn step_group<T: Real>(c: &Constants<T>, h: T, qg: &mut [T], vg: &mut [T]) {
+fn step_group<T: Real>(c: &Constants<T>, half: T, qg: &mut [T], vg: &mut [T]) {
     let (mut x, mut u) = ([[T::zero(); LANES]; 3], [[T::zero(); LANES]; 3]);
     for l in 0..LANES {
         for i in 0..3 {
@@ -60,19 +62,25 @@ fn step_group<T: Real>(c: &Constants<T>, h: T, qg: &mut [T], vg: &mut [T]) {
             u[i][l] = vg[3 * l + i];
         }
     }
-    let wv = cross(&c.turn, &u);
     for i in 0..3 {
         for l in 0..LANES {
-            u[i][l] += c.half_a[i][l] + wv[i][l];
-            x[i][l] += h * u[i][l];
+            x[i][l] += half * u[i][l];
             u[i][l] += c.half_a[i][l];
         }
     }
-    let wb = cross(&c.turn, &u);
-    let wwb = cross(&c.turn, &wb);
+    let turned = cross(&u, &c.turn);
+    let mut u1 = [[T::zero(); LANES]; 3];
     for i in 0..3 {
         for l in 0..LANES {
-            u[i][l] += (wb[i][l] + wwb[i][l]) * c.d[l];
+            u1[i][l] = u[i][l] + turned[i][l];
+        }
+    }
+    let turn = cross(&u1, &c.turn);
+    for i in 0..3 {
+        for l in 0..LANES {
+            u[i][l] += c.s[l] * turn[i][l];
+            u[i][l] += c.half_a[i][l];
+            x[i][l] += half * u[i][l];
         }
     }
     for l in 0..LANES {
@@ -102,7 +110,7 @@ pub(crate) fn push_lanes<T: Real>(
     let mut c = Constants {
         half_a: [[T::zero(); LANES]; 3],
         turn: [[T::zero(); LANES]; 3],
-        d: [T::zero(); LANES],
+        s: [T::zero(); LANES],
     };
     let groups = q.chunks_exact_mut(3 * LANES).zip(v.chunks_exact_mut(3 * LANES));
     #[allow(clippy::float_cmp)] // the same ratio, bit for bit, gives the same constants
@@ -112,14 +120,14 @@ pub(crate) fn push_lanes<T: Real>(
             c.set(l, fields, first, half);
         }
         for (qg, vg) in groups {
-            step_group(&c, h, qg, vg);
+            step_group(&c, half, qg, vg);
         }
     } else {
         for (g, (qg, vg)) in groups.enumerate() {
             for l in 0..LANES {
                 c.set(l, fields, first + g * LANES + l, half);
             }
-            step_group(&c, h, qg, vg);
+            step_group(&c, half, qg, vg);
         }
     }
     pushed

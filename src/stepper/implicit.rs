@@ -38,7 +38,9 @@ pub enum ImplicitSolver {
     /// `J = df/dy` at `(t, y)` by forward differences, the `(s n) x (s n)` matrix
     /// `I - h (A ⊗ J)` factorised once per step (nalgebra's LU with partial pivoting),
     /// then `Z <- Z + dZ` with `(I - h A ⊗ J) dZ = -Z + h (A ⊗ I) F(Z)`. Converges on
-    /// stiff problems, whatever `h L`.
+    /// stiff problems, whatever `h L`. Its dense matrices grow as the square of the
+    /// dimension: a problem whose matrices would take more than
+    /// [`ImplicitOptions::newton_memory`] is refused before anything is allocated.
     Newton,
 }
 
@@ -87,11 +89,22 @@ pub struct ImplicitOptions {
     pub tol: f64,
     /// Give up (an error, never a wrong number) after this many iterations.
     pub max_iterations: usize,
+    /// The most memory, in bytes, Newton's dense matrices may take: the `n x n` Jacobian
+    /// and the `(s n) x (s n)` matrix `I - h A ⊗ J`, `s` stages of `n` components. A
+    /// larger problem is refused ([`Error::Unsupported`], naming the size and the
+    /// fixed-point solver) at its first Newton step, before anything is allocated, rather
+    /// than aborted by a failed allocation. [`ImplicitOptions::NEWTON_MEMORY`] by default.
+    pub newton_memory: usize,
 }
 
 impl ImplicitOptions {
     /// Default tolerance of both solvers: `0`, iterate to round-off (see above).
     pub const DEFAULT_TOL: f64 = 0.0;
+
+    /// Default [`ImplicitOptions::newton_memory`]: 1 GiB, Newton's matrices for about 5000
+    /// components with 2 stages (gauss_legendre4), 3700 with 3 (`5 n^2` and `10 n^2`
+    /// numbers of 8 bytes).
+    pub const NEWTON_MEMORY: usize = 1 << 30;
 
     /// Fixed-point iteration to round-off, at most 100 sweeps (the default options).
     ///
@@ -103,6 +116,7 @@ impl ImplicitOptions {
             solver: ImplicitSolver::FixedPoint,
             tol: Self::DEFAULT_TOL,
             max_iterations: 100,
+            newton_memory: Self::NEWTON_MEMORY,
         }
     }
 
@@ -122,6 +136,7 @@ impl ImplicitOptions {
             solver: ImplicitSolver::Newton,
             tol: Self::DEFAULT_TOL,
             max_iterations: NEWTON_MAX,
+            newton_memory: Self::NEWTON_MEMORY,
         }
     }
 }
@@ -254,7 +269,9 @@ struct Extrapolation<S: State> {
 /// **Allocation**: buffers are allocated by [`ImplicitRk::new`]. The fixed-point path
 /// never allocates after that (for static states: not at all). The Newton workspace
 /// (`n x n` Jacobian, `(s n) x (s n)` matrix, right-hand side) is allocated on the first
-/// Newton step and reused; the matrix storage is recovered from the previous step's
+/// Newton step and reused, unless its matrices would exceed
+/// [`ImplicitOptions::newton_memory`]: that step is then refused with
+/// [`Error::Unsupported`]; the matrix storage is recovered from the previous step's
 /// factorisation. What remains is nalgebra's: `LU::new` builds a fresh pivot sequence
 /// (`s n` index pairs), one small allocation per Newton step.
 ///
@@ -570,8 +587,14 @@ impl<T: Real, S: State<Scalar = T>> ImplicitRk<S> {
         stop: Stop<S::Scalar>,
     ) -> Result<(), Error> {
         let s = self.z.len();
-        // Allocated on the first Newton step, then reused.
-        let mut newton = self.newton.take().unwrap_or_else(|| Newton::new(y, s));
+        // Allocated on the first Newton step, then reused; refused before if too large.
+        let mut newton = match self.newton.take() {
+            Some(newton) => newton,
+            None => {
+                newton::check_memory::<S::Scalar>(&self.info.name, y.dim(), s, self.options.newton_memory)?;
+                Newton::new(y, s)
+            }
+        };
         self.counters.evaluations += newton.jacobian(p, t, y);
         self.counters.jacobians += 1;
         let invertible = newton.factor(h, &self.a, s);

@@ -58,7 +58,7 @@ impl ParticleMethod {
                 2,
                 Flags {
                     explicit: true,
-                    fsal: true,
+                    fsal: false,
                     symplectic: false,
                     symmetric: true,
                 },

@@ -121,10 +121,11 @@ fn zero_and_tiny_fields_are_straight_lines_to_round_off() {
 /// Field 1e4 at h = 0.1: the particle turns by `w h` = 1000 radians per step, on a circle
 /// of radius 1e-4. The magnetic Verlet's drift is the exact gyration: it keeps `|v|` to
 /// 479 eps and the exact helix to 1.2e-10 after 1000 steps (Kahan-Li 6: 1323 eps, 7.7e-11).
-/// Boris keeps `|v|` (1997 eps) but turns by `2 atan(w h / 2)` instead of `w h`, and from
-/// synchronized `(q, v)` its half-step speed is `|v| sqrt(1 + (w h/2)^2)`, 500 times too
-/// fast: its positions circle on a radius `h |v| (1 + s^2) / (2 s)`, `s = w h/2`, = 25.0
-/// instead of 1e-4 (the known inflated Larmor radius of Boris at large `w h`). Boris with
+/// Boris keeps `|v|` (1997 eps) but turns by `2 atan(w h / 2)` instead of `w h`; its
+/// positions move by `h (v_n + v_{n+1}) / 2` (drift-kick-drift), which keeps the guiding
+/// centre where it is, so they circle on the exact Larmor radius `|v| / w` = 1e-4 (the
+/// leapfrog positions, moved by the half-step velocity of length `|v| sqrt(1 + (w h/2)^2)`,
+/// would circle on `h |v| (1 + s^2) / (2 s)`, `s = w h/2`, = 25.0). Boris with
 /// the exact phase refuses the step (`|omega| h < pi`); Euler-Cromer and RK4 blow up, and
 /// the run stops at the step where the state becomes non-finite (51 and 28), keeping
 /// every record before it.
@@ -150,8 +151,7 @@ fn a_field_turning_1000_radians_per_step() {
     let sol = Driver::fixed(h).run(&s.model, &mut boris, 0.0, &s.y0, t_end).unwrap();
     let (dv, _) = speed_and_exact(&s, &sol.t, &sol.y);
     assert!(dv <= 8000.0 * eps, "boris: |v| {dv:e}");
-    let half = b * h / 2.0;
-    let radius = h * (1.0 + half * half) / (2.0 * half);
+    let radius = 1.0 / b; // |v_perp| / w
     let widest = sol
         .y
         .iter()

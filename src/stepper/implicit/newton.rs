@@ -4,7 +4,7 @@
 use crate::real::magnitude;
 #[allow(unused_imports)]
 use crate::real::ops::*;
-use crate::{lit, Problem, Real, State};
+use crate::{lit, Error, Problem, Real, State};
 use nalgebra::{DMatrix, DVector, Dyn, LU};
 
 /// The Newton workspace, allocated on the first Newton step and reused.
@@ -34,6 +34,39 @@ pub(super) struct Newton<S: State> {
 /// error slows convergence, it does not change the solution.
 fn increment<T: Real>(yj: T) -> T {
     T::default_epsilon().sqrt() * yj.abs().max(lit(1e-5))
+}
+
+/// Refuses, before anything is allocated, Newton's dense matrices for `s` stages of `n`
+/// components (the `n x n` Jacobian and the `(s n) x (s n)` matrix, scalars of type `T`)
+/// when they would take more than `limit` bytes: an error naming the method, the sizes and
+/// the fixed-point solver, where the allocation would abort the process.
+pub(super) fn check_memory<T>(method: &str, n: usize, s: usize, limit: usize) -> Result<(), Error> {
+    let (n, s) = (n as u128, s as u128);
+    let bytes = (n * n + (s * n) * (s * n)) * core::mem::size_of::<T>() as u128;
+    if bytes <= limit as u128 {
+        return Ok(());
+    }
+    Err(Error::Unsupported {
+        name: method.into(),
+        reason: format!(
+            "its Newton solver would need {} for its dense matrices (the {sn} x {sn} matrix of {s} stages \
+             of {n} components and the {n} x {n} Jacobian), more than the limit of {} \
+             (ImplicitOptions::newton_memory); use the fixed-point solver (--solver fixed-point), \
+             which needs no matrix",
+            in_binary_units(bytes),
+            in_binary_units(limit as u128),
+            sn = s * n,
+        ),
+    })
+}
+
+/// `bytes` in GiB, MiB or KiB (one decimal), or in bytes below 1 KiB.
+fn in_binary_units(bytes: u128) -> String {
+    let units = [(1u128 << 30, "GiB"), (1 << 20, "MiB"), (1 << 10, "KiB")];
+    match units.iter().find(|&&(size, _)| bytes >= size) {
+        Some(&(size, unit)) => format!("{:.1} {unit}", bytes as f64 / size as f64),
+        None => format!("{bytes} bytes"),
+    }
 }
 
 impl<S: State> Newton<S> {
