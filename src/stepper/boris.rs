@@ -35,7 +35,7 @@ pub enum BorisRotation {
 ///
 /// The positions are those of the classic leapfrog Boris push (`v_{n+1/2}` is its
 /// half-step velocity), and the velocity update of a pure magnetic field is the Cayley
-/// rotation of SCENES.md 6: `v+ = v- + w h/(1 + (w h/2)^2) (v- x e + (w h/2)(v- x e) x e)`.
+/// rotation of docs/scenes.md 6: `v+ = v- + w h/(1 + (w h/2)^2) (v- x e + (w h/2)(v- x e) x e)`.
 /// Explicit, symmetric, second order, one force evaluation per step (the last one is
 /// reused); in a uniform field it preserves phase-space volume but is not symplectic (in a
 /// non-uniform one, this synchronized form does not keep the volume either); in a pure magnetic
