@@ -1,5 +1,5 @@
 //! Our adaptive Dormand-Prince methods against the `ode_solvers` crate on the free kick
-//! (SCENES.md 7: a spinning ball with gravity, quadratic drag and the Magnus force).
+//! (docs/scenes.md 7: a spinning ball with gravity, quadratic drag and the Magnus force).
 //!
 //! The problem is defined here (the scene is built elsewhere), once for each library:
 //! state `(x, z, vx, vz)` in the vertical launch plane, `R = 0.11` m, `m = 0.42` kg,
@@ -7,7 +7,7 @@
 //! above the horizontal, spin `omega = 4 pi` rad/s about `+y` (the horizontal axis
 //! perpendicular to the launch plane; with `x` forward and `z` up this is topspin: the
 //! Magnus force `rho mu R^3 omega x v` turns the velocity clockwise at
-//! `Omega = -mu R^3 rho |omega| / m`, as SCENES.md 7 states). The ball lands at
+//! `Omega = -mu R^3 rho |omega| / m`, as docs/scenes.md 7 states). The ball lands at
 //! t = 1.239 s; every run goes from t = 0 to `T_END = 1.2` s, just before landing (so no
 //! event location is involved: `ode_solvers` has none).
 //!

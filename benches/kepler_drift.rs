@@ -17,7 +17,7 @@
 
 #![allow(missing_docs)] // criterion_group! generates an undocumented function
 
-/// Sun, Jupiter, Saturn, Uranus (SCENES.md 4).
+/// Sun, Jupiter, Saturn, Uranus (docs/scenes.md 4).
 #[path = "../tests/support/outer_solar_system.rs"]
 mod outer_solar_system;
 use outer_solar_system::outer_solar_system;

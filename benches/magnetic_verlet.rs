@@ -1,5 +1,5 @@
 //! The magnetic Verlet (velocity Verlet with the exact gyration as its drift) against a
-//! hand-written loop, on the charged particle of SCENES.md 5 (Coulomb centre, uniform
+//! hand-written loop, on the charged particle of docs/scenes.md 5 (Coulomb centre, uniform
 //! field of strength 1 along axis 3), in one binary.
 //!
 //! The hand-written loop is the users' scheme with `exp(Omega h)` and `F(h)` folded into

@@ -221,7 +221,7 @@ where
 }
 
 /// The theta method `y_{n+1} = y_n + h [alpha f(t_n, y_n) + (1 - alpha) f(t_{n+1}, y_{n+1})]`
-/// (SCENES.md 6: "semi-implicit Euler with weight alpha"): `alpha = 1` is explicit Euler,
+/// (docs/scenes.md 6: "semi-implicit Euler with weight alpha"): `alpha = 1` is explicit Euler,
 /// `alpha = 0` backward Euler, `alpha = 1/2` the trapezoidal rule (order 2).
 ///
 /// As a tableau: `c = [0, 1]`, `a = [[0, 0], [alpha, 1 - alpha]]`, `b = [alpha, 1 - alpha]`.

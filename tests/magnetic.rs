@@ -1,6 +1,6 @@
 //! The magnetic sub-flow and the charged-particle methods: exact gyration at every angle,
 //! Boris's invariants, the E x B drift, and the splittings of the catalog on a charged
-//! particle (SCENES.md 5-6, PERFORMANCE.md's anchors).
+//! particle (docs/scenes.md 5-6, PERFORMANCE.md's anchors).
 
 #[path = "support/users_magnetic_verlet.rs"]
 mod users_magnetic_verlet;
@@ -12,7 +12,7 @@ use stormer::{lit, to_f64, Driver, Method, Real, Stepper};
 use users_magnetic_verlet::users_magnetic_verlet;
 
 /// A uniform field along axis 3 (`omega = (0, 0, w)`), a uniform acceleration `e`, and
-/// optionally the attracting Coulomb centre `V = -1/|q|` of SCENES.md 5.
+/// optionally the attracting Coulomb centre `V = -1/|q|` of docs/scenes.md 5.
 #[derive(Clone, Copy)]
 struct Particle<T> {
     w: f64,
@@ -281,7 +281,7 @@ fn boris_gets_the_e_cross_b_drift_and_exact_phase_does_not_at_large_steps() {
 }
 
 /// The magnetic Verlet of the catalog (velocity Verlet with the exact gyration as drift)
-/// is the users' scheme of SCENES.md 5, written out with its matrices exp(Omega h) and
+/// is the users' scheme of docs/scenes.md 5, written out with its matrices exp(Omega h) and
 /// F(h) from the closed forms (tests/support): same positions and velocities to round-off.
 #[test]
 fn velocity_verlet_with_the_gyration_drift_is_the_users_magnetic_verlet() {
@@ -302,7 +302,7 @@ fn velocity_verlet_with_the_gyration_drift_is_the_users_magnetic_verlet() {
     );
 }
 
-/// The users' reference run (SCENES.md 5): q0 = (1, 1, 1), v0 = 0, w = 1, h = 0.01,
+/// The users' reference run (docs/scenes.md 5): q0 = (1, 1, 1), v0 = 0, w = 1, h = 0.01,
 /// T = 100: magnetic Verlet's max |dH| is about 3e-5 (PERFORMANCE.md), bounded by 1e-4
 /// here, with no drift: the worst error over [0, 1e4] stays below the same bound.
 #[test]

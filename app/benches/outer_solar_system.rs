@@ -1,5 +1,5 @@
 //! Generated splitting steppers against hand-written loops on the outer solar system
-//! (SCENES.md 4: Sun, Jupiter, Saturn, Uranus in 3-D, dt = 10 days), in one binary.
+//! (docs/scenes.md 4: Sun, Jupiter, Saturn, Uranus in 3-D, dt = 10 days), in one binary.
 //!
 //! Two methods: velocity Verlet (`velocity_verlet_kdk`, one force evaluation per step with
 //! FSAL) and the triple jump (`triple_jump4`, the composition expanded over drift-kick-drift

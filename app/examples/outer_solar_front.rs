@@ -1,5 +1,5 @@
 //! Our side of the REBOUND comparison (`benches/peers/rebound.py`): the outer solar system
-//! (SCENES.md 4: Sun, Jupiter, Saturn, Uranus in 3-D, G = 2.95912208286e-4, AU and days),
+//! (docs/scenes.md 4: Sun, Jupiter, Saturn, Uranus in 3-D, G = 2.95912208286e-4, AU and days),
 //! integrated by generated splitting steppers through `Stepper::step_in_place` (the
 //! fixed-step driver's path). Prints one JSON object on stdout.
 //!
@@ -48,7 +48,7 @@ use stormer::{Driver, ExplicitMethod, ExplicitRk, Problem, SplittingMethod, Spli
 type Nb = NBody<f64, [f64; 24]>;
 type Split = KeplerSplit<f64, [f64; 24]>;
 
-/// SCENES.md 4, as REBOUND gets them too.
+/// docs/scenes.md 4, as REBOUND gets them too.
 #[path = "../../tests/support/outer_solar_system.rs"]
 mod outer_solar_system;
 use outer_solar_system::{G, MASSES};

@@ -1,4 +1,4 @@
-//! The application around the `stormer` library: the users' scenes (SCENES.md) as TOML
+//! The application around the `stormer` library: the users' scenes (docs/scenes.md) as TOML
 //! files, each building one of the library's problems. The `stormer` binary
 //! (`src/main.rs`) runs them.
 

@@ -3,6 +3,10 @@
 //! clear error line and a non-zero exit, and the
 //! parsers, fed arbitrary text, return errors instead of panicking (proptest).
 
+#[path = "support/binary.rs"]
+mod binary;
+
+use binary::{stormer_ok, workdir};
 use proptest::prelude::*;
 use std::collections::HashMap;
 use std::path::Path;
@@ -207,6 +211,387 @@ fn newton_on_too_many_components_is_refused_before_allocating() {
         assert!(stderr.contains(must), "{must:?} not in {stderr}");
     }
     std::fs::remove_dir_all(&dir).unwrap();
+/// A file the refused command must leave as it was: written, then read back after.
+fn input(dir: &Path, name: &str, text: &str) -> String {
+    let path = dir.join(name);
+    if let Some(parent) = path.parent() {
+        std::fs::create_dir_all(parent).unwrap();
+    }
+    std::fs::write(&path, text).unwrap();
+    text.to_string()
+}
+
+/// The text of the built-in scene `name`.
+fn scene_text(name: &str) -> String {
+    let out = stormer_ok(Path::new("."), &["scene", "show", name]);
+    String::from_utf8(out.stdout).unwrap()
+}
+
+/// Velocity Verlet as a method file.
+const VERLET: &str =
+    "name = \"m\"\nfamily = \"splitting\"\norder = 2\ndrift = [\"0\", \"1\"]\nkick = [\"1/2\", \"1/2\"]\n";
+
+/// Issue #30, item 12: no file a command writes (its CSV, its pictures, its section, its
+/// tables) may be one of its inputs (the scene file, a method file), whatever the input is
+/// named: `stormer scene show harmonic > h-state.svg; stormer run h-state.svg --out h.csv`
+/// drew the state picture over the scene. Every output kind of `run`, each refused before
+/// anything is written, the input intact.
+#[test]
+fn no_output_of_a_run_replaces_its_input() {
+    let dir = workdir("bad-input", "run-outputs");
+    for (file, scene, args) in [
+        // the pictures beside the CSV: state, energy (harmonic), x-y (kepler), x-z (3-D)
+        ("h-state.svg", "harmonic", &["--out", "h.csv"][..]),
+        ("h-energy.svg", "harmonic", &["--out", "h.csv"]),
+        ("k-xy.svg", "kepler", &["--out", "k.csv"]),
+        ("s-xz.svg", "outer-solar-system", &["--out", "s.csv", "--t-end", "100"]),
+        // the section's CSV and picture
+        (
+            "p-section.csv",
+            "henon-heiles",
+            &["--out", "p.csv", "--section", "x = 0, px > 0"],
+        ),
+        (
+            "p-section.svg",
+            "henon-heiles",
+            &["--out", "p.csv", "--section", "x = 0, px > 0"],
+        ),
+        // the CSV itself
+        ("c.csv", "harmonic", &["--out", "c.csv"]),
+    ] {
+        let kept = input(&dir, file, &scene_text(scene));
+        let mut all = vec!["run", file];
+        all.extend(args);
+        let stderr = refusal(&dir, &all, file);
+        assert!(
+            stderr.contains(&format!("{file} is the input file")),
+            "{file}: {stderr}"
+        );
+        assert_eq!(
+            std::fs::read_to_string(dir.join(file)).unwrap(),
+            kept,
+            "{file} was replaced"
+        );
+    }
+    // a method file named like a picture, by a bare name and by a path
+    for method in ["h-energy.svg", "./h-state.svg"] {
+        let kept = input(&dir, method.trim_start_matches("./"), VERLET);
+        let stderr = refusal(&dir, &["run", "harmonic", "--method", method, "--out", "h.csv"], method);
+        assert!(stderr.contains("is the input file"), "{method}: {stderr}");
+        assert_eq!(
+            std::fs::read_to_string(dir.join(method)).unwrap(),
+            kept,
+            "{method} was replaced"
+        );
+    }
+    // with the CSV on stdout the pictures go beside the default output
+    let kept = input(&dir, "out/harmonic-m-energy.svg", VERLET);
+    let args = ["run", "harmonic", "--method", "out/harmonic-m-energy.svg", "--out", "-"];
+    let stderr = refusal(&dir, &args, "stdout");
+    assert!(stderr.contains("is the input file"), "{stderr}");
+    assert_eq!(
+        std::fs::read_to_string(dir.join("out/harmonic-m-energy.svg")).unwrap(),
+        kept
+    );
+    assert!(
+        !dir.join("h.csv").exists() && !dir.join("p.csv").exists(),
+        "nothing written"
+    );
+}
+
+/// Issue #30, item 12, for the studies: `compare`'s table and charts, `scan`'s, an
+/// ensemble's table and heat map, a shard's partial table and `merge`'s outputs never
+/// replace a method file or a part named like them.
+#[test]
+fn no_output_of_a_study_replaces_its_input() {
+    let dir = workdir("bad-input", "study-outputs");
+    let study = ["--dt", "0.1", "--t-end", "1", "--out", "d"];
+    for (file, command) in [
+        (
+            "d/compare-harmonic-energy.svg",
+            &["compare", "harmonic", "--methods"][..],
+        ),
+        ("d/compare-harmonic.md", &["compare", "harmonic", "--methods"]),
+        (
+            "d/compare-harmonic.shard-1-of-2.json",
+            &["compare", "harmonic", "--shard", "1/2", "--methods"],
+        ),
+        (
+            "d/scan-harmonic-m.svg",
+            &["scan", "harmonic", "--steps", "10,20", "--method"],
+        ),
+        (
+            "d/ensemble-harmonic-w0.svg",
+            &["ensemble", "harmonic", "--vary", "w0=1:2:2", "--method"],
+        ),
+    ] {
+        let kept = input(&dir, file, VERLET);
+        let mut args = command.to_vec();
+        args.push(file);
+        // scan takes steps, not step sizes
+        let skip = if command[0] == "scan" { 2 } else { 0 };
+        args.extend(&study[skip..]);
+        let stderr = refusal(&dir, &args, file);
+        assert!(stderr.contains("is the input file"), "{file}: {stderr}");
+        assert_eq!(
+            std::fs::read_to_string(dir.join(file)).unwrap(),
+            kept,
+            "{file} was replaced"
+        );
+    }
+    // the parts of a sharded study, one named like the merged study's chart
+    let base = [
+        "compare",
+        "harmonic",
+        "--methods",
+        "rk4",
+        "--dt",
+        "0.1",
+        "--t-end",
+        "1",
+        "--out",
+        "p",
+    ];
+    for shard in ["1/2", "2/2"] {
+        let mut args = base.to_vec();
+        args.extend(["--shard", shard]);
+        stormer_ok(&dir, &args);
+    }
+    let chart = dir.join("p/compare-harmonic-energy.svg");
+    std::fs::rename(dir.join("p/compare-harmonic.shard-1-of-2.json"), &chart).unwrap();
+    let kept = std::fs::read_to_string(&chart).unwrap();
+    let args = [
+        "merge",
+        "p/compare-harmonic-energy.svg",
+        "p/compare-harmonic.shard-2-of-2.json",
+        "--out",
+        "p",
+    ];
+    let stderr = refusal(&dir, &args, "merge");
+    assert!(stderr.contains("is the input file"), "{stderr}");
+    assert_eq!(std::fs::read_to_string(&chart).unwrap(), kept);
+}
+
+/// Issue #30, item 13: a file named `rk4` in the working directory does not shadow the
+/// catalog's `rk4` (a method file is a path with a separator or `.toml`, or a bare name
+/// the catalog does not know).
+#[test]
+fn a_stray_file_does_not_shadow_a_catalog_method() {
+    let dir = workdir("bad-input", "stray-file");
+    std::fs::write(dir.join("rk4"), "not a method\n").unwrap();
+    let out = stormer_ok(
+        &dir,
+        &["run", "harmonic", "--method", "rk4", "--t-end", "0.1", "--out", "h.csv"],
+    );
+    assert!(
+        binary::stderr(&out).contains("rk4 on harmonic: 10 steps"),
+        "{}",
+        binary::stderr(&out)
+    );
+    let out = stormer_ok(&dir, &["verify", "rk4"]);
+    assert!(binary::stdout(&out).contains("source          catalog"));
+    // the file is still read when asked for as a path
+    let stderr = refusal(&dir, &["verify", "./rk4"], "./rk4");
+    assert!(stderr.contains("invalid method ./rk4"), "{stderr}");
+    // and a bare name the catalog does not know reads the file of that name
+    std::fs::write(dir.join("my_verlet"), VERLET).unwrap();
+    let out = stormer_ok(&dir, &["verify", "my_verlet"]);
+    assert!(binary::stdout(&out).contains("source          my_verlet"));
+}
+
+/// Issue #30, item 8: `verify` on a composition whose weights are `[0, 1]` (the base
+/// method itself: `S(0)` is no step) passed its checks but exited 1 saying "the
+/// coefficients say symmetric = no"; and the method-file keys the guide promises
+/// (`word`, `quadratic_kinetic`, the macro's names) are read.
+#[test]
+fn verify_agrees_with_the_guide_on_method_files() {
+    let dir = workdir("bad-input", "verify-guide");
+    std::fs::write(
+        dir.join("c01.toml"),
+        "name = \"c01\"\norder = 2\ngamma = [\"0\", \"1\"]\n",
+    )
+    .unwrap();
+    let out = stormer_ok(&dir, &["verify", "c01.toml"]);
+    assert!(
+        binary::stdout(&out).contains("symmetric       yes"),
+        "{}",
+        binary::stdout(&out)
+    );
+    // McLachlan's two-stage method written as a word, as define-your-own-scheme.md shows
+    let word = "name = \"my_mclachlan2\"\norder = 2\nquadratic_kinetic = false\nword = [\"kick(0.1931833275037836)\", \
+                \"drift(1/2)\", \"kick(1 - 2 * 0.1931833275037836)\", \"drift(1/2)\", \"kick(0.1931833275037836)\"]\n";
+    std::fs::write(dir.join("word.toml"), word).unwrap();
+    let out = stormer_ok(&dir, &["verify", "word.toml"]);
+    let text = binary::stdout(&out);
+    assert!(
+        text.contains("family          splitting") && text.contains("FSAL            yes"),
+        "{text}"
+    );
+    let out = stormer_ok(
+        &dir,
+        &[
+            "run",
+            "harmonic",
+            "--method",
+            "word.toml",
+            "--t-end",
+            "1",
+            "--out",
+            "w.csv",
+        ],
+    );
+    assert!(binary::stderr(&out).contains("my_mclachlan2 on harmonic"));
+}
+
+/// Issue #30, item 14: `--save-at` counts its times before making them, and refuses too
+/// many at once, before the scene is even read (it built 1e8 times, 2.35 GB, first).
+#[test]
+fn too_many_output_times_are_refused_before_anything_else() {
+    let dir = workdir("bad-input", "save-at-count");
+    let start = std::time::Instant::now();
+    let stderr = refusal(
+        &dir,
+        &["run", "no-such-scene", "--save-at", "0:1.0000001e-7:10"],
+        "save-at",
+    );
+    assert!(
+        stderr.contains("'0:1.0000001e-7:10' gives 99999991 output times, more than the 10000000 a run writes"),
+        "{stderr}"
+    );
+    assert!(start.elapsed().as_secs() < 10, "took {:?}", start.elapsed());
+}
+
+/// Issue #30, item 14: a run whose CSV will be huge says so, with its size and how to
+/// write less, before its first row (`run harmonic --dt 1.0000001e-7` wrote 7.4 GB
+/// without a word). The run is stopped once the note is read.
+#[test]
+fn a_huge_run_says_so_before_it_starts() {
+    use std::io::BufRead;
+    let dir = workdir("bad-input", "huge-run");
+    let mut child = Command::new(env!("CARGO_BIN_EXE_stormer"))
+        .args(["run", "harmonic", "--dt", "1.0000001e-7", "--out", "/dev/null"])
+        .current_dir(&dir)
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let stderr = child.stderr.take().unwrap();
+    let (send, receive) = std::sync::mpsc::channel();
+    std::thread::spawn(move || {
+        for line in std::io::BufReader::new(stderr).lines() {
+            let _ = send.send(line.unwrap_or_default());
+        }
+    });
+    let first = receive.recv_timeout(std::time::Duration::from_secs(60));
+    child.kill().unwrap();
+    child.wait().unwrap();
+    let first = first.expect("a line on stderr within a minute");
+    assert_eq!(
+        first,
+        "note: this run will write up to 99999993 rows (about 7.7 GB) to /dev/null; --every N writes one row in N \
+         steps (--every 100 about 77 MB)"
+    );
+}
+
+/// Issue #30, item 19: the README counts the methods `stormer methods` lists, family by
+/// family, and docs/library.md the catalog's.
+#[test]
+fn the_readme_counts_the_methods_that_stormer_methods_lists() {
+    let out = stormer_ok(Path::new("."), &["methods", "--json"]);
+    let methods: Vec<serde_json::Value> = serde_json::from_slice(&out.stdout).unwrap();
+    let count = |family: &str| methods.iter().filter(|m| m["family"] == family).count();
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
+    let readme = std::fs::read_to_string(root.join("README.md"))
+        .unwrap()
+        .replace('\n', " ");
+    let listed = format!(
+        "lists the {} methods: {} Butcher tableaus",
+        methods.len(),
+        count("butcher")
+    );
+    assert!(readme.contains(&listed), "README.md does not say {listed:?}");
+    for (n, what) in [
+        (count("splitting"), "splittings"),
+        (count("composition"), "compositions"),
+        (count("charged-particle"), "charged-particle pushers"),
+        (count("relativistic-particle"), "relativistic pushers"),
+    ] {
+        assert!(
+            readme.contains(&format!("{n} {what}")),
+            "README.md does not say {n} {what}"
+        );
+    }
+    let catalog = count("butcher") + count("splitting") + count("composition");
+    let library = std::fs::read_to_string(root.join("docs/library.md"))
+        .unwrap()
+        .replace('\n', " ");
+    let says = format!("(the {catalog} Butcher tableaus, splittings and compositions as data)");
+    assert!(library.contains(&says), "docs/library.md does not say {says:?}");
+}
+
+/// The text files of the repository that cite pages: code, tests, benches, scene files,
+/// docs (not the build output).
+fn repository_texts() -> Vec<std::path::PathBuf> {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
+    let mut files = vec![root.join("README.md")];
+    let mut dirs: Vec<_> = [
+        "src",
+        "tests",
+        "benches",
+        "docs",
+        "scenes",
+        "order",
+        "macros",
+        "app/src",
+        "app/tests",
+    ]
+    .iter()
+    .map(|d| root.join(d))
+    .collect();
+    dirs.extend(["app/benches", "app/examples"].iter().map(|d| root.join(d)));
+    while let Some(dir) = dirs.pop() {
+        let Ok(entries) = std::fs::read_dir(&dir) else { continue };
+        for entry in entries {
+            let path = entry.unwrap().path();
+            if path.is_dir() && !path.ends_with("target") {
+                dirs.push(path);
+            } else if path
+                .extension()
+                .is_some_and(|e| ["rs", "md", "toml", "py"].contains(&e.to_str().unwrap()))
+            {
+                files.push(path);
+            }
+        }
+    }
+    files
+}
+
+/// Issue #30, item 19: the code cited SCENES.md and DESIGN.md, pages outside the
+/// repository, 99 times; it cites the project's own docs/scenes.md and docs/design.md, and
+/// every `docs/PAGE.md` the texts name exists.
+#[test]
+fn every_page_cited_is_in_the_repository() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
+    let foreign = [["SCENES", ".md"].concat(), ["DESIGN", ".md"].concat()];
+    let mut missing = Vec::new();
+    for file in repository_texts() {
+        let text = std::fs::read_to_string(&file).unwrap_or_default();
+        for name in &foreign {
+            if text.contains(name.as_str()) {
+                missing.push(format!("{} cites {name}", file.display()));
+            }
+        }
+        for (i, _) in text.match_indices("docs/") {
+            let page: String = text[i + 5..]
+                .chars()
+                .take_while(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || *c == '-')
+                .collect();
+            if text[i + 5 + page.len()..].starts_with(".md") && !root.join("docs").join(format!("{page}.md")).is_file()
+            {
+                missing.push(format!("{} cites docs/{page}.md", file.display()));
+            }
+        }
+    }
+    assert!(missing.is_empty(), "{}", missing.join("\n"));
 }
 
 proptest! {

@@ -30,7 +30,7 @@ fn end_state(s: &Setup<ChargedScene>, name: &str, n: usize, t_end: f64) -> Vec<f
     sol.y.last().unwrap().as_slice().to_vec()
 }
 
-/// The users' reference run (SCENES.md 5) has no energy drift to T = 1e4: the largest
+/// The users' reference run (docs/scenes.md 5) has no energy drift to T = 1e4: the largest
 /// |dH| over the last 100 time units is that of the first 100 (measured 1.06e-4 and
 /// 1.04e-4), and the largest over the whole run stays at the T = 100 figure (1.09e-4).
 /// The scene's model runs on a static state ([f64; 6]) to keep the debug build quick.
@@ -139,7 +139,7 @@ fn in_the_magnetic_bottle_boris_keeps_the_speed_to_round_off() {
 
 /// In the magnetic bottle the field depends on the position. Boris reads it at the middle
 /// of each step and stays second order; the splittings read it at the start of each
-/// drift (SCENES.md 5), a frozen-field gyration that is first-order accurate and not a
+/// drift (docs/scenes.md 5), a frozen-field gyration that is first-order accurate and not a
 /// flow (two drifts are not one), so every splitting and composition drops to order 1
 /// there (measured 1.00 for velocity Verlet, triple jump and Kahan-Li 6, with errors
 /// growing with the number of stages). The Runge-Kutta methods keep their order.

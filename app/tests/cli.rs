@@ -71,7 +71,7 @@ fn damped_oscillator_reproduces_the_exact_solution() {
     assert!(!summary.contains("dE"), "no energy for a damped oscillator: {summary}");
     assert_eq!(header, ["t", "x", "v"]);
     assert_eq!(rows.len(), 10001);
-    // SCENES.md 2, written here as a phase-shifted cosine: x = A e^{-g t} cos(wd t - phi).
+    // docs/scenes.md 2, written here as a phase-shifted cosine: x = A e^{-g t} cos(wd t - phi).
     let w0 = (100.0f64 / 5.0).sqrt();
     let q = w0;
     let (x0, v0) = (10.0f64, 0.0f64);
@@ -737,7 +737,7 @@ fn splittings_run_on_every_hamiltonian_scene() {
         assert!(summary_number(&summary, "max |dE/E0|") < 1e-3, "{summary}");
     }
     // The pendulum keeps its columns; Verlet's energy error stays small where explicit
-    // Euler's drifts up by a third over the minute (SCENES.md 1).
+    // Euler's drifts up by a third over the minute (docs/scenes.md 1).
     let (summary, header, rows) = run_csv(
         &dir,
         &["run", "pendulum", "--method", "velocity_verlet_kdk", "--every", "100"],
@@ -830,7 +830,7 @@ fn incompatible_method_and_scene_pairs_are_refused_with_the_reason() {
 
 #[test]
 fn the_kepler_scene_has_the_users_period() {
-    // SCENES.md 3: the relative orbit's period is 2.34246 years. The planet starts at
+    // docs/scenes.md 3: the relative orbit's period is 2.34246 years. The planet starts at
     // apocentre with the relative y-coordinate rising through 0; it does so again one
     // period later, located by interpolating between DOP853 records 1e-3 years apart.
     let dir = workdir("kepler-period");
@@ -872,7 +872,7 @@ fn the_kepler_scene_has_the_users_period() {
 fn neptune_and_pluto_are_added_by_editing_the_scene_file() {
     let dir = workdir("neptune-pluto");
     let show = stormer_ok(&dir, &["scene", "show", "outer-solar-system"]);
-    // values of Hairer, Lubich, Wanner, GNI I.2.4, as SCENES.md 4 suggests
+    // values of Hairer, Lubich, Wanner, GNI I.2.4, as docs/scenes.md 4 suggests
     let added = "[[bodies]]\nname = \"Neptune\"\nmass = 0.0000517759138449\n\
                  position = [11.4707666, -25.7294829, -10.8169456]\n\
                  velocity = [0.00288930, 0.00114527, 0.00039677]\n\n\
@@ -908,7 +908,7 @@ use users_magnetic_verlet::users_magnetic_verlet;
 
 #[test]
 fn coulomb_magnetic_with_velocity_verlet_is_the_users_magnetic_verlet() {
-    // SCENES.md 5's reference run, spelled out as the issue does
+    // docs/scenes.md 5's reference run, spelled out as the issue does
     let dir = workdir("coulomb-magnetic");
     let (summary, header, rows) = run_csv(
         &dir,

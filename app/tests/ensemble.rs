@@ -166,7 +166,7 @@ fn rows_are_bitwise_identical_whatever_the_thread_count() {
 
 /// A member is the scene file with the varied number written in: one member at the
 /// scene's own values lands where `stormer run` lands, to the bit; the free kick's
-/// landing from SCENES.md 7 at a small step (17.679 m, as compare and scan measure it).
+/// landing from docs/scenes.md 7 at a small step (17.679 m, as compare and scan measure it).
 #[test]
 fn a_member_is_the_scene_run_alone() {
     let dir = workdir("ensemble", "one-member");

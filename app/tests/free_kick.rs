@@ -1,4 +1,4 @@
-//! The free kick (SCENES.md 7, the `free-kick` scene): gravity, quadratic drag and the
+//! The free kick (docs/scenes.md 7, the `free-kick` scene): gravity, quadratic drag and the
 //! Magnus force, until the ball lands. The landing converges with the step, the energy
 //! decreases by exactly the drag's work, and the Magnus force alone turns the velocity at
 //! `Omega = -mu R^3 rho |omega| / m`.
@@ -179,7 +179,7 @@ fn the_drag_takes_the_energy() {
 
 #[test]
 fn the_magnus_force_alone_turns_the_velocity_at_omega() {
-    // no drag, no gravity: v' = Omega J v with Omega = -mu R^3 rho |omega| / m (SCENES.md 7)
+    // no drag, no gravity: v' = Omega J v with Omega = -mu R^3 rho |omega| / m (docs/scenes.md 7)
     let s = kick(&[("Cx = 0.4", "Cx = 0.0"), ("g = 9.81", "g = 0.0")]);
     let omega = -(2.0 * PI) * 0.11f64.powi(3) * 1.3 * (4.0 * PI) / 0.42;
     assert!((omega + 0.325283).abs() < 1e-6, "{omega}");

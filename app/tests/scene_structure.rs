@@ -3,7 +3,7 @@
 /// The structure the `charged-particles` scenes supply (`ChargedParticles` implements
 /// `Structure`: per particle `[[m K, m I], [-m I, 0]]`), on the `penning-trap` scene
 /// (three ions, uniform B, quadrupole, Coulomb repulsion) and on `coulomb-magnetic`
-/// (SCENES.md 5), one step at `h = 0.01` and `h = 0.1` from the scene's initial state:
+/// (docs/scenes.md 5), one step at `h = 0.01` and `h = 0.1` from the scene's initial state:
 ///
 /// - the magnetic Verlet and Kahan-Li 6 over it keep it to round-off (measured at most
 ///   12 eps |J|^2, against a bound of `SYMPLECTIC_FACTOR` = 100);

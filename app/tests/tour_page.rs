@@ -56,7 +56,7 @@ fn assert_ticks_distinct(src: &str, svg: &str) {
 }
 
 /// `stormer tour`: the report, every picture it references, and verdicts that say what
-/// SCENES.md says.
+/// docs/scenes.md says.
 #[test]
 fn tour_writes_the_report_with_verdicts() {
     let report = report();

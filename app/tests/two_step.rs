@@ -1,6 +1,6 @@
 //! Stormer's two-step form `r_{n+1} = 2 r_n - r_{n-1} + h^2 a(r_n)` gives the positions of
 //! velocity Verlet, and its central-difference velocities are Verlet's velocities
-//! (SCENES.md 1), on nonlinear problems: the pendulum and the Kepler two-body scene.
+//! (docs/scenes.md 1), on nonlinear problems: the pendulum and the Kepler two-body scene.
 //!
 //! Why they agree: velocity Verlet's positions satisfy
 //! `q_{n+1} - 2 q_n + q_{n-1} = h (v_{n+1/2} - v_{n-1/2}) = h^2 a(q_n)`, the two-step

@@ -1,4 +1,4 @@
-"""What the peer scripts share: the outer solar system of SCENES.md 4 (as REBOUND gets it),
+"""What the peer scripts share: the outer solar system of docs/scenes.md 4 (as REBOUND gets it),
 the machine's load average, and writing a report table."""
 
 import os

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""REBOUND against stormer on the outer solar system (SCENES.md 4), in one run.
+"""REBOUND against stormer on the outer solar system (docs/scenes.md 4), in one run.
 
 Run through `benches/peers/run.sh` (it makes the virtual environment under target/peers/
 and builds our example). What it does:

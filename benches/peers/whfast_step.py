@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""A Wisdom-Holman step against REBOUND WHFast's, in one run: the outer solar system (SCENES.md 4),
+"""A Wisdom-Holman step against REBOUND WHFast's, in one run: the outer solar system (docs/scenes.md 4),
 dt = 10 days, Jacobi coordinates. REBOUND: WHFast with safe_mode = 0 (its half drifts of
 consecutive steps merged), without and with corrector 11. Ours: `app/examples/outer_solar_front.rs
 time` (release), `kepler/wisdom_holman` (drift-kick-drift, two half drifts per step) and

@@ -50,19 +50,36 @@ impl fmt::Display for Condition {
         if self.holds() {
             return write!(f, "holds (residual {:.1e})", self.residual);
         }
-        let (got, _, digits) = format_distinct(self.got, self.expected, 4);
-        write!(f, "fails: got {got}")?;
-        if digits > 4 {
-            write!(
-                f,
-                " (expected {}, residual {:.1e} > tolerance {:.1e})",
-                format_significant(self.expected, digits),
-                self.residual,
-                self.tolerance
-            )?;
-        }
-        Ok(())
+        write!(f, "fails: ")?;
+        write_got(
+            f,
+            (self.got, self.expected),
+            self.residual,
+            ("tolerance", self.tolerance),
+        )
     }
+}
+
+/// `got X` for a failing condition: 4 significant digits, or as many more as it takes to
+/// tell `got` from `expected`, and then the expected value and the residual against the
+/// `limit` (`("tolerance", 1e-12)`) too, so that a value off by 1e-8 never reads as the
+/// expected one (`got 1` for a sum that must be 1).
+pub(crate) fn write_got(
+    f: &mut fmt::Formatter<'_>,
+    (got, expected): (f64, f64),
+    residual: f64,
+    (limit_name, limit): (&str, f64),
+) -> fmt::Result {
+    let (got_text, _, digits) = format_distinct(got, expected, 4);
+    write!(f, "got {got_text}")?;
+    if digits > 4 {
+        write!(
+            f,
+            " (expected {}, residual {residual:.1e} > {limit_name} {limit:.1e})",
+            format_significant(expected, digits),
+        )?;
+    }
+    Ok(())
 }
 
 /// Elementary weights of every tree of a forest up to some order, for one stage matrix.

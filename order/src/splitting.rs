@@ -28,7 +28,7 @@
 
 use std::fmt;
 
-use crate::conditions::DEFAULT_TOLERANCE;
+use crate::conditions::{write_got, DEFAULT_TOLERANCE};
 use crate::number::format_significant;
 use crate::split_conditions::{
     composition_conditions, generalized_conditions, splitting_conditions, OrderClass, MAX_SPLIT_ORDER,
@@ -157,14 +157,12 @@ impl SplitCondition {
 
 impl fmt::Display for SplitCondition {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(
-            f,
-            "order {} condition {} {}: got {}",
-            self.order,
-            self.text,
-            if self.holds() { "holds" } else { "fails" },
-            format_significant(self.value, 4)
-        )
+        write!(f, "order {} condition {} ", self.order, self.text)?;
+        if self.holds() {
+            return write!(f, "holds: got {}", format_significant(self.value, 4));
+        }
+        write!(f, "fails: ")?;
+        write_got(f, (self.value, self.expected), self.residual(), ("bound", self.bound))
     }
 }
 
@@ -343,7 +341,8 @@ fn finish(
     let fsal = ops.len() > 1 && ops[0].flow == Flow::Kick && ops[ops.len() - 1].flow == Flow::Kick;
     let symmetric = is_palindrome(&ops, tol)
         && match gamma.as_deref() {
-            Some(g) => palindromic(g, tol),
+            // a zero weight is the identity S(0): `[0, 1]` is the base method itself
+            Some(g) => palindromic(&g.iter().copied().filter(|&w| w != 0.0).collect::<Vec<_>>(), tol),
             None => true,
         };
     Ok(ValidSplitting {
@@ -510,6 +509,38 @@ mod tests {
         assert_eq!(v.drift, [0.5, 0.5]);
         assert_eq!(v.kick, [1.0, 0.0]);
         assert!(v.symmetric);
+    }
+
+    #[test]
+    fn zero_weights_are_no_steps_so_they_do_not_break_the_symmetry() {
+        let valid = |gamma: Vec<f64>| {
+            validate_composition(&CompositionSpec {
+                gamma,
+                order: 2,
+                tolerance: None,
+            })
+            .unwrap()
+        };
+        // S(h) o S(0) is S(h): symmetric, as its merged word D(1/2) K(1) D(1/2) says
+        assert!(valid(vec![0.0, 1.0]).symmetric);
+        assert!(valid(vec![0.5, 0.0, 0.5]).symmetric);
+        assert!(!valid(vec![0.4, 0.6]).symmetric);
+    }
+
+    #[test]
+    fn a_sum_off_by_a_little_shows_its_residual() {
+        let e = validate_splitting(&SplittingSpec {
+            drift: vec![0.5, 0.5 + 1e-8],
+            kick: vec![1.0, 0.0],
+            order: 2,
+            ..SplittingSpec::default()
+        })
+        .unwrap_err()
+        .to_string();
+        assert_eq!(
+            e,
+            "order 1 condition sum drift_i = 1 fails: got 1.00000001 (expected 1, residual 1.0e-8 > bound 1.0e-12)"
+        );
     }
 
     #[test]

@@ -55,8 +55,10 @@ pub enum Method {
 
 impl Method {
     /// Resolves what a user names: a charged-particle pusher, a method file (a path: it
-    /// ends in `.toml`, has a path separator, or names an existing file), or a catalog name
-    /// or alias (spelling rules and suggestions of [`Method::named`]).
+    /// ends in `.toml` or has a path separator), or a catalog name or alias (spelling rules
+    /// and suggestions of [`Method::named`]); a bare name that is none of these is read
+    /// as a file when one of that name exists. A stray file named `rk4` never shadows the
+    /// catalog's `rk4` (write `./rk4` to read it).
     pub fn resolve(name_or_path: &str) -> Result<Self, Error> {
         if let Some(pusher) = ParticleMethod::find(name_or_path) {
             return Ok(Method::Particle(pusher));
@@ -67,7 +69,12 @@ impl Method {
         if looks_like_path(name_or_path) {
             return Method::from_file(Path::new(name_or_path));
         }
-        Method::named(name_or_path)
+        match Method::named(name_or_path) {
+            Err(Error::UnknownMethod { .. }) if Path::new(name_or_path).is_file() => {
+                Method::from_file(Path::new(name_or_path))
+            }
+            found => found,
+        }
     }
 
     /// A catalog method by name or alias: `-`, `_` and spaces are one separator, and
@@ -87,7 +94,7 @@ impl Method {
     }
 
     /// Reads a method file: a splitting or composition when its family says so or it has
-    /// `drift`/`kick`/`gamma` keys, otherwise a Butcher tableau.
+    /// `drift`/`kick`/`word`/`gamma` keys, otherwise a Butcher tableau.
     pub fn from_file(path: &Path) -> Result<Self, Error> {
         let (text, origin) = super::file::read_file(path)?;
         if is_splitting_text(&text) {
@@ -212,14 +219,14 @@ impl From<Splitting> for Method {
     }
 }
 
-/// True when `arg` is meant as a file: it ends in `.toml`, has a path separator, or names
-/// an existing file.
+/// True when `arg` is written as a file: it ends in `.toml` or has a path separator
+/// (a bare name is a catalog name first: [`Method::resolve`]).
 pub fn looks_like_path(arg: &str) -> bool {
-    arg.ends_with(".toml") || arg.contains(['/', '\\']) || Path::new(arg).is_file()
+    arg.ends_with(".toml") || arg.contains(['/', '\\'])
 }
 
 /// A method file's text holding a splitting or composition: its family says so, or it
-/// has `drift`/`kick`/`gamma` keys (text that does not parse is left to the tableau
+/// has `drift`/`kick`/`word`/`gamma` keys (text that does not parse is left to the tableau
 /// reader, which reports the TOML error).
 fn is_splitting_text(text: &str) -> bool {
     let Ok(table) = text.parse::<toml::Table>() else {
@@ -231,6 +238,6 @@ fn is_splitting_text(text: &str) -> bool {
     };
     entry.is_some_and(|m| match m.get("family").and_then(|f| f.as_str()) {
         Some(family) => family == "splitting" || family == "composition",
-        None => ["drift", "kick", "gamma"].iter().any(|k| m.contains_key(*k)),
+        None => ["drift", "kick", "word", "gamma"].iter().any(|k| m.contains_key(*k)),
     })
 }

@@ -232,7 +232,7 @@ struct MethodFile {
     symmetric: Option<bool>,
 }
 
-fn coefficient(c: &Coefficient, field: &str) -> Result<f64, String> {
+pub(super) fn coefficient(c: &Coefficient, field: &str) -> Result<f64, String> {
     match c {
         Coefficient::Text(s) => stormer_order::eval_coefficient(s).map_err(|e| format!("{field} = \"{s}\": {e}")),
         Coefficient::Integer(i) => Ok(*i as f64),

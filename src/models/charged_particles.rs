@@ -1,4 +1,4 @@
-//! Charged particles in electric and magnetic fields (SCENES.md 5-6): the model behind the
+//! Charged particles in electric and magnetic fields (docs/scenes.md 5-6): the model behind the
 //! `charged-particles` scenes (`coulomb-magnetic`, `cyclotron`, `exb-drift`,
 //! `penning-trap`, `magnetic-bottle`).
 
@@ -12,12 +12,12 @@ use crate::{lit, to_f64, Error, Real, State};
 use core::marker::PhantomData;
 use nalgebra::{DMatrix, DVector};
 
-/// Charged particles in 3-D (SCENES.md 5-6), each with its mass `m_k` and charge `c_k`
+/// Charged particles in 3-D (docs/scenes.md 5-6), each with its mass `m_k` and charge `c_k`
 /// (ratio `r_k = c_k / m_k`), in a magnetic field ([`MagneticField`]) and optionally:
 ///
 /// - a uniform electric field `E`: acceleration `r_k E`, potential energy `-c_k E . q_k`;
 /// - an attracting Coulomb centre at the origin: potential energy `-mu c_k / |q_k|`
-///   (SCENES.md 5's `V = -1/|q|` for `mu = 1` and a unit charge);
+///   (docs/scenes.md 5's `V = -1/|q|` for `mu = 1` and a unit charge);
 /// - a quadrupole electric potential (the Penning trap's, axis 3):
 ///   `phi = (k/2) (z^2 - (x^2 + y^2)/2)`, potential energy `c_k phi(q_k)`, which confines
 ///   along the axis (frequency `sqrt(r k)`) and pushes outwards across it, where the
@@ -39,7 +39,7 @@ use nalgebra::{DMatrix, DVector};
 /// use stormer::magnetic::Charged;
 /// use stormer::models::{ChargedParticles, MagneticField};
 /// use stormer::{Driver, Method, Problem};
-/// // SCENES.md 5: unit charge and mass, Coulomb centre, field along axis 3 of strength 1
+/// // docs/scenes.md 5: unit charge and mass, Coulomb centre, field along axis 3 of strength 1
 /// let model = ChargedParticles::<f64, [f64; 6]>::new(&[1.0], &[1.0])
 ///     .unwrap()
 ///     .with_field(MagneticField::Uniform([0.0, 0.0, 1.0]))

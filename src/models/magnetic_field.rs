@@ -8,7 +8,7 @@ use crate::Real;
 /// [`crate::models::RelativisticParticles`] model.
 ///
 /// Sign convention: a particle of charge-to-mass ratio `r` turns with the rotation vector
-/// `omega = -r B` (`v' = r v x B = omega x v`). SCENES.md 5's "field along axis 3 of
+/// `omega = -r B` (`v' = r v x B = omega x v`). docs/scenes.md 5's "field along axis 3 of
 /// strength `w`", `Omega = [[0, -w, 0], [w, 0, 0], [0, 0, 0]]`, is the rotation vector
 /// `(0, 0, w)` of a particle of unit ratio, that is `B = (0, 0, -w)`.
 #[derive(Debug, Clone, Copy, PartialEq)]

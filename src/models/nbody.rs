@@ -1,4 +1,4 @@
-//! Newtonian gravity between any number of bodies (SCENES.md 3 and 4):
+//! Newtonian gravity between any number of bodies (docs/scenes.md 3 and 4):
 //! `H = sum |p_k|^2/(2 m_k) - sum_{k<l} G m_k m_l / |q_k - q_l|`, momenta `p = m v`.
 
 use super::nbody_shape::{AnyShape, Shape};
@@ -560,7 +560,7 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> QuadraticKinetic for NBody<T, S, K
 
 impl<S: State<Scalar = f64>, K: Shape> NBody<f64, S, K> {
     /// The relative orbit of body 1 about body 0 when there are exactly two bodies and it
-    /// is bound: semi-major axis, eccentricity, period (SCENES.md 3's checkable facts).
+    /// is bound: semi-major axis, eccentricity, period (docs/scenes.md 3's checkable facts).
     pub fn two_body_orbit(&self, y: &S) -> Option<Orbit> {
         let (r, v) = self.relative(y)?;
         Orbit::new(self.g * (self.masses[0] + self.masses[1]), &r, &v)

@@ -7,7 +7,7 @@ use crate::hamiltonian::halves_mut;
 use crate::magnetic::{Charged, Lorentz};
 use crate::{Error, MethodInfo, Real, State};
 
-/// Euler-Cromer (semi-implicit Euler of the users' E x B study, SCENES.md 6):
+/// Euler-Cromer (semi-implicit Euler of the users' E x B study, docs/scenes.md 6):
 ///
 /// ```text
 /// for each particle and component i = 1, 2, 3:

@@ -31,7 +31,7 @@ pub enum ImplicitSolver {
     /// when `|h| L rho(A) < 1` (L = Lipschitz constant of `f`), i.e. on non-stiff problems
     /// with moderate steps. This is the classical choice for symplectic Gauss methods on
     /// Hamiltonian problems (Hairer, Lubich & Wanner, *Geometric Numerical Integration*,
-    /// VIII.6) and the scheme of SCENES.md 6.
+    /// VIII.6) and the scheme of docs/scenes.md 6.
     #[default]
     FixedPoint,
     /// Simplified Newton iteration (Hairer & Wanner, *Solving ODEs II*, IV.8): the Jacobian

@@ -1,4 +1,4 @@
-//! Stormer's two-step form of the Verlet method (SCENES.md 1):
+//! Stormer's two-step form of the Verlet method (docs/scenes.md 1):
 //! `r_{n+1} = 2 r_n - r_{n-1} + h^2 a(t_n, r_n)`.
 
 use crate::flows::QuadraticKinetic;

@@ -1,4 +1,4 @@
-//! Verification of any method on any problem (DESIGN.md layer 6).
+//! Verification of any method on any problem (docs/design.md, layer 6).
 //!
 //! Each check runs the method's own stepper, so it verifies the code that users run, not
 //! a copy of the coefficients:

@@ -46,7 +46,7 @@ impl SecondOrder for Oscillator {
 /// Kepler's problem with `mu = 1` as a first-order system `(x, y, vx, vy)`: nonlinear and of
 /// more than one dimension (on a linear or a scalar problem some errors look a power smaller
 /// than they are). From `(1, 0, 0, 1)` the orbit is the unit circle; from `(0.4, 0, 0, 2)`
-/// the ellipse of eccentricity 0.6 (SCENES.md's kepler-e06).
+/// the ellipse of eccentricity 0.6 (the kepler-e06 scene).
 pub struct Kepler;
 impl Problem for Kepler {
     type Scalar = f64;

@@ -1,8 +1,8 @@
-//! The users' magnetic Verlet of SCENES.md 5, written out by hand: the reference that the
+//! The users' magnetic Verlet of docs/scenes.md 5, written out by hand: the reference that the
 //! catalog's velocity Verlet with the exact gyration drift is checked against, in the
 //! library's tests and through the binary.
 
-/// The users' magnetic Verlet of SCENES.md 5 written out with its matrices exp(Omega h)
+/// The users' magnetic Verlet of docs/scenes.md 5 written out with its matrices exp(Omega h)
 /// and F(h) (closed forms, field along axis 3 of strength `w`, `grad V = q/|q|^3`): the
 /// positions and velocities after each of `steps` steps of `h` from `q0`, `v0 = 0`.
 pub fn users_magnetic_verlet(w: f64, h: f64, q0: [f64; 3], steps: usize) -> Vec<[f64; 6]> {

@@ -7,6 +7,7 @@ mod interrupt;
 mod legend;
 mod methods;
 mod output;
+mod output_size;
 mod pictures;
 mod pipeline;
 mod plot;
@@ -70,7 +71,7 @@ enum Command {
     /// Join the partial tables of a study or ensemble run with --shard into its table and
     /// diagrams.
     Merge(study::MergeArgs),
-    /// Reproduce the experiments of SCENES.md: pictures, verdicts, index.html and summary.md.
+    /// Reproduce the experiments of docs/scenes.md: pictures, verdicts, index.html and summary.md.
     Tour(tour::TourArgs),
     /// The built-in scenes: list them, or print one's TOML to copy and edit.
     Scene {

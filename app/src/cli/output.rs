@@ -104,11 +104,7 @@ impl CsvRecorder {
             }
             Box::new(File::create(path).map_err(|e| io_error(path, &e))?)
         };
-        let mut header = vec!["t".to_string()];
-        header.extend(setup.model.components(&setup.y0));
-        if setup.initial_energy().is_some() {
-            header.push("energy".into());
-        }
+        let header = csv_header(setup);
         let mut rec = CsvRecorder {
             out: BufWriter::new(sink),
             path: path.to_path_buf(),
@@ -175,6 +171,17 @@ impl<St: State<Scalar = f64>> Recorder<f64, St> for CsvRecorder {
         }
         Ok(())
     }
+}
+
+/// The columns of a run's CSV: `t`, the scene's components, and `energy` when the scene
+/// has one.
+pub fn csv_header<S: Scene>(setup: &Setup<S>) -> Vec<String> {
+    let mut header = vec!["t".to_string()];
+    header.extend(setup.model.components(&setup.y0));
+    if setup.initial_energy().is_some() {
+        header.push("energy".into());
+    }
+    header
 }
 
 /// True for the path `-`: standard output.

@@ -52,11 +52,34 @@ fn planes(header: &[String]) -> Vec<(String, usize, usize, &'static str)> {
     out
 }
 
+/// The picture `STEM-suffix.svg`.
+pub fn picture_path(stem: &Path, suffix: &str) -> PathBuf {
+    PathBuf::from(format!("{}-{suffix}.svg", stem.display()))
+}
+
+/// Every file [`draw_run`] may write for a run whose CSV has the columns `header`: known
+/// before the run, so that none of them can be one of its inputs.
+pub fn run_pictures(header: &[String], stem: &Path) -> Vec<PathBuf> {
+    let planes = planes(header);
+    let mut suffixes: Vec<&str> = ["y", "z"]
+        .into_iter()
+        .filter(|axis| planes.iter().any(|p| p.3 == *axis))
+        .map(|axis| if axis == "y" { "xy" } else { "xz" })
+        .collect();
+    if planes.is_empty() {
+        suffixes.push("state");
+    }
+    if header.iter().any(|h| h == "energy") {
+        suffixes.push("energy");
+    }
+    suffixes.into_iter().map(|suffix| picture_path(stem, suffix)).collect()
+}
+
 /// Draws the pictures of a run from its sampled records, as files `STEM-xy.svg`, ..., with
-/// the scene's `units` on their axes.
+/// the scene's `units` on their axes ([`run_pictures`] lists them).
 pub fn draw_run(sample: &Sample, stem: &Path, (scene, units): (&str, &Units), method: &str) -> Pictures {
     let header = sample.header();
-    let named = |suffix: &str| PathBuf::from(format!("{}-{suffix}.svg", stem.display()));
+    let named = |suffix: &str| picture_path(stem, suffix);
     let title = |what: &str| format!("{scene}, {method}: {what}");
     let column = |j: usize| sample.column(j);
     let mut pictures = Pictures::default();
@@ -137,5 +160,29 @@ mod tests {
         let p = planes(&h(&["t", "x", "z", "vx", "vz", "energy"]));
         assert_eq!(p, vec![(String::new(), 1, 2, "z")]);
         assert!(planes(&h(&["t", "theta", "omega"])).is_empty());
+    }
+
+    #[test]
+    fn the_listed_pictures_are_those_drawn() {
+        let h = |names: &[&str]| names.iter().map(|s| s.to_string()).collect::<Vec<_>>();
+        let dir = std::env::temp_dir().join(format!("stormer-run-pictures-{}", std::process::id()));
+        for header in [
+            h(&["t", "x", "z", "vx", "vz", "energy"]),
+            h(&["t", "theta", "omega", "energy"]),
+            h(&["t", "a_x", "a_y", "a_z", "b_x", "b_y", "b_z"]),
+        ] {
+            let mut sample = Sample::new(header.clone());
+            for k in 0..3 {
+                let row: Vec<f64> = (1..header.len()).map(|j| (k * j) as f64 + 1.0).collect();
+                let energy = header.contains(&"energy".to_string());
+                let state = if energy { &row[..row.len() - 1] } else { &row[..] };
+                sample.push(k as f64, state, energy.then(|| 1.0 + k as f64));
+            }
+            let stem = dir.join("run");
+            let drawn = draw_run(&sample, &stem, ("scene", &Units::default()), "rk4");
+            assert!(drawn.skipped.is_empty(), "{:?}", drawn.skipped);
+            assert_eq!(drawn.written, run_pictures(&header, &stem), "{header:?}");
+        }
+        std::fs::remove_dir_all(&dir).unwrap();
     }
 }

@@ -200,6 +200,22 @@ impl<'s, S: Scene> SceneRun<'s, S> {
         driver.check_span(self.t0(), self.t_end)
     }
 
+    /// The most records the run can make, when it is known before it starts: its output
+    /// times, or for fixed steps one every `every` steps and the first and last (a stop
+    /// condition may end it sooner); `None` for adaptive steps.
+    pub fn planned_records(&self) -> Option<f64> {
+        if let Some(times) = &self.save_at {
+            return Some(times.len() as f64);
+        }
+        match self.control {
+            StepControl::Fixed(h) => {
+                let steps = ((self.t_end - self.t0()) / h).abs().ceil();
+                Some((steps / self.every as f64).floor() + 2.0)
+            }
+            _ => None,
+        }
+    }
+
     /// The driver of this run, recording every `every` steps.
     fn driver(&self, every: u64) -> Driver<'s, f64, S::State> {
         let mut driver = Driver::with(self.control).every(every);

@@ -1,7 +1,7 @@
 //! `stormer run SCENE`: integrate a scene, stream the records to CSV, summarize on stderr.
 
 use super::choice;
-use super::output::{file_safe, CsvRecorder};
+use super::output::{csv_header, file_safe, is_stdout, CsvRecorder};
 use super::pipeline::{Options, SceneRun, Steps, Track};
 use super::scene_overrides::SceneOverrides;
 use super::section::{Section, WithSection};
@@ -126,6 +126,8 @@ fn flag_hint(e: Error) -> anyhow::Error {
 /// Runs a scene.
 pub fn run(args: &RunArgs) -> anyhow::Result<()> {
     check(args)?;
+    // counted and refused before the scene is read, when there are too many
+    let save_at = args.save_at.as_deref().map(super::save_at::parse).transpose()?;
     let mut scene = scenes::load(&args.scene)?;
     if let Some(split) = &args.split {
         scene = scene.with_split(KeplerCoordinates::named(split)?)?;
@@ -145,19 +147,21 @@ pub fn run(args: &RunArgs) -> anyhow::Result<()> {
         let dt = args.overrides.dt.unwrap_or(scene.run().dt);
         scene = scene.with_corrector(order, &method, dt)?;
     }
-    scene.visit(Runner { args })
+    scene.visit(Runner { args, save_at })
 }
 
 /// The run, generic over the scene's model.
 struct Runner<'a> {
     args: &'a RunArgs,
+    /// The times of `--save-at`, parsed.
+    save_at: Option<Vec<f64>>,
 }
 
 impl Runner<'_> {
     /// The pipeline's options from the arguments.
-    fn options(&self) -> Result<Options, Error> {
+    fn options(&mut self) -> Options {
         let args = self.args;
-        let save_at = args.save_at.as_deref().map(super::save_at::parse).transpose()?;
+        let save_at = self.save_at.take();
         let mut implicit = match args.solver {
             Some(SolverArg::Newton) => ImplicitOptions::newton(),
             Some(SolverArg::FixedPoint) | None => ImplicitOptions::fixed_point(),
@@ -175,7 +179,7 @@ impl Runner<'_> {
         } else {
             Steps::Fixed(args.overrides.dt)
         };
-        Ok(Options {
+        Options {
             steps,
             t_end: args.overrides.t_end,
             every: args.every,
@@ -185,18 +189,18 @@ impl Runner<'_> {
             implicit,
             compensated: args.compensated,
             cancel: Some(super::interrupt::flag()),
-        })
+        }
     }
 }
 
 impl SceneVisitor for Runner<'_> {
     type Output = anyhow::Result<()>;
 
-    fn visit<S: Scene>(self, setup: Setup<S>) -> anyhow::Result<()> {
+    fn visit<S: Scene>(mut self, setup: Setup<S>) -> anyhow::Result<()> {
         let args = self.args;
         let method_name = args.overrides.method.as_deref().unwrap_or(&setup.run.method);
         let method = choice::resolve(method_name, args.alpha)?;
-        let mut options = self.options()?;
+        let mut options = self.options();
         let section = args
             .section
             .as_deref()
@@ -212,18 +216,38 @@ impl SceneVisitor for Runner<'_> {
             .flatten()
             .map(Path::new)
             .collect();
-        super::output::refuse_overwriting(&path, &inputs)?;
+        // the section and the pictures go beside the CSV when it is (or will be) a regular
+        // file; for stdout, a pipe or a device, beside the default output
+        let beside_csv = !is_stdout(&path) && std::fs::metadata(&path).map_or(true, |m| m.is_file());
+        let stem = if beside_csv { &path } else { &default_path }.with_extension("");
+        let header = csv_header(&setup);
+        let section_path = PathBuf::from(format!("{}-section.csv", stem.display()));
+        let section_picture = super::pictures::picture_path(&stem, "section");
+        // every file the run may write, its pictures included, checked before the first
+        let mut outputs = vec![path.clone()];
+        if section.is_some() {
+            outputs.extend([section_path.clone(), section_picture.clone()]);
+        }
+        outputs.extend(super::pictures::run_pictures(&header, &stem));
+        for output in &outputs {
+            super::output::refuse_overwriting(output, &inputs)?;
+        }
         run.check_span().map_err(flag_hint)?;
+        let destination = if is_stdout(&path) {
+            "stdout".into()
+        } else {
+            path.display().to_string()
+        };
+        if let Some(note) = run
+            .planned_records()
+            .and_then(|rows| super::output_size::note(rows, header.len(), &destination, options.save_at.is_some()))
+        {
+            let _ = writeln!(std::io::stderr(), "{note}");
+        }
         let mut csv = CsvRecorder::create(&path, &setup)?;
         csv.progress = Some(super::progress::Progress::new(run.t0(), run.t_end()));
-        // the section and the pictures go beside the CSV when it is a regular file; for
-        // stdout, a pipe or a device, beside the default output
-        let beside_csv = std::fs::metadata(&path).is_ok_and(|m| m.is_file());
-        let stem = if beside_csv { &path } else { &default_path }.with_extension("");
         let (outcome, mut crossings) = match &section {
             Some(_) => {
-                let section_path = PathBuf::from(format!("{}-section.csv", stem.display()));
-                super::output::refuse_overwriting(&section_path, &inputs)?;
                 let mut with = WithSection {
                     run: &mut csv,
                     crossings: CsvRecorder::create(&section_path, &setup)?,
@@ -315,8 +339,7 @@ impl SceneVisitor for Runner<'_> {
                 c.destination()
             );
             let title = format!("{}, {}: section {}", setup.name, method.name(), section.text);
-            let picture = PathBuf::from(format!("{}-section.svg", stem.display()));
-            super::section::draw(c, section, picture, &title, &mut pictures);
+            super::section::draw(c, section, section_picture, &title, &mut pictures);
         }
         for warning in &pictures.skipped {
             let _ = writeln!(std::io::stderr(), "warning: {warning}");

@@ -3,8 +3,10 @@
 use super::finite_number::finite_number;
 use stormer::Error;
 
-/// At most this many output times (8 bytes each in memory, a CSV row each on disk).
-const MAX_TIMES: f64 = 1e8;
+/// At most this many output times: they are held in memory (8 bytes each, in the few
+/// copies a run keeps), and each is a CSV row (about 20 bytes a column) on disk. A range
+/// is counted before any time is made, so a finer STEP is refused at once.
+const MAX_TIMES: f64 = 1e7;
 
 /// The times of `--save-at`: `START:STEP:END` (from START by STEP while not past END,
 /// END itself included when STEP divides the span to rounding) or `T1,T2,...`.
@@ -26,8 +28,10 @@ pub fn parse(text: &str) -> Result<Vec<f64>, Error> {
             let last = (ratio + 1e-9 * ratio.abs().max(1.0)).floor();
             if last + 1.0 > MAX_TIMES {
                 return Err(bad(format!(
-                    "{} output times, more than the {MAX_TIMES:e} allowed",
-                    last + 1.0
+                    "'{text}' gives {} output times, more than the {} a run writes (a CSV row \
+                     each); take a longer STEP",
+                    last + 1.0,
+                    MAX_TIMES as u64
                 )));
             }
             let n = last as usize;
@@ -70,7 +74,15 @@ mod tests {
             ("0:1", "expected START:STEP:END or a comma list"),
             ("0:x:1", "'x' is not a finite number"),
             ("1,,2", "'' is not a finite number"),
-            ("0:1e-12:1", "more than the 1e8 allowed"),
+            (
+                "0:1e-12:1",
+                "'0:1e-12:1' gives 1000000000001 output times, more than the 10000000 a run writes",
+            ),
+            (
+                "0:1.0000001e-7:10",
+                "'0:1.0000001e-7:10' gives 99999991 output times, more than the 10000000 a run writes (a CSV row each); take a \
+                 longer STEP",
+            ),
             ("inf", "'inf' is not a finite number"),
         ] {
             let e = parse(text).unwrap_err().to_string();

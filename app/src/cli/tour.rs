@@ -1,4 +1,4 @@
-//! `stormer tour`: the experiments of SCENES.md in one run, each with its pictures and a
+//! `stormer tour`: the experiments of docs/scenes.md in one run, each with its pictures and a
 //! verdict line computed from the runs, gathered in `index.html` and `summary.md`.
 
 use super::choice;

@@ -125,7 +125,7 @@ pub fn html(sections: &[Section]) -> String {
         "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n\
          <meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n\
          <title>stormer tour</title>\n<style>{STYLE}</style>\n</head>\n<body>\n<main>\n\
-         <h1>stormer tour</h1>\n<p class=\"lead\">The experiments of SCENES.md, run by \
+         <h1>stormer tour</h1>\n<p class=\"lead\">The experiments of docs/scenes.md, run by \
          <code>stormer tour</code>. Each section gives its verdict, computed from the runs, \
          then the numbers and the pictures behind it. The same report as text: \
          <a href=\"summary.md\">summary.md</a>.</p>\n\
@@ -178,7 +178,7 @@ pub fn html(sections: &[Section]) -> String {
 /// `summary.md`.
 pub fn markdown(sections: &[Section]) -> String {
     let mut md = String::from(
-        "# stormer tour\n\nThe experiments of SCENES.md, each with its verdict computed from the runs.\n\n",
+        "# stormer tour\n\nThe experiments of docs/scenes.md, each with its verdict computed from the runs.\n\n",
     );
     let cell = |c: &String| c.replace('|', "\\|");
     for s in sections {

@@ -2,7 +2,8 @@
 //! condition with its residual and the highest order the coefficients reach; for a
 //! splitting or composition, its order conditions by class (`verify_splitting`); for both,
 //! the numerical checks of `stormer::verify` (`verify_checks`). The exit is non-zero when
-//! what it measures contradicts what the method declares (its order, its symmetry...).
+//! what it measures contradicts the method's data: its declared order, or the symmetry
+//! derived from its coefficients.
 
 use super::output::{print, yes_no};
 use super::verify_checks::{self, JsonChecks};
@@ -318,7 +319,10 @@ fn tableau_report(tableau: Tableau, source: String, scheme: &Method, format: Tex
 /// Verifies a catalog method or a method file and prints the report.
 pub fn run(method: &str, format: TextFormat) -> anyhow::Result<()> {
     let choice = super::choice::resolve(method, None)?;
-    let source = if stormer::method::looks_like_path(method) {
+    // what was read from a file (a path, or a bare name the catalog does not know)
+    let from_file = matches!(choice, Method::RuntimeTableau(_) | Method::RuntimeSplitting(_))
+        && stormer::registry::normalize(method) != "theta";
+    let source = if from_file {
         method.to_string()
     } else {
         "catalog".to_string()
@@ -346,13 +350,13 @@ pub fn run(method: &str, format: TextFormat) -> anyhow::Result<()> {
     if contradictions.is_empty() {
         return Ok(());
     }
-    let name = if stormer::method::looks_like_path(method) {
+    let name = if from_file {
         format!("{} ({method})", choice.name())
     } else {
         choice.name().to_string()
     };
     Err(anyhow::anyhow!(
-        "{name}: the measurements contradict what the method declares: {}",
+        "{name}: the checks disagree with the method's data: {}",
         contradictions.join("; ")
     ))
 }

@@ -154,9 +154,12 @@ pub fn contradictions(r: &Report, declared: usize, symmetric: bool) -> Vec<Strin
         order("embedded order", m, q);
     }
     if r.reversible.holds != symmetric {
+        // the flag is derived, never declared (a file's `symmetric` must agree with the
+        // coefficients to be read at all): say so, and what the step did
         found.push(format!(
-            "the step-back test says reversible = {}, the coefficients say symmetric = {}",
-            yes_no(r.reversible.holds),
+            "the step-back test finds the step {}reversible, but the symmetric flag stormer derives from the \
+             coefficients is {}",
+            if r.reversible.holds { "" } else { "not " },
             yes_no(symmetric)
         ));
     }

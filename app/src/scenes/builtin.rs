@@ -19,7 +19,7 @@ pub struct BuiltinScene {
     pub text: &'static str,
 }
 
-/// The built-in scenes, in the order of `SCENES.md`.
+/// The built-in scenes, in the order of docs/scenes.md.
 pub const BUILTIN: &[BuiltinScene] = &[
     BuiltinScene {
         name: "pendulum",

@@ -37,7 +37,7 @@ pub type ChargedScene = Charged<ChargedParticles<f64, DVector<f64>>>;
 #[serde(deny_unknown_fields)]
 pub struct ChargedParameters {
     /// A uniform magnetic field as the rotation vector of a particle of unit
-    /// charge-to-mass ratio (`omega = -B`; SCENES.md 5's "field along axis 3 of strength
+    /// charge-to-mass ratio (`omega = -B`; docs/scenes.md 5's "field along axis 3 of strength
     /// w" is `omega = [0, 0, w]`).
     #[serde(default)]
     pub omega: Option<Spanned<Vec<Number>>>,

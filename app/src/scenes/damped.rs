@@ -1,4 +1,4 @@
-//! The damped oscillator `x'' = -w0^2 x - (w0/Q) x'` (SCENES.md 2).
+//! The damped oscillator `x'' = -w0^2 x - (w0/Q) x'` (docs/scenes.md 2).
 
 use super::file::{Number, Source};
 use super::{Built, OscillatorInitial, Scene};
@@ -20,7 +20,7 @@ use stormer::{Families, Problem};
 /// * over-damped (`Q < 1/2`), `k = sqrt(-d)`: the under-damped formulas with
 ///   `sin/wd -> sinh/k` and `cos -> cosh`.
 ///
-/// (SCENES.md's source wrote the under-damped case with `C sin(...)` and dropped `C`;
+/// (the users' source, docs/scenes.md 2, wrote the under-damped case with `C sin(...)` and dropped `C`;
 /// it is `(v0 + gamma x0)/wd`, which is `gamma x0 / wd` for `v0 = 0`, not zero.)
 ///
 /// ```
@@ -154,7 +154,7 @@ mod tests {
 
     #[test]
     fn dropping_the_sine_coefficient_is_caught() {
-        // SCENES.md's source dropped C; the comparison above must see that.
+        // the users' source dropped C (docs/scenes.md 2); the comparison above must see that.
         let w0 = 20f64.sqrt();
         let p = DampedOscillator::new(w0, w0);
         let t = 0.3;

@@ -1,4 +1,4 @@
-//! A spinning ball in flight: gravity, quadratic drag and the Magnus force (SCENES.md 7,
+//! A spinning ball in flight: gravity, quadratic drag and the Magnus force (docs/scenes.md 7,
 //! the `free-kick` scene).
 
 use super::file::{Number, Source};
@@ -14,7 +14,7 @@ use stormer::{Error, Families, Problem};
 /// m v' = -m g e_z - (1/2) rho Cx (pi R^2) |v| v + rho mu R^3 (omega x v),   omega = (0, spin, 0)
 /// ```
 ///
-/// (gravity, quadratic drag and the Magnus force, SCENES.md 7), state `[x, z, vx, vz]`.
+/// (gravity, quadratic drag and the Magnus force, docs/scenes.md 7), state `[x, z, vx, vz]`.
 /// With `omega = (0, spin, 0)` the Magnus force is `rho mu R^3 spin (vz, -vx)`: a positive
 /// spin is topspin for a ball moving along `+x` (the force points down, the kick dips), a
 /// negative one backspin (lift). Without drag and gravity it turns the velocity at the
@@ -29,7 +29,7 @@ use stormer::{Error, Families, Problem};
 /// ```
 /// use stormer_app::scenes::SpinningBall;
 /// use stormer::Problem;
-/// // SCENES.md 7: R = 0.11 m, m = 0.42 kg, Cx = 0.4, rho = 1.3 kg/m^3, mu = 2 pi, 4 pi rad/s
+/// // docs/scenes.md 7: R = 0.11 m, m = 0.42 kg, Cx = 0.4, rho = 1.3 kg/m^3, mu = 2 pi, 4 pi rad/s
 /// let ball = SpinningBall::new(9.81, 1.3, 0.4, 0.11, 0.42, 2.0 * std::f64::consts::PI, 4.0 * std::f64::consts::PI);
 /// assert!((ball.magnus_rate() + 0.3253).abs() < 1e-4); // rad/s
 /// let mut dy = [0.0; 4];
@@ -48,7 +48,7 @@ pub struct SpinningBall {
     pub radius: f64,
     /// Mass (kg).
     pub mass: f64,
-    /// Magnus coefficient (`2 pi` in SCENES.md 7).
+    /// Magnus coefficient (`2 pi` in docs/scenes.md 7).
     pub mu: f64,
     /// Spin about the `y` axis (rad/s; positive: topspin for motion along `+x`).
     pub spin: f64,

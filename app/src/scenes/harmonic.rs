@@ -1,4 +1,4 @@
-//! The harmonic oscillator `x'' = -w0^2 x` (SCENES.md 2).
+//! The harmonic oscillator `x'' = -w0^2 x` (docs/scenes.md 2).
 
 use super::file::{Number, Source};
 use super::{Built, Scene};

@@ -1,10 +1,10 @@
-//! The physical scenes of `SCENES.md`, read from TOML files that hold the users' values.
+//! The physical scenes of `docs/scenes.md`, read from TOML files that hold the users' values.
 //!
 //! A scene file names its model and gives its parameters, the initial state and how to
 //! run it:
 //!
 //! ```toml
-//! # Simple pendulum (SCENES.md 1): theta'' = -sin(theta).
+//! # Simple pendulum (docs/scenes.md 1): theta'' = -sin(theta).
 //! model = "pendulum"
 //! [initial]
 //! theta = 0.7853981633974483   # pi/4

@@ -395,7 +395,7 @@ mod tests {
         };
         assert_eq!(s.model.masses(), [1.0, 0.1]);
         assert_eq!(s.model.g(), 4.0 * core::f64::consts::PI.powi(2));
-        // SCENES.md 3's facts, given to 5 or 6 significant digits
+        // docs/scenes.md 3's facts, given to 5 or 6 significant digits
         let orbit = s.model.two_body_orbit(&s.y0).unwrap();
         assert!((orbit.a - 1.82073).abs() < 5e-6, "a = {}", orbit.a);
         assert!((2.0 * orbit.a - 3.6415).abs() < 5e-5, "2a = {}", 2.0 * orbit.a);

@@ -1,4 +1,4 @@
-//! The simple pendulum `theta'' = -sin(theta)` (SCENES.md 1).
+//! The simple pendulum `theta'' = -sin(theta)` (docs/scenes.md 1).
 
 use super::file::{Number, Source};
 use super::{Built, Scene};
@@ -7,7 +7,7 @@ use stormer::SecondOrder;
 
 /// The exact period of the pendulum released at rest from `theta0 = pi/4`, in units of
 /// `sqrt(l/g)`: `4 K(sin^2(pi/8))` (K the complete elliptic integral of the first kind,
-/// parameter `m = k^2`), equivalently `2 pi / AGM(1, cos(pi/8))` (SCENES.md 1).
+/// parameter `m = k^2`), equivalently `2 pi / AGM(1, cos(pi/8))` (docs/scenes.md 1).
 pub const PENDULUM_PERIOD_45_DEGREES: f64 = 6.534345229832591;
 
 /// The simple pendulum in the time unit `sqrt(l/g)`: `theta'' = -sin(theta)`, state
