@@ -211,6 +211,8 @@ fn newton_on_too_many_components_is_refused_before_allocating() {
         assert!(stderr.contains(must), "{must:?} not in {stderr}");
     }
     std::fs::remove_dir_all(&dir).unwrap();
+}
+
 /// A file the refused command must leave as it was: written, then read back after.
 fn input(dir: &Path, name: &str, text: &str) -> String {
     let path = dir.join(name);
