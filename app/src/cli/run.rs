@@ -242,7 +242,16 @@ impl SceneVisitor for Runner<'_> {
         }
         let flushed = csv.flush();
         let (stats, track) = (&outcome.stats, &outcome.track);
-        if let Some(Error::Cancelled { t, .. }) = outcome.error {
+        // a signal after the driver's last read of the flag: the run is whole, but it was
+        // stopped, and a stopped command does not exit 0
+        let stopped_at = match outcome.error {
+            Some(Error::Cancelled { t, .. }) => Some(t),
+            None if super::interrupt::flag().load(std::sync::atomic::Ordering::Relaxed) => {
+                Some(track.last_t.unwrap_or(run.t_end()))
+            }
+            _ => None,
+        };
+        if let Some(t) = stopped_at {
             let kept = match flushed {
                 Ok(()) => format!("{} records kept in {}", track.records, csv.destination()),
                 Err(f) => format!("the records could not all be kept: {f}"),
