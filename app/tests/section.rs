@@ -123,8 +123,10 @@ fn a_section_of_one_degree_of_freedom_is_written_and_drawn() {
             svg.matches("<circle").count() >= points.len(),
             "{scene}: one dot per crossing"
         );
+        // the axis labels, each on its own line of a <text>
+        let label = |name: &str| svg.contains(&format!(">\n{name}\n</text>"));
         assert!(
-            svg.contains(&format!(">{other}")) && !svg.contains(">energy"),
+            label(other) && label("t") && !label("energy"),
             "{scene}: drawn as {other} against t"
         );
         assert!(message.contains("r-section.svg"), "{message}");
