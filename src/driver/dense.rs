@@ -14,6 +14,7 @@
 
 use super::events::{Event, EventHit};
 use super::{Driver, Recorder, Stats, StopEvent};
+use crate::error::number;
 #[allow(unused_imports)]
 use crate::real::ops::*;
 use crate::{lit, to_f64, Error, Problem, Real, State, Stepper};
@@ -341,10 +342,10 @@ impl<T: Real, S: State<Scalar = T>> Driver<'_, T, S> {
                     "output times",
                     format!(
                         "time {} (number {}) is outside the run's span [{}, {}]",
-                        to_f64(s),
+                        number(to_f64(s)),
                         i + 1,
-                        to_f64(lo),
-                        to_f64(hi)
+                        number(to_f64(lo)),
+                        number(to_f64(hi))
                     ),
                 ));
             }
@@ -355,8 +356,8 @@ impl<T: Real, S: State<Scalar = T>> Driver<'_, T, S> {
                         format!(
                             "must {} strictly in the run's direction: {} follows {}",
                             if forward { "increase" } else { "decrease" },
-                            to_f64(s),
-                            to_f64(before)
+                            number(to_f64(s)),
+                            number(to_f64(before))
                         ),
                     ));
                 }

@@ -18,6 +18,7 @@ pub use events::{Crossing, Event, EventHit};
 pub use record::{Interrupted, Recorder, Solution, Stats, StopEvent};
 pub(crate) use run::{steps_in_place, steps_unchecked};
 
+use crate::error::number;
 #[allow(unused_imports)]
 use crate::real::ops::*;
 use crate::{lit, to_f64, Error, Problem, Real, State, Stepper, Tolerances};
@@ -373,7 +374,7 @@ impl<'a, T: Real, S: State<Scalar = T>> Driver<'a, T, S> {
                 "time span",
                 format!(
                     "empty: the end time equals the start time ({}); give an end time different from the start",
-                    to_f64(t0)
+                    number(to_f64(t0))
                 ),
             ));
         }
@@ -388,9 +389,9 @@ impl<'a, T: Real, S: State<Scalar = T>> Driver<'a, T, S> {
             StepControl::Fixed(h) if h.is_finite() && h.abs() > span.abs() => Err(Error::invalid(
                 "step size",
                 format!(
-                    "{:e} is longer than the time span ({:e}): not one whole step fits; give a step at most the span, or a longer span",
-                    to_f64(h.abs()),
-                    to_f64(span.abs())
+                    "{} is longer than the time span ({}): not one whole step fits; give a step at most the span, or a longer span",
+                    number(to_f64(h.abs())),
+                    number(to_f64(span.abs()))
                 ),
             )),
             _ => Ok(()),

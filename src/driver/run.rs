@@ -35,7 +35,7 @@ where
         if !(h.is_finite() && h != T::zero()) {
             return Err(Error::invalid(
                 "step size",
-                format!("must be finite and non-zero, got {}", to_f64(h)),
+                format!("must be finite and non-zero, got {}", crate::error::number(to_f64(h))),
             ));
         }
         let h = if span < T::zero() { -h.abs() } else { h.abs() };
@@ -245,7 +245,7 @@ where
             Some(h) => {
                 return Err(Error::invalid(
                     "initial step",
-                    format!("must be finite and non-zero, got {}", to_f64(h)),
+                    format!("must be finite and non-zero, got {}", crate::error::number(to_f64(h))),
                 ))
             }
             None => initial_step(self.p, t0, y0, tol, self.stepper.info().order, h_max, dir, self.stats),
