@@ -33,7 +33,7 @@ pub use families::{Families, SplittingSource};
 /// One-line messages for the errors of text files (method files here, scene files in the
 /// application): where in the file, and what.
 pub mod diagnostics {
-    pub use crate::error::{line_column, one_line, toml_message};
+    pub use crate::error::{line_column, number, one_line, toml_message, Number};
 }
 pub use flows::{Admits, QuadraticKinetic, Splittable};
 pub use hamiltonian::{Hamiltonian, SecondOrder};

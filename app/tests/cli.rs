@@ -1531,6 +1531,53 @@ fn scan_works_on_every_kind_of_scene_and_leaves_the_rounding_floor_out_of_the_fi
     }
 }
 
+/// Errors larger than the solution are not in the asymptotic regime: RK4 at 14 and 12
+/// steps over t = 10 on the harmonic scene (amplitude 10) errs by 4e6 and 2e10, and the
+/// slope between them (56.54) is no order (issue #30): those points are left out of the fit,
+/// no order is reported, and a warning says why. Steps in the asymptotic range give no warning.
+#[test]
+fn a_scan_outside_the_asymptotic_regime_warns_and_reports_no_order() {
+    let dir = workdir("scan-asymptotic");
+    let out = stormer_ok(
+        &dir,
+        &with_quick(&["scan", "harmonic", "--method", "rk4", "--steps", "14,12"]),
+    );
+    let err = stderr(&out);
+    assert!(
+        err.contains("warning: rk4: 2 of its errors (up to 2.32")
+            && err.contains("are not below the size of the solution (10)"),
+        "{err}"
+    );
+    let (header, rows) = read_table(&dir.join("out/scan-harmonic-rk4.csv"));
+    assert!(
+        rows.iter()
+            .all(|r| r[column(&header, "in_fit")] == "false" && r[column(&header, "fitted_order")].is_empty()),
+        "{rows:?}"
+    );
+    assert!(
+        !stdout(&out).contains("56.54  "),
+        "no order from those errors: {}",
+        stdout(&out)
+    );
+    let md = std::fs::read_to_string(dir.join("out/scan-harmonic-rk4.md")).unwrap();
+    assert!(md.contains("**Warning**: rk4: 2 of its errors"), "{md}");
+    // in the asymptotic range: no warning
+    let out = stormer_ok(
+        &dir,
+        &with_quick(&[
+            "scan",
+            "harmonic",
+            "--method",
+            "rk4",
+            "--steps",
+            "100,200,400",
+            "--t-end",
+            "2",
+        ]),
+    );
+    assert!(!stderr(&out).contains("warning"), "{}", stderr(&out));
+}
+
 #[test]
 fn a_study_in_three_shards_merges_into_the_whole() {
     let dir = workdir("shards");

@@ -222,3 +222,29 @@ fn a_refused_member_is_one_error_line_naming_it() {
     );
     assert!(!dir.join("out").exists());
 }
+
+/// The summary's extremes keep their significant digits: an energy error of 1e-12 is not
+/// `0.000000` (issue #30), and the varied values are printed as the grid has them.
+#[test]
+fn the_extremes_keep_their_significant_digits() {
+    let dir = workdir("ensemble", "digits");
+    let out = ensemble_ok(&dir, "harmonic --vary x=1:2:3 --show energy_error");
+    let summary = stderr(&out) + &stdout(&out);
+    let line = summary
+        .lines()
+        .find(|l| l.starts_with("energy_error: min "))
+        .unwrap_or_else(|| panic!("{summary}"));
+    let value = |after: &str| -> f64 {
+        line.split(after)
+            .nth(1)
+            .unwrap()
+            .split(' ')
+            .next()
+            .unwrap()
+            .parse()
+            .unwrap()
+    };
+    let (min, max) = (value("min "), value("max "));
+    assert!(min > 0.0 && max >= min && max < 1e-9, "{line}");
+    assert!(!line.contains("0.000000"), "{line}");
+}

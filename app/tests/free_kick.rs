@@ -7,6 +7,8 @@ use std::f64::consts::PI;
 use stormer::{Crossing, Driver, ImplicitOptions, Method, Problem, Solution, StepControl, StopEvent, Tolerances};
 use stormer_app::scenes::{self, AnyScene, Scene, Setup, SpinningBall};
 
+#[path = "support/binary.rs"]
+mod binary;
 #[path = "support/refusals.rs"]
 mod refusals;
 use refusals::splitting_refusal;
@@ -206,4 +208,51 @@ fn splittings_are_refused_because_of_the_drag() {
     let message = splitting_refusal(&s, "velocity_verlet_kdk");
     assert!(message.contains("air drag"), "{message}");
     assert!(message.contains("use a Runge-Kutta method instead"), "{message}");
+}
+
+/// A kick at 0.5 degrees: the ball starts on the ground (z = 0 exactly) and is back on it
+/// inside the first step of 0.1 s. A start on zero is not a crossing, but the return inside
+/// that step is (docs/output-and-events.md, the rule for a start on zero): the ball lands,
+/// by stepping again (rk4), on DOP853's extension and through the binary, and an ensemble
+/// over the angle lands every run (issue #30: "no landing", 156 m underground).
+#[test]
+fn a_ball_kicked_from_the_ground_lands_inside_the_first_step() {
+    let s = kick(&[("alpha = 30.0", "alpha = 0.5")]);
+    assert_eq!(s.y0[1], 0.0, "on the ground at the start");
+    let exact = reference(&s);
+    assert!(exact.t > 0.0 && exact.t < 0.1, "{}", exact.t);
+    let (_, landing) = flight(&s, "rk4", StepControl::Fixed(0.1));
+    assert!((landing.t - exact.t).abs() < 1e-6, "{} against {}", landing.t, exact.t);
+    assert!(landing.y[1].abs() < 1e-12, "on the ground: z = {}", landing.y[1]);
+    // on the continuous extension, as `stormer run --method dop853` does
+    let stop = s.model.stop().unwrap();
+    let mut dop853 = registry::stepper::<SpinningBall>("dop853", &s.y0, &ImplicitOptions::fixed_point()).unwrap();
+    let by_event = Driver::fixed(0.1)
+        .event(|t, y: &[f64; 4]| (stop.g)(&s.model, t, y), Crossing::Either, true)
+        .run(&s.model, &mut dop853, s.run.t0, &s.y0, s.run.t_end)
+        .unwrap();
+    let landed = by_event.stopped.expect("the ball lands");
+    assert!((landed.t - exact.t).abs() < 1e-6, "{}", landed.t);
+
+    // through the binary: the scene file with that one number changed
+    let dir = binary::workdir("free_kick", "half-degree");
+    let text = scenes::builtin("free-kick")
+        .unwrap()
+        .text
+        .replace("alpha = 30.0", "alpha = 0.5");
+    std::fs::write(dir.join("kick.toml"), text).unwrap();
+    for method in [&["--method", "rk4"][..], &["--method", "dop853", "--rtol", "1e-9"]] {
+        let mut args = vec!["run", "kick.toml", "--out", "k.csv"];
+        args.extend(method);
+        let message = binary::stderr(&binary::stormer_ok(&dir, &args));
+        assert!(message.contains("the ball lands at t = 0.0"), "{method:?}: {message}");
+        let csv = std::fs::read_to_string(dir.join("k.csv")).unwrap();
+        let (_, rows) = binary::csv_rows(&csv);
+        let last = rows.last().unwrap();
+        assert!(last[2].abs() < 1e-9, "{method:?}: the CSV ends at z = {}", last[2]);
+        std::fs::remove_file(dir.join("k.csv")).unwrap();
+    }
+    let out = binary::stormer_ok(&dir, &["ensemble", "free-kick", "--vary", "alpha=0.5:2:4"]);
+    let message = binary::stderr(&out) + &binary::stdout(&out);
+    assert!(message.contains("landing: 4 of 4 runs"), "{message}");
 }

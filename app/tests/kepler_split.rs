@@ -124,3 +124,40 @@ fn a_collision_course_with_the_star_ends_cleanly() {
         }
     }
 }
+
+/// `--split none` runs a scene whose file says `split = "kepler-jacobi"` unsplit: the
+/// plain N-body problem, same columns and first row, and a larger energy error than split
+/// (issue #30: there was no way to run a split scene unsplit).
+#[test]
+fn split_none_runs_a_split_scene_unsplit() {
+    let dir = workdir("kepler_split", "none");
+    let split = stormer_ok(&dir, &["run", "outer-solar-system-6", "--t-end", "4000", "-o", "s.csv"]);
+    let plain = stormer_ok(
+        &dir,
+        &[
+            "run",
+            "outer-solar-system-6",
+            "--t-end",
+            "4000",
+            "--split",
+            "none",
+            "-o",
+            "p.csv",
+        ],
+    );
+    let summary = stderr(&plain);
+    assert!(
+        summary.contains("stormer_verlet_dkd on outer-solar-system-6:"),
+        "{summary}"
+    );
+    let (h1, split_rows) = csv_rows(&std::fs::read_to_string(dir.join("s.csv")).unwrap());
+    let (h2, plain_rows) = csv_rows(&std::fs::read_to_string(dir.join("p.csv")).unwrap());
+    assert_eq!(h1, h2);
+    for (a, b) in plain_rows[0].iter().zip(&split_rows[0]) {
+        assert!((a - b).abs() <= 1e-12 * a.abs().max(1.0), "{a} {b}");
+    }
+    assert!(
+        energy_drift(&summary) > 10.0 * energy_drift(&stderr(&split)),
+        "{summary}"
+    );
+}

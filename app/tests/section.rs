@@ -82,3 +82,82 @@ fn a_section_without_a_side_keeps_both_directions() {
     assert_eq!(both.len(), one_way + other_way);
     assert!(both.iter().all(|p| p[1].abs() <= 1e-12));
 }
+
+/// Sections of scenes with one degree of freedom (two components): the crossings are
+/// written, and drawn as the other component against time, never against the energy
+/// column (issue #30: an index out of bounds after the CSVs were written, exit 101).
+#[test]
+fn a_section_of_one_degree_of_freedom_is_written_and_drawn() {
+    let dir = workdir("section", "one-degree");
+    for (scene, section, other) in [
+        ("pendulum", "theta = 0, omega > 0", "omega"),
+        ("harmonic", "x = 0, v > 0", "v"),
+        ("harmonic", "x = 0", "v"),
+        ("damped-oscillator", "x = 0", "v"),
+    ] {
+        let out = stormer_ok(
+            &dir,
+            &["run", scene, "--section", section, "--t-end", "10", "--out", "r.csv"],
+        );
+        let message = stderr(&out);
+        let (header, points) = rows(&std::fs::read_to_string(dir.join("r-section.csv")).unwrap());
+        assert!(!points.is_empty(), "{scene} {section}: {message}");
+        assert!(
+            message.contains(&format!("section {section}: {} crossings", points.len())),
+            "{message}"
+        );
+        let column = header.iter().position(|c| c == other).unwrap();
+        for p in &points {
+            assert!(
+                p[1].abs() <= 1e-9,
+                "{scene}: on the section, got {} at t = {}",
+                p[1],
+                p[0]
+            );
+            if section.contains("> 0") {
+                assert!(p[column] > 0.0, "{scene}: {other} = {}", p[column]);
+            }
+        }
+        let svg = std::fs::read_to_string(dir.join("r-section.svg")).unwrap();
+        assert!(
+            svg.matches("<circle").count() >= points.len(),
+            "{scene}: one dot per crossing"
+        );
+        // the axis labels, each on its own line of a <text>
+        let label = |name: &str| svg.contains(&format!(">\n{name}\n</text>"));
+        assert!(
+            label(other) && label("t") && !label("energy"),
+            "{scene}: drawn as {other} against t"
+        );
+        assert!(message.contains("r-section.svg"), "{message}");
+    }
+}
+
+/// A run that starts exactly on the section: the start is not a crossing (the rule of
+/// docs/output-and-events.md); the crossings are where the orbit comes back.
+#[test]
+fn a_start_on_the_section_is_not_a_crossing() {
+    let dir = workdir("section", "start-on-it");
+    // the harmonic scene released at rest from x = 10: v = 0 at the start
+    stormer_ok(
+        &dir,
+        &[
+            "run",
+            "harmonic",
+            "--section",
+            "v = 0",
+            "--t-end",
+            "3",
+            "--out",
+            "r.csv",
+        ],
+    );
+    let (_, points) = rows(&std::fs::read_to_string(dir.join("r-section.csv")).unwrap());
+    let period = std::f64::consts::TAU / 20f64.sqrt();
+    // v = 0 at every half period, the start excluded
+    let times: Vec<f64> = points.iter().map(|p| p[0]).collect();
+    assert_eq!(times.len(), 4, "{times:?}");
+    for (k, t) in times.iter().enumerate() {
+        assert!((t - period / 2.0 * (k + 1) as f64).abs() < 1e-6, "{times:?}");
+    }
+}

@@ -132,3 +132,64 @@ fn twenty_runs_killed_at_random_moments_leave_whole_rows() {
         );
     }
 }
+
+/// A scene of `n` bodies on a cubic lattice (no two close), slow enough per step that
+/// fewer than 1024 steps take many seconds in this test build.
+fn many_bodies(n: usize) -> String {
+    let side = (n as f64).cbrt().ceil() as usize;
+    let mut text = String::from("model = \"n-body\"\n[parameters]\nG = 1e-6\n");
+    for k in 0..n {
+        let (i, j, l) = (k % side, (k / side) % side, k / (side * side));
+        text += &format!(
+            "[[bodies]]\nname = \"b{k}\"\nmass = 1.0\nposition = [{i}.0, {j}.0, {l}.0]\nvelocity = [0.0, 0.0, 0.0]\n"
+        );
+    }
+    text + "[run]\nmethod = \"velocity_verlet_kdk\"\ndt = 1.0\nt_end = 500.0\nevery = 1000\n"
+}
+
+/// A stop signal acts within a second whatever a step costs, here with fewer than 1024
+/// steps left (issue #30: the flag was read every 1024 steps, so a single SIGTERM was
+/// ignored and the run exited 0): both in the fixed-step loop that steps in place (the
+/// splitting) and in the one that does not (RK4), records rare.
+#[test]
+fn a_stop_acts_within_a_second_on_slow_steps() {
+    let dir = binary::workdir("signals", "slow-steps");
+    std::fs::write(dir.join("many.toml"), many_bodies(SLOW_BODIES)).unwrap();
+    for method in ["velocity_verlet_kdk", "rk4"] {
+        let csv = dir.join("slow.csv");
+        let _ = std::fs::remove_file(&csv);
+        let child = Command::new(env!("CARGO_BIN_EXE_stormer"))
+            .args(["run", "many.toml", "--method", method, "--out", "slow.csv"])
+            .current_dir(&dir)
+            .stderr(Stdio::piped())
+            .spawn()
+            .expect("the binary runs");
+        let start = Instant::now();
+        while std::fs::metadata(&csv).map_or(true, |m| m.len() == 0) {
+            assert!(
+                start.elapsed() < Duration::from_secs(60),
+                "no CSV header after a minute"
+            );
+            std::thread::sleep(Duration::from_millis(5));
+        }
+        // well into the steps
+        std::thread::sleep(Duration::from_millis(1500));
+        let sent = Instant::now();
+        let (status, err) = binary::signal(child, "-TERM", start, Duration::from_secs(120));
+        let took = sent.elapsed();
+        assert_eq!(
+            status.code(),
+            Some(143),
+            "{method}: a stopped run exits 128 + 15: {err}"
+        );
+        assert!(err.starts_with("stopped by SIGTERM at t = "), "{method}: {err}");
+        assert!(
+            took < Duration::from_secs(1),
+            "{method}: stopped {took:?} after the signal"
+        );
+    }
+}
+
+/// Bodies in [`a_stop_acts_within_a_second_on_slow_steps`]: a step of either method takes
+/// about 0.02 to 0.1 s in the test build (so 500 steps take well over the test's wait).
+const SLOW_BODIES: usize = 400;

@@ -14,12 +14,10 @@
 
 use super::events::{Event, EventHit};
 use super::{Driver, Recorder, Stats, StopEvent};
+use crate::error::number;
 #[allow(unused_imports)]
 use crate::real::ops::*;
 use crate::{lit, to_f64, Error, Problem, Real, State, Stepper};
-
-/// Iterations of the event root finder; each halves the bracket at worst.
-const MAX_ITERATIONS: usize = 100;
 
 /// The order of the driver's continuous extension for a method of order `method_order`
 /// without its own: 3 (cubic Hermite) up to order 3, else 5 (quintic Hermite: a fourth-order
@@ -119,8 +117,9 @@ impl<'d, 'a, T: Real, S: State<Scalar = T>> Between<'d, 'a, T, S> {
         for (index, event) in self.events.iter().enumerate() {
             let g1 = (event.g)(end, y_new);
             if event.crossing.between(self.g_old[index], g1) {
-                let theta = self.root(p, stepper, index, t, end, y, y_new, g1, stats);
-                hits.push((theta, index));
+                if let Some(theta) = self.root(p, stepper, index, t, end, y, y_new, g1, stats) {
+                    hits.push((theta, index));
+                }
             }
             self.g_old[index] = g1;
         }
@@ -167,10 +166,11 @@ impl<'d, 'a, T: Real, S: State<Scalar = T>> Between<'d, 'a, T, S> {
         Ok(inside)
     }
 
-    /// The fraction `theta` of the step where event `index` crosses zero: Illinois regula
-    /// falsi on the continuous extension, to 4 eps of the step (finer than the time's own
+    /// The fraction `theta` of the step where event `index` crosses zero, on the continuous
+    /// extension ([`super::root::crossing`]: to 4 eps of the step, finer than the time's own
     /// rounding late in a run: the state at the crossing is evaluated at the fraction, so a
-    /// section `x = 0` holds `|x|` at the rounding of `x`, not of `t`).
+    /// section `x = 0` holds `|x|` at the rounding of `x`, not of `t`); `None` when the step
+    /// starts on zero and leaves it towards its end's side.
     #[allow(clippy::too_many_arguments)]
     fn root<P, St>(
         &mut self,
@@ -183,44 +183,17 @@ impl<'d, 'a, T: Real, S: State<Scalar = T>> Between<'d, 'a, T, S> {
         y_new: &S,
         g1: T,
         stats: &mut Stats,
-    ) -> T
+    ) -> Option<T>
     where
         P: Problem<Scalar = T, State = S>,
         St: Stepper<P> + ?Sized,
     {
         let h = end - t;
-        let (mut lo, mut glo, mut hi, mut ghi) = (T::zero(), self.g_old[index], T::one(), g1);
-        if ghi == T::zero() {
-            return T::one();
-        }
-        let resolution = T::default_epsilon() * lit::<T>(4.0);
-        let mut side = 0i8;
-        let mut theta = T::one();
-        for _ in 0..MAX_ITERATIONS {
-            theta = (lo * ghi - hi * glo) / (ghi - glo);
-            if !(theta > lo && theta < hi) {
-                theta = (lo + hi) * lit(0.5);
-            }
+        let found = super::root::crossing(self.g_old[index], g1, false, |theta| {
             self.state_at(p, stepper, theta, t, end, y, y_new, stats);
-            let g = (self.events[index].g)(t + theta * h, &self.at);
-            if g == T::zero() || hi - lo <= resolution {
-                break;
-            }
-            if (g > T::zero()) == (glo > T::zero()) {
-                (lo, glo) = (theta, g);
-                if side == -1 {
-                    ghi *= lit(0.5);
-                }
-                side = -1;
-            } else {
-                (hi, ghi) = (theta, g);
-                if side == 1 {
-                    glo *= lit(0.5);
-                }
-                side = 1;
-            }
-        }
-        theta
+            Ok::<T, core::convert::Infallible>((self.events[index].g)(t + theta * h, &self.at))
+        });
+        found.unwrap_or_else(|never| match never {})
     }
 
     /// `self.at = u(theta)`: the method's own continuous extension, else the cubic Hermite
@@ -369,10 +342,10 @@ impl<T: Real, S: State<Scalar = T>> Driver<'_, T, S> {
                     "output times",
                     format!(
                         "time {} (number {}) is outside the run's span [{}, {}]",
-                        to_f64(s),
+                        number(to_f64(s)),
                         i + 1,
-                        to_f64(lo),
-                        to_f64(hi)
+                        number(to_f64(lo)),
+                        number(to_f64(hi))
                     ),
                 ));
             }
@@ -383,8 +356,8 @@ impl<T: Real, S: State<Scalar = T>> Driver<'_, T, S> {
                         format!(
                             "must {} strictly in the run's direction: {} follows {}",
                             if forward { "increase" } else { "decrease" },
-                            to_f64(s),
-                            to_f64(before)
+                            number(to_f64(s)),
+                            number(to_f64(before))
                         ),
                     ));
                 }

@@ -3,16 +3,14 @@
 use super::{Driver, StopEvent};
 #[allow(unused_imports)]
 use crate::real::ops::*;
-use crate::{lit, Error, Problem, Real, State, Stepper};
-
-/// Iterations of the root finder; each halves the bracket at worst.
-const MAX_ITERATIONS: usize = 100;
+use crate::{Error, Problem, Real, State, Stepper};
 
 impl<T: Real, S: State<Scalar = T>> Driver<'_, T, S> {
-    /// If `g` changes sign over the step `(t, y) -> (t + h, y_new)`, finds the fraction
-    /// `theta` of the step where `g = 0` (Illinois regula falsi on `theta`, each trial a
-    /// fresh step of size `theta h` from `y`, so the located state has the method's own
-    /// accuracy) and returns the event. Otherwise updates `g_old` and returns `None`.
+    /// If `g` crosses zero over the step `(t, y) -> (t + h, y_new)`, finds the fraction
+    /// `theta` of the step where `g = 0` ([`super::root::crossing`], each trial a fresh step
+    /// of size `theta h` from `y`, so the located state has the method's own accuracy) and
+    /// returns the event. Otherwise updates `g_old` and returns `None`, with `y_new` and the
+    /// stepper's last step the step's.
     #[allow(clippy::too_many_arguments)]
     pub(super) fn locate<P, St>(
         &self,
@@ -31,51 +29,33 @@ impl<T: Real, S: State<Scalar = T>> Driver<'_, T, S> {
         let (Some(g), Some(g0)) = (self.stop.as_ref(), *g_old) else {
             return Ok(None);
         };
+        let zero = T::zero();
         let g1 = g(t + h, y_new);
-        if g1 == T::zero() {
-            return Ok(Some(StopEvent {
-                t: t + h,
-                y: y_new.clone(),
-            }));
-        }
-        if g0 == T::zero() || (g0 > T::zero()) == (g1 > T::zero()) {
+        // a start on zero may hold a crossing (`g` leaving zero one way and coming back)
+        let changes = if g0 == zero {
+            g1 != zero
+        } else {
+            g1 == zero || (g0 > zero) != (g1 > zero)
+        };
+        if !changes {
             *g_old = Some(g1);
             return Ok(None);
         }
-        let (mut lo, mut glo, mut hi, mut ghi) = (T::zero(), g0, T::one(), g1);
-        let mut side = 0i8;
-        let eps = T::default_epsilon() * lit(4.0);
-        let mut theta = T::one();
-        for _ in 0..MAX_ITERATIONS {
-            let previous = theta;
-            theta = (lo * ghi - hi * glo) / (ghi - glo);
-            if !(theta > lo && theta < hi) {
-                theta = (lo + hi) * lit(0.5);
-            }
+        let found = super::root::crossing(g0, g1, true, |theta| {
             stepper.step(p, t, theta * h, y, y_new)?;
-            let gm = g(t + theta * h, y_new);
-            if gm == T::zero() || (hi - lo) <= eps || (theta - previous).abs() <= eps {
-                break;
-            }
-            if (gm > T::zero()) == (glo > T::zero()) {
-                lo = theta;
-                glo = gm;
-                if side == -1 {
-                    ghi *= lit(0.5);
-                }
-                side = -1;
-            } else {
-                hi = theta;
-                ghi = gm;
-                if side == 1 {
-                    glo *= lit(0.5);
-                }
-                side = 1;
+            Ok::<T, Error>(g(t + theta * h, y_new))
+        })?;
+        match found {
+            Some(theta) => Ok(Some(StopEvent {
+                t: t + theta * h,
+                y: y_new.clone(),
+            })),
+            None => {
+                // no crossing: the step again, whole
+                stepper.step(p, t, h, y, y_new)?;
+                *g_old = Some(g1);
+                Ok(None)
             }
         }
-        Ok(Some(StopEvent {
-            t: t + theta * h,
-            y: y_new.clone(),
-        }))
     }
 }

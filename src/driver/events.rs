@@ -14,9 +14,12 @@ pub enum Crossing {
 }
 
 impl Crossing {
-    /// Whether `g` going from `g0` to `g1` (with `g0 != 0`) is a crossing of this kind.
+    /// Whether `g` going from `g0` to `g1` can be a crossing of this kind. From `g0 == 0` (a
+    /// step that starts on zero) only a crossing towards `g1`'s side can be, if `g` left
+    /// zero the other way first, which the root finder tells (`super::root`).
     pub(super) fn between<T: crate::Real>(self, g0: T, g1: T) -> bool {
         let zero = T::zero();
+        let g0 = if g0 == zero { -g1 } else { g0 };
         let rising = g0 < zero && g1 >= zero;
         let falling = g0 > zero && g1 <= zero;
         match self {

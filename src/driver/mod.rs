@@ -9,6 +9,7 @@ mod dense;
 mod event;
 mod events;
 mod record;
+mod root;
 mod run;
 
 use dense::Between;
@@ -17,13 +18,15 @@ pub use events::{Crossing, Event, EventHit};
 pub use record::{Interrupted, Recorder, Solution, Stats, StopEvent};
 pub(crate) use run::{steps_in_place, steps_unchecked};
 
+use crate::error::number;
 #[allow(unused_imports)]
 use crate::real::ops::*;
 use crate::{lit, to_f64, Error, Problem, Real, State, Stepper, Tolerances};
 use core::sync::atomic::{AtomicBool, Ordering};
 
-/// The cancel flag is read once every this many steps: often enough to stop within a
-/// fraction of a second, rarely enough to cost nothing in the step loop.
+/// The fixed-step loop in place reads the cancel flag at least once every this many steps,
+/// and more often when they are slow (`run::CancelChecks`); the other loops read it before
+/// every step.
 const CANCEL_EVERY: u64 = 1024;
 
 /// How the step size is chosen.
@@ -218,8 +221,10 @@ impl<'a, T: Real, S: State<Scalar = T>> Driver<'a, T, S> {
     }
 
     /// Stop with [`Error::Cancelled`] once `flag` is set (e.g. by a Ctrl-C handler); the
-    /// flag is read every 1024 steps (and before the first), and what was recorded before
-    /// is kept, as for any error.
+    /// flag is read before every step (a relaxed load), except in the fixed-step loop that
+    /// steps in place, which reads it between runs of steps timed to last at most about
+    /// 0.1 s (and at most 1024 steps), so a stop acts within a fraction of a second
+    /// whatever a step costs; what was recorded before is kept, as for any error.
     ///
     /// ```
     /// use std::sync::atomic::AtomicBool;
@@ -251,10 +256,11 @@ impl<'a, T: Real, S: State<Scalar = T>> Driver<'a, T, S> {
             .then(|| Between::new(times.unwrap_or(&[]), &self.events, t0, y0, order()))
     }
 
-    /// True when the cancel flag is set, read only at every [`CANCEL_EVERY`]-th step.
+    /// True when the cancel flag is set: a relaxed load, read before each step (and, in the
+    /// fixed-step loop in place, between its timed runs of steps).
     #[inline(always)]
-    fn cancelled(&self, step: u64) -> bool {
-        step % CANCEL_EVERY == 0 && self.cancel.is_some_and(|flag| flag.load(Ordering::Relaxed))
+    fn cancelled(&self) -> bool {
+        self.cancel.is_some_and(|flag| flag.load(Ordering::Relaxed))
     }
 
     /// Integrates from `(t0, y0)` to `t_end`, keeping the records in memory.
@@ -369,7 +375,7 @@ impl<'a, T: Real, S: State<Scalar = T>> Driver<'a, T, S> {
                 "time span",
                 format!(
                     "empty: the end time equals the start time ({}); give an end time different from the start",
-                    to_f64(t0)
+                    number(to_f64(t0))
                 ),
             ));
         }
@@ -384,9 +390,9 @@ impl<'a, T: Real, S: State<Scalar = T>> Driver<'a, T, S> {
             StepControl::Fixed(h) if h.is_finite() && h.abs() > span.abs() => Err(Error::invalid(
                 "step size",
                 format!(
-                    "{:e} is longer than the time span ({:e}): not one whole step fits; give a step at most the span, or a longer span",
-                    to_f64(h.abs()),
-                    to_f64(span.abs())
+                    "{} is longer than the time span ({}): not one whole step fits; give a step at most the span, or a longer span",
+                    number(to_f64(h.abs())),
+                    number(to_f64(span.abs()))
                 ),
             )),
             _ => Ok(()),

@@ -9,6 +9,7 @@ use super::{Between, Driver, Recorder, Stats, StopEvent, CANCEL_EVERY};
 use crate::real::ops::*;
 use crate::stepper::StepRun;
 use crate::{lit, to_f64, Error, Problem, Real, State, Stepper, Tolerances};
+use std::time::{Duration, Instant};
 
 /// A run of `driver` on problem `p` with `stepper`, recording into `out`.
 pub(super) struct Run<'r, 'd, T: Real, S, P, St: ?Sized, R: ?Sized> {
@@ -34,7 +35,7 @@ where
         if !(h.is_finite() && h != T::zero()) {
             return Err(Error::invalid(
                 "step size",
-                format!("must be finite and non-zero, got {}", to_f64(h)),
+                format!("must be finite and non-zero, got {}", crate::error::number(to_f64(h))),
             ));
         }
         let h = if span < T::zero() { -h.abs() } else { h.abs() };
@@ -67,7 +68,7 @@ where
         let mut save = driver.between(t0, y0, || self.stepper.info().order);
         for i in 0..n {
             let t = t0 + lit::<T>(i as f64) * h;
-            if driver.cancelled(i) {
+            if driver.cancelled() {
                 return Err(Error::Cancelled { t: to_f64(t), step: i });
             }
             let hi = if i + 1 == n && !exact { t_end - t } else { h };
@@ -160,6 +161,8 @@ where
 
     /// The fixed-step loop in place, for a run with nothing to watch between records: runs of
     /// steps up to the next record or cancel check, each run a call of [`steps_in_place`].
+    /// With a cancel flag, the runs between its checks are timed ([`CancelChecks`]), so that a
+    /// stop acts within about [`CHECK_EVERY`] whatever a step costs.
     fn fixed_in_place(
         &mut self,
         t0: T,
@@ -172,16 +175,17 @@ where
         let driver = self.driver;
         // the last step is shorter when h does not divide the span: it runs on its own
         let whole = if exact { n } else { n - 1 };
+        let mut checks = driver.cancel.map(|_| CancelChecks::new());
         let mut i = 0;
         while i < n {
-            if driver.cancelled(i) {
+            if driver.cancelled() {
                 return Err(Error::Cancelled {
                     t: to_f64(t0 + lit::<T>(i as f64) * h),
                     step: i,
                 });
             }
             let next_record = (i / driver.every + 1).saturating_mul(driver.every);
-            let next_check = (i / CANCEL_EVERY + 1) * CANCEL_EVERY;
+            let next_check = checks.as_mut().map_or(u64::MAX, |c| c.next_run(i));
             let end = next_record.min(next_check).min(n);
             let steps = &mut self.stats.steps;
             if end > whole {
@@ -241,7 +245,7 @@ where
             Some(h) => {
                 return Err(Error::invalid(
                     "initial step",
-                    format!("must be finite and non-zero, got {}", to_f64(h)),
+                    format!("must be finite and non-zero, got {}", crate::error::number(to_f64(h))),
                 ))
             }
             None => initial_step(self.p, t0, y0, tol, self.stepper.info().order, h_max, dir, self.stats),
@@ -264,7 +268,7 @@ where
                     needed: None,
                 });
             }
-            if driver.cancelled(self.stats.steps + self.stats.rejected) {
+            if driver.cancelled() {
                 return Err(Error::Cancelled {
                     t: to_f64(t),
                     step: self.stats.steps,
@@ -301,17 +305,55 @@ where
             } else {
                 self.stats.rejected += 1;
                 h = controller.rejected(h, Some(err).filter(|_| solver_failure.is_none()));
-            }
-            if h.abs() <= T::default_epsilon() * lit::<T>(10.0) * t.abs().max(T::one()) {
-                if let Some(e) = solver_failure {
-                    return Err(e);
+                // only a step shrunk by rejections underflows: an accepted step grows, however
+                // small the first guess (`--dt 1e-16` with `--rtol`)
+                if h.abs() <= T::default_epsilon() * lit::<T>(10.0) * t.abs().max(T::one()) {
+                    if let Some(e) = solver_failure {
+                        return Err(e);
+                    }
+                    return Err(Error::StepSizeTooSmall {
+                        t: to_f64(t),
+                        h: to_f64(h),
+                    });
                 }
-                return Err(Error::StepSizeTooSmall {
-                    t: to_f64(t),
-                    h: to_f64(h),
-                });
             }
         }
+    }
+}
+
+/// The longest wall time between two reads of the cancel flag that the in-place loop aims
+/// at: a stop acts well within a second.
+const CHECK_EVERY: Duration = Duration::from_millis(100);
+
+/// The runs of steps between two reads of the cancel flag in the in-place loop, which reads
+/// it between runs only (a read in its step loop would spoil the loop's registers): each
+/// run's length follows the wall time of the last, from one step, doubled while a run takes
+/// less than half of [`CHECK_EVERY`] (up to [`CANCEL_EVERY`] steps), halved while it takes
+/// more. Where the runs end changes nothing in the steps.
+struct CancelChecks {
+    steps: u64,
+    since: Option<Instant>,
+}
+
+impl CancelChecks {
+    fn new() -> Self {
+        CancelChecks { steps: 1, since: None }
+    }
+
+    /// The end of the run of steps starting at step `i`, its length set by the time the
+    /// last took.
+    fn next_run(&mut self, i: u64) -> u64 {
+        let now = Instant::now();
+        if let Some(since) = self.since {
+            let took = now - since;
+            if took * 2 < CHECK_EVERY {
+                self.steps = (self.steps * 2).min(CANCEL_EVERY);
+            } else if took > CHECK_EVERY {
+                self.steps = (self.steps / 2).max(1);
+            }
+        }
+        self.since = Some(now);
+        i.saturating_add(self.steps)
     }
 }
 

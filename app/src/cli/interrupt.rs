@@ -1,5 +1,6 @@
 //! Signals during `stormer run`: the first SIGINT (Ctrl-C), SIGTERM or SIGHUP stops the run
-//! at the driver's next check (within 1024 steps); the CSV is flushed and kept, a message
+//! at the driver's next check (within a second whatever a step costs; one after the last
+//! step still makes it a stopped run, which never exits 0); the CSV is flushed and kept, a message
 //! names the file and the last time written, and the command exits with 128 + the signal's
 //! number, the shells' convention. A second signal ends the process at once.
 

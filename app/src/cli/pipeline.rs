@@ -310,7 +310,11 @@ impl<'s, S: Scene> SceneRun<'s, S> {
         let stop = self.setup.model.stop()?;
         Some(match stopped {
             Some(event) => (stop.report)(&self.setup.model, event.t, &event.y),
-            None => format!("no {} before t = {}", stop.event, self.t_end),
+            None => format!(
+                "no {} before t = {}",
+                stop.event,
+                stormer::diagnostics::number(self.t_end)
+            ),
         })
     }
 

@@ -8,6 +8,7 @@ use super::section::{Section, WithSection};
 use anyhow::anyhow;
 use std::io::Write;
 use std::path::{Path, PathBuf};
+use stormer::diagnostics::number;
 use stormer::models::KeplerCoordinates;
 use stormer::{Error, ImplicitOptions, Stats, Tolerances};
 use stormer_app::scenes::{self, Scene, SceneVisitor, Setup};
@@ -61,8 +62,9 @@ pub struct RunArgs {
     /// Run an n-body scene in the Wisdom-Holman split: every body's Kepler orbit about the
     /// dominant one as the drift, their interaction as the kick (kepler-jacobi: Jacobi
     /// coordinates, every method keeps its order; kepler-democratic: democratic
-    /// heliocentric, order 2) [default: the scene's `split`, else none].
-    #[arg(long, value_name = "SPLIT", value_parser = ["kepler-jacobi", "kepler-democratic"])]
+    /// heliocentric, order 2); none: unsplit, whatever the scene's file says [default: the
+    /// scene's `split`, else none].
+    #[arg(long, value_name = "SPLIT", value_parser = ["kepler-jacobi", "kepler-democratic", "none"])]
     pub split: Option<String>,
     /// With --split kepler-jacobi and the Wisdom-Holman kernel (wisdom_holman or
     /// velocity_verlet_kdk) at fixed steps: the symplectic corrector of this order (3, 5,
@@ -129,8 +131,10 @@ pub fn run(args: &RunArgs) -> anyhow::Result<()> {
     // counted and refused before the scene is read, when there are too many
     let save_at = args.save_at.as_deref().map(super::save_at::parse).transpose()?;
     let mut scene = scenes::load(&args.scene)?;
-    if let Some(split) = &args.split {
-        scene = scene.with_split(KeplerCoordinates::named(split)?)?;
+    match args.split.as_deref() {
+        Some("none") => scene = scene.without_split(),
+        Some(split) => scene = scene.with_split(KeplerCoordinates::named(split)?)?,
+        None => {}
     }
     if let Some(order) = args.corrector {
         if args.rtol.is_some() || args.atol.is_some() {
@@ -266,19 +270,29 @@ impl SceneVisitor for Runner<'_> {
         }
         let flushed = csv.flush();
         let (stats, track) = (&outcome.stats, &outcome.track);
-        if let Some(Error::Cancelled { t, .. }) = outcome.error {
+        // a signal after the driver's last read of the flag: the run is whole, but it was
+        // stopped, and a stopped command does not exit 0
+        let stopped_at = match outcome.error {
+            Some(Error::Cancelled { t, .. }) => Some(t),
+            None if super::interrupt::flag().load(std::sync::atomic::Ordering::Relaxed) => {
+                Some(track.last_t.unwrap_or(run.t_end()))
+            }
+            _ => None,
+        };
+        if let Some(t) = stopped_at {
             let kept = match flushed {
                 Ok(()) => format!("{} records kept in {}", track.records, csv.destination()),
                 Err(f) => format!("the records could not all be kept: {f}"),
             };
             let last = track
                 .last_t
-                .map_or_else(String::new, |t| format!(" (the last at t = {t})"));
+                .map_or_else(String::new, |t| format!(" (the last at t = {})", number(t)));
             let signal = super::interrupt::received();
             return Err(super::interrupt::StoppedByUser {
                 message: format!(
-                    "stopped by {} at t = {t} after {} steps, {kept}{last}",
+                    "stopped by {} at t = {} after {} steps, {kept}{last}",
                     signal.name(),
+                    number(t),
                     stats.steps
                 ),
                 signal,
@@ -288,7 +302,7 @@ impl SceneVisitor for Runner<'_> {
         if let Some(e) = &outcome.error {
             let last = track
                 .last_t
-                .map_or_else(String::new, |t| format!(", the last at t = {t}"));
+                .map_or_else(String::new, |t| format!(", the last at t = {}", number(t)));
             let kept = match flushed {
                 Ok(()) => format!("; {} records kept in {}{last}", track.records, csv.destination()),
                 Err(_) if matches!(e, Error::Io { .. }) => String::new(),

@@ -22,6 +22,8 @@ pub struct Section {
     pub value: f64,
     /// Only crossings where component `.0` is above (`.1` true) or below `.2`.
     pub side: Option<(usize, bool, f64)>,
+    /// How many components the scene's state has.
+    pub components: usize,
 }
 
 impl Section {
@@ -68,6 +70,7 @@ impl Section {
             column,
             value,
             side,
+            components: components.len(),
         })
     }
 
@@ -83,12 +86,18 @@ impl Section {
             .map_or(true, |(j, above, v)| if above { y[j] > v } else { y[j] < v })
     }
 
-    /// The two components to draw the section in: the first two that are neither the
-    /// crossing one nor the side's (for a system of two degrees of freedom, the remaining
-    /// coordinate and its momentum).
-    pub fn axes(&self) -> Option<[usize; 2]> {
-        let mut rest = (0..).filter(|&j| j != self.column && self.side.map_or(true, |(s, _, _)| s != j));
-        Some([rest.next()?, rest.next()?])
+    /// The two columns of the CSV (0 is `t`, `j + 1` component `j`) to draw the section in:
+    /// the first two components that are neither the crossing one nor the side's (for a
+    /// system of two degrees of freedom, the remaining coordinate and its momentum); with
+    /// fewer (one degree of freedom), the other component against the crossing's time.
+    pub fn axes(&self) -> [usize; 2] {
+        let others = || (0..self.components).filter(|&j| j != self.column);
+        let mut free = others().filter(|&j| self.side.map_or(true, |(s, _, _)| s != j));
+        match (free.next(), free.next()) {
+            (Some(a), Some(b)) => [a + 1, b + 1],
+            // the side's component still varies from crossing to crossing
+            _ => [0, others().next().unwrap_or(self.column) + 1],
+        }
     }
 }
 
@@ -120,18 +129,12 @@ impl<S: Scene> Recorder<f64, S::State> for WithSection<'_, S> {
 /// Draws the crossings kept in `crossings` at `path` (the section's two remaining
 /// components as points).
 pub fn draw(crossings: &CsvRecorder, section: &Section, path: PathBuf, title: &str, pictures: &mut Pictures) {
-    let Some([a, b]) = section.axes() else {
-        pictures.skipped.push(format!(
-            "picture {} skipped: the scene has no two components besides the section's",
-            path.display()
-        ));
-        return;
-    };
+    let [a, b] = section.axes();
     let sample = &crossings.sample;
     let header = sample.header();
     // the sample's columns are t, the components, the energy
-    let (xs, ys) = (sample.column(a + 1), sample.column(b + 1));
-    let chart = Chart::new(title.to_string(), &header[a + 1], &header[b + 1]);
+    let (xs, ys) = (sample.column(a), sample.column(b));
+    let chart = Chart::new(title.to_string(), &header[a], &header[b]);
     pictures.draw(
         path,
         &chart,
@@ -152,11 +155,22 @@ mod tests {
     fn a_section_reads_its_column_value_and_side() {
         let s = Section::parse("x = 0, px > 0", &columns()).unwrap();
         assert_eq!((s.column, s.value, s.side), (0, 0.0, Some((2, true, 0.0))));
-        assert_eq!(s.axes(), Some([1, 3]));
+        assert_eq!(s.axes(), [2, 4], "y and py");
         assert!(s.admits(&[0.0, 0.1, 0.3, 0.0]) && !s.admits(&[0.0, 0.1, -0.3, 0.0]));
         let s = Section::parse("y=-0.5", &columns()).unwrap();
         assert_eq!((s.column, s.value, s.side), (1, -0.5, None));
         assert_eq!(s.g()(0.0, &[0.0, 1.0, 0.0, 0.0]), 1.5);
+    }
+
+    #[test]
+    fn a_section_of_one_degree_of_freedom_is_drawn_against_time() {
+        let two = ["x", "v"].map(String::from).to_vec();
+        // the other component against t, never past the components (the energy column)
+        assert_eq!(Section::parse("x = 0", &two).unwrap().axes(), [0, 2]);
+        assert_eq!(Section::parse("x = 0, v > 0", &two).unwrap().axes(), [0, 2]);
+        assert_eq!(Section::parse("v = 1, x < 0", &two).unwrap().axes(), [0, 1]);
+        let one = vec!["z".to_string()];
+        assert_eq!(Section::parse("z = 0", &one).unwrap().axes(), [0, 1]);
     }
 
     #[test]

@@ -178,6 +178,28 @@ impl AnyScene {
             units: setup.units,
         }))
     }
+
+    /// The scene run without a Wisdom-Holman split: a split n-body scene (its file's
+    /// `split`) back in the scene's coordinates with every force in the kick; any other
+    /// scene as it is.
+    ///
+    /// ```
+    /// let scene = stormer_app::scenes::load("outer-solar-system-6").unwrap();
+    /// assert!(scene.run().split.is_some());
+    /// assert_eq!(scene.without_split().run().split, None);
+    /// ```
+    pub fn without_split(self) -> AnyScene {
+        match self {
+            AnyScene::KeplerSplit(setup) => {
+                let y = setup.model.to_scene(&setup.y0);
+                let bodies = setup.model.bodies().clone();
+                let mut plain = rebuilt(setup, bodies, y);
+                plain.run.split = None;
+                AnyScene::NBody(plain)
+            }
+            other => other,
+        }
+    }
 }
 
 /// The setup of `setup`'s scene with the model `bodies` and the state `y`.

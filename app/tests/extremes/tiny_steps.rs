@@ -74,3 +74,34 @@ fn steps_of_1e_9_periods_keep_an_exact_time_grid_and_round_off_errors() {
         );
     }
 }
+
+/// An adaptive run's first step is only a guess: a guess of 1e-16 grows (10 times per
+/// accepted step at most) instead of being reported as a step size underflow (issue #30:
+/// `stormer run harmonic --method dop853 --rtol 1e-8 --dt 1e-16`, exit 1). Only a step
+/// shrunk by rejections underflows.
+#[test]
+fn a_tiny_first_step_guess_grows() {
+    let s = setup();
+    let control = stormer::StepControl::Adaptive {
+        tol: stormer::Tolerances::new(1e-8, 1e-8),
+        h0: Some(1e-16),
+        h_max: None,
+    };
+    let mut st = stepper(&s, "dop853");
+    let sol = Driver::with(control).run(&s.model, &mut st, 0.0, &s.y0, 10.0).unwrap();
+    assert_eq!(*sol.t.last().unwrap(), 10.0);
+    let x = s.exact(10.0).unwrap();
+    assert!((sol.y.last().unwrap()[0] - x[0]).abs() < 1e-5, "{:?}", sol.y.last());
+    // through the binary
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("tiny-first-step");
+    std::fs::create_dir_all(&dir).unwrap();
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_stormer"))
+        .args([
+            "run", "harmonic", "--method", "dop853", "--rtol", "1e-8", "--dt", "1e-16",
+        ])
+        .args(["--out", "h.csv"])
+        .current_dir(&dir)
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+}

@@ -10,6 +10,7 @@ use anyhow::Context;
 use std::fmt::Write as _;
 use std::io::Write as _;
 use std::path::{Path, PathBuf};
+use stormer::diagnostics::number;
 
 /// The files [`write`] writes: the table, and the picture when there is one (one or two
 /// varied numbers).
@@ -74,7 +75,7 @@ pub fn csv(part: &EnsemblePart) -> String {
 fn title(id: &EnsembleId) -> String {
     let at = match (&id.stop, id.t_end) {
         (Some(event), _) => format!("at the {event}"),
-        (None, Some(t)) => format!("at t = {t}"),
+        (None, Some(t)) => format!("at t = {}", number(t)),
         (None, None) => "at the end".into(),
     };
     format!("{}, {}: {} {at}", id.scene, id.method, id.show)
@@ -129,7 +130,7 @@ fn extremes(part: &EnsemblePart) -> String {
             .axes
             .iter()
             .zip(&row.values)
-            .map(|(a, v): (&Axis, &f64)| format!("{} = {v:?}", a.key))
+            .map(|(a, v): (&Axis, &f64)| format!("{} = {}", a.key, number(*v)))
             .collect();
         values.join(", ")
     };
@@ -141,9 +142,11 @@ fn extremes(part: &EnsemblePart) -> String {
     let max = finite.max_by(|a, b| a.1.total_cmp(&b.1));
     match (min, max) {
         (Some((rmin, vmin)), Some((rmax, vmax))) => format!(
-            "{}: min {vmin:.6} at {}; max {vmax:.6} at {}",
+            "{}: min {} at {}; max {} at {}",
             id.show_label,
+            number(vmin).significant(7),
             at(rmin),
+            number(vmax).significant(7),
             at(rmax)
         ),
         _ => format!("{}: no run finished", id.show_label),
@@ -163,9 +166,17 @@ pub fn write(part: &EnsemblePart, out: &Path, timing: &str) -> anyhow::Result<()
     let ranges: Vec<String> = id
         .axes
         .iter()
-        .map(|a| format!("{} from {:?} to {:?} ({} values)", a.key, a.start, a.end, a.count))
+        .map(|a| {
+            format!(
+                "{} from {} to {} ({} values)",
+                a.key,
+                number(a.start),
+                number(a.end),
+                a.count
+            )
+        })
         .collect();
-    let step = id.dt.map_or_else(String::new, |h| format!(" at dt = {h:?}"));
+    let step = id.dt.map_or_else(String::new, |h| format!(" at dt = {}", number(h)));
     let mut text = format!(
         "{}: {} with {}{step}, {}; {timing}\n",
         id.prefix(),

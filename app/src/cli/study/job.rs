@@ -316,6 +316,7 @@ impl JobRunner<'_> {
             error: None,
             energy_error: None,
             floor: 0.0,
+            scale: None,
             failure: Some(one_line(&e.to_string())),
         }
     }
@@ -395,6 +396,7 @@ impl SceneVisitor for JobRunner<'_> {
             error,
             energy_error,
             floor,
+            scale: (!truth.is_empty()).then_some(scale),
             failure: None,
         }
     }

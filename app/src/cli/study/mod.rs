@@ -9,6 +9,7 @@
 mod ensemble;
 mod ensemble_part;
 mod ensemble_report;
+mod fit;
 mod job;
 mod part_check;
 #[cfg(test)]
@@ -220,6 +221,10 @@ pub struct Row {
     /// Errors below this are the reference's or the rounding's, not the method's:
     /// `max(10 eps steps max|y|, 10 x the reference's uncertainty)`.
     pub floor: f64,
+    /// The size of the solution the error measures, `max |y_true_i|` (absent from the
+    /// parts of older versions): an error as large is not in the asymptotic regime.
+    #[serde(default)]
+    pub scale: Option<f64>,
     /// Why the run stopped early (it diverged, or took too many steps).
     pub failure: Option<String>,
 }

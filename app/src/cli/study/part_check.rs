@@ -63,7 +63,8 @@ fn check_row(field: &str, row: &Row, study: &StudyId) -> Result<(), String> {
     non_negative(&format!("{field}.seconds"), row.seconds)?;
     non_negative(&format!("{field}.error"), row.error)?;
     non_negative(&format!("{field}.energy_error"), row.energy_error)?;
-    non_negative(&format!("{field}.floor"), Some(row.floor))
+    non_negative(&format!("{field}.floor"), Some(row.floor))?;
+    non_negative(&format!("{field}.scale"), row.scale)
 }
 
 fn finite(field: &str, x: f64) -> Result<(), String> {

@@ -32,6 +32,7 @@ fn good_part() -> String {
         error: Some(2.5e-9),
         energy_error: Some(1e-10),
         floor: 1e-14,
+        scale: Some(10.0),
         failure: None,
     };
     let part = Part {
@@ -95,6 +96,7 @@ const FIELDS: &[&str] = &[
     "error",
     "energy_error",
     "floor",
+    "scale",
     "uncertainty",
 ];
 
@@ -109,7 +111,7 @@ fn shard_case(edits: &[Edit]) -> Result<(), TestCaseError> {
             for r in &part.rows {
                 let job = part.study.jobs.get(r.job);
                 prop_assert!(job.is_some_and(|j| j.method < part.study.methods.len()));
-                for x in [r.seconds, r.error, r.energy_error, Some(r.floor)]
+                for x in [r.seconds, r.error, r.energy_error, Some(r.floor), r.scale]
                     .into_iter()
                     .flatten()
                 {

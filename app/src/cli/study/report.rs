@@ -1,6 +1,7 @@
 //! A study's outputs: the table (terminal, CSV, markdown), the fitted orders of a scan, and
 //! the diagrams.
 
+use super::fit::{asymptotic_warnings, fits, in_fit, local_orders, steps_of, Fit};
 use super::{Control, Kind, Part, Row, StudyId};
 use crate::cli::output::print;
 use crate::cli::plot::{self, Chart, Scale, Series};
@@ -8,78 +9,6 @@ use anyhow::Context;
 use std::fmt::Write as _;
 use std::io::Write as _;
 use std::path::{Path, PathBuf};
-
-/// The observed order of one method of a scan.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Fit {
-    /// `-slope` of the least-squares line through `(ln steps, ln error)` of the points
-    /// above their floor; `None` with fewer than two such points.
-    pub order: Option<f64>,
-    /// Points used.
-    pub points: usize,
-}
-
-/// Least-squares slope of `(ln x, ln y)`.
-pub fn slope(points: &[(f64, f64)]) -> Option<f64> {
-    if points.len() < 2 {
-        return None;
-    }
-    let n = points.len() as f64;
-    let (lx, ly): (Vec<f64>, Vec<f64>) = points.iter().map(|&(x, y)| (x.ln(), y.ln())).unzip();
-    let (mx, my) = (lx.iter().sum::<f64>() / n, ly.iter().sum::<f64>() / n);
-    let sxx: f64 = lx.iter().map(|x| (x - mx) * (x - mx)).sum();
-    let sxy: f64 = lx.iter().zip(&ly).map(|(x, y)| (x - mx) * (y - my)).sum();
-    (sxx > 0.0).then(|| sxy / sxx)
-}
-
-/// Whether a scan row counts in the fit: finite error above its floor.
-fn in_fit(row: &Row) -> bool {
-    row.error.is_some_and(|e| e.is_finite() && e > row.floor && e > 0.0)
-}
-
-fn steps_of(study: &StudyId, row: &Row) -> u64 {
-    match study.jobs[row.job].control {
-        Control::Steps(n) => n,
-        _ => row.steps,
-    }
-}
-
-/// The fitted order of each method of a scan.
-pub fn fits(study: &StudyId, rows: &[Row]) -> Vec<Fit> {
-    (0..study.methods.len())
-        .map(|k| {
-            let points: Vec<(f64, f64)> = rows
-                .iter()
-                .filter(|r| study.jobs[r.job].method == k && in_fit(r))
-                .map(|r| (steps_of(study, r) as f64, r.error.unwrap_or(f64::NAN)))
-                .collect();
-            Fit {
-                order: slope(&points).map(|s| -s),
-                points: points.len(),
-            }
-        })
-        .collect()
-}
-
-/// The order observed between each scan row and the previous row of the same method.
-fn local_orders(study: &StudyId, rows: &[Row]) -> Vec<Option<f64>> {
-    let mut previous: Vec<Option<(u64, f64)>> = vec![None; study.methods.len()];
-    rows.iter()
-        .map(|r| {
-            let k = study.jobs[r.job].method;
-            let here = r
-                .error
-                .filter(|e| e.is_finite() && *e > 0.0)
-                .map(|e| (steps_of(study, r), e));
-            let local = match (previous[k], here) {
-                (Some((n1, e1)), Some((n2, e2))) if n1 != n2 => Some(-(e2 / e1).ln() / (n2 as f64 / n1 as f64).ln()),
-                _ => None,
-            };
-            previous[k] = here;
-            local
-        })
-        .collect()
-}
 
 fn sci(x: Option<f64>) -> String {
     x.map_or_else(|| "-".into(), |v| format!("{v:.3e}"))
@@ -501,9 +430,15 @@ pub fn write(part: &Part, out: &Path) -> anyhow::Result<()> {
         .with_context(|| format!("cannot write {}", csv_path.display()))?;
     let svgs = draw(part, out, fits.as_deref())?;
     let mut md = format!("# {prefix}\n\n{}\n\n{}", context(part), table.markdown());
+    let warnings = fits
+        .as_deref()
+        .map_or_else(Vec::new, |f| asymptotic_warnings(s, &part.rows, f));
     if let Some(f) = &fits {
         md += "\n";
         md += &fit_table(s, f).markdown();
+        for warning in &warnings {
+            let _ = write!(md, "\n**Warning**: {warning}\n");
+        }
     }
     for svg in &svgs {
         let name = svg
@@ -515,6 +450,9 @@ pub fn write(part: &Part, out: &Path) -> anyhow::Result<()> {
     let md_path = out.join(format!("{prefix}.md"));
     std::fs::write(&md_path, md).with_context(|| format!("cannot write {}", md_path.display()))?;
     print(&text)?;
+    for warning in &warnings {
+        let _ = writeln!(std::io::stderr(), "warning: {warning}");
+    }
     let mut written = vec![csv_path, md_path];
     written.extend(svgs);
     let names: Vec<String> = written.iter().map(|p| p.display().to_string()).collect();
@@ -544,20 +482,4 @@ pub fn print_partial(part: &Part, path: &Path) -> anyhow::Result<()> {
         path.display()
     );
     Ok(())
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn slope_of_a_power_law() {
-        let points: Vec<(f64, f64)> = [10.0, 20.0, 40.0, 80.0]
-            .iter()
-            .map(|&n: &f64| (n, 3.0 * n.powi(-4)))
-            .collect();
-        assert!((slope(&points).unwrap() + 4.0).abs() < 1e-12);
-        assert_eq!(slope(&points[..1]), None);
-        assert_eq!(slope(&[(10.0, 1.0), (10.0, 2.0)]), None);
-    }
 }
