@@ -420,7 +420,7 @@ impl KeplerLanes {
     /// The flows of the first `count` problems for time `tau` from the positions `q` and
     /// momenta `p` (the other lanes: not solved, unspecified). Each lane adds what
     /// [`LagrangeCoefficients::new`]'s coefficients add, to round-off
-    /// (`tests/kepler_drift.rs`).
+    /// (`tests/physics/kepler_drift.rs`).
     ///
     /// ```
     /// use stormer::kepler::{KeplerLanes, LagrangeCoefficients};

@@ -442,7 +442,7 @@ impl<T: Real, S: State<Scalar = T>> Lorentz for ChargedParticles<T, S> {
 /// (`omega` of the particle at `y`'s positions: constant for a uniform field).
 ///
 /// For a uniform field, the magnetic Verlet and every composition over it preserve it
-/// (`tests/verification/structure.rs`); Boris preserves the phase-space volume but not
+/// (`tests/methods/verification/structure.rs`); Boris preserves the phase-space volume but not
 /// this form.
 ///
 /// ```

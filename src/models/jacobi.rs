@@ -20,7 +20,7 @@ use crate::Real;
 /// `m'_k = m_k eta_(k-1) / eta_k` (`m'_0` the total mass).
 ///
 /// Each map is `O(n)`, in place, allocation-free and exact up to rounding (the round trip
-/// returns the state to a few units in the last place, `tests/kepler_split.rs`).
+/// returns the state to a few units in the last place, `tests/physics/kepler_split.rs`).
 ///
 /// ```
 /// use stormer::models::Jacobi;

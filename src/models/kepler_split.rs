@@ -26,7 +26,7 @@ pub enum KeplerCoordinates {
     /// of the positions) in the drift: half of it, the Kepler motion, the other half. That
     /// drift is symmetric but not the exact flow of one part (two drifts in a row are not
     /// one longer drift), so every method is of order 2, with an error of the planets'
-    /// masses times `h^2` (`tests/kepler_split.rs`): Wisdom-Holman's order, not the
+    /// masses times `h^2` (`tests/physics/kepler_split.rs`): Wisdom-Holman's order, not the
     /// higher orders of the catalog, which need [`KeplerCoordinates::Jacobi`].
     DemocraticHeliocentric,
 }

@@ -12,7 +12,7 @@ use crate::{lit, Error, MethodInfo, Problem, State};
 /// The stages of an explicit tableau, as [`ExplicitStepper`] runs them: compiled
 /// ([`Unrolled`], the code `tableau!` generates) or read at run time
 /// ([`super::RuntimeStages`]). Both perform the same floating-point operations in the same
-/// order, so their trajectories are bitwise equal (`tests/compiled_vs_runtime.rs`).
+/// order, so their trajectories are bitwise equal (`tests/methods/compiled_vs_runtime.rs`).
 pub trait ExplicitStages<S: State>: Clone + core::fmt::Debug {
     /// Name, order, stages and flags.
     fn info(&self) -> MethodInfo;

@@ -17,7 +17,7 @@ type Ops<T> = Vec<(Flow, T, T)>;
 /// The word of a splitting or composition, as [`WordStepper`] runs it: compiled
 /// ([`UnrolledWord`], the code `splitting!` / `composition!` generate) or read at run time
 /// ([`RuntimeWord`]). Both perform the same floating-point operations in the same order,
-/// so their trajectories are bitwise equal (`tests/compiled_vs_runtime.rs`).
+/// so their trajectories are bitwise equal (`tests/methods/compiled_vs_runtime.rs`).
 pub trait SplittingWord<S: State>: Clone + core::fmt::Debug {
     /// The problems the word runs on: [`General`] or [`crate::flows::QuadraticOnly`].
     type Class: ProblemClass;

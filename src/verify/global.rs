@@ -23,7 +23,7 @@ pub enum Precision {
 ///
 /// The defaults measure every Butcher tableau of the catalog, main and embedded solution,
 /// within 0.1 of its order in `f64` (and those of order `<= 4` in `f32`):
-/// `tests/convergence.rs`, `docs/verification.md`.
+/// `tests/methods/convergence.rs`, `docs/verification.md`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct GlobalOrderOptions {
     /// The finest step count tried over `[-1, 1]`; the counts are `round(2^(k/4))`,

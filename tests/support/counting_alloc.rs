@@ -1,6 +1,7 @@
 //! A global allocator that counts the allocations of the calling thread, for the tests
-//! that prove a step loop allocates nothing (included with `#[path]` by each test binary
-//! that needs it; per thread, since the harness's own threads allocate at any time).
+//! that prove a step loop allocates nothing (declared once by each test binary that counts:
+//! tests/steppers/main.rs, tests/many_particles.rs, app/tests/scenes/main.rs; per thread,
+//! since the other tests' threads and the harness's own allocate at any time).
 
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::cell::Cell;

@@ -2,8 +2,8 @@
 //! about 32 significant digits (unit round-off `2^-105`, about 2.5e-32), implementing
 //! `nalgebra::RealField`, so that it is a [`stormer::Real`] and every generic path of the
 //! crate runs on it. Made for measurements that the `f64` round-off floor hides (the
-//! generalized orders on the Kepler split, `tests/kepler_generalized_order.rs`); tested in
-//! `tests/double_double.rs`.
+//! generalized orders on the Kepler split, `tests/physics/kepler_generalized_order.rs`); tested in
+//! `tests/physics/double_double.rs`.
 //!
 //! No crate gives one that implements `RealField`: `twofloat` has no nalgebra traits and
 //! computes its elementary functions to `f64`-like accuracy only. The algorithms are the

@@ -1,5 +1,5 @@
 //! Least-squares fits of `c eps^a h^p` to measured errors (the generalized orders of the
-//! near-integrable methods, tests/kepler_correctors.rs and tests/kepler_generalized_order.rs).
+//! near-integrable methods, tests/physics/kepler_correctors.rs and tests/physics/kepler_generalized_order.rs).
 
 /// The power law `(ln c, a, p)` of `c eps^a h^p` fitted to `points` `(eps, h, error)` by least
 /// squares in the logarithms.

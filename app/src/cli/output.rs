@@ -72,7 +72,7 @@ pub fn file_safe(name: &str) -> String {
 /// Each record is handed to the buffer as one whole line, and the buffer hands the OS
 /// only what it holds, whole lines, so a caught signal never leaves a torn row; SIGKILL
 /// during a write can still cut the last row at a page boundary, where the kernel stops a
-/// killed process's write (tests/signals.rs kills runs at random moments).
+/// killed process's write (app/tests/cli/signals.rs kills runs at random moments).
 /// The file is flushed at least every [`FLUSH_INTERVAL`] and always after a whole record,
 /// so that a run stopped from outside, even by a signal the program cannot catch, leaves
 /// at most that much output unwritten, and `tail -f` follows the run.

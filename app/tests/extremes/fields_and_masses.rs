@@ -286,7 +286,7 @@ fn masses_of_1e30_and_1e_30_in_f32() {
 }
 
 /// The stability limits of the charged-particle methods (not catalog data, so not in
-/// tests/stability.rs), in the field of strength 1 at 0.99 and 1.01 times the limit:
+/// tests/methods/stability.rs), in the field of strength 1 at 0.99 and 1.01 times the limit:
 /// Euler-Cromer's map `[[1, a], [-a, 1 - a^2]]` (`a = w h`) is bounded for `a <= 2`
 /// (measured max |v| 10.0 at a = 1.98, from |v0| = 1.005: the map is far from a rotation
 /// there) and grows at its eigenvalue's rate above; Boris keeps `|v|` at any step (w h = 100

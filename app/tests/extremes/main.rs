@@ -2,8 +2,8 @@
 //! measured with headroom (the figures are in the doc comments and in
 //! docs/stability-and-limits.md, section "Extremes").
 //!
-//! The step sizes around each method's stability limit are `tests/stability.rs`; the
-//! blow-up through the binary is `tests/cli.rs`.
+//! The step sizes around each method's stability limit are `tests/methods/stability.rs`; the
+//! blow-up through the binary is `app/tests/cli/cli.rs`.
 
 // States and times are compared exactly where the crate promises exactness.
 #![allow(clippy::float_cmp)]
