@@ -1,5 +1,5 @@
 // Kahan-Li 8 with gamma_1 = gamma_17 moved by 1e-3 and gamma_6 .. gamma_12 solved back onto
-// every condition up to order 6 (order/tests/splittings.rs, kahan_li8_perturbed):
+// every condition up to order 6 (order/tests/conditions/splittings.rs, kahan_li8_perturbed):
 // palindromic and consistent, of order 6 exactly; declared 8, an order-7 condition fails.
 stormer::composition! {
     pub struct KahanLi8Perturbed {

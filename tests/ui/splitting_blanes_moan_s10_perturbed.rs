@@ -1,5 +1,5 @@
 // Blanes-Moan S10 with a_1 moved by 1e-3 and a_4, a_5, b_5, b_6 solved back onto every
-// condition up to order 4 (order/tests/splittings.rs, blanes_moan_s10_perturbed), written as
+// condition up to order 4 (order/tests/conditions/splittings.rs, blanes_moan_s10_perturbed), written as
 // its word: palindromic and consistent, of order 4 exactly; declared 6, an order-5
 // condition fails.
 stormer::splitting! {
