@@ -3,10 +3,7 @@
 //! clear error line and a non-zero exit, and the
 //! parsers, fed arbitrary text, return errors instead of panicking (proptest).
 
-#[path = "support/binary.rs"]
-mod binary;
-
-use binary::{stormer_ok, workdir};
+use crate::support::binary::{stormer_ok, workdir};
 use proptest::prelude::*;
 use std::collections::HashMap;
 use std::path::Path;
