@@ -14,7 +14,8 @@ const BYTES_PER_COLUMN: f64 = 19.0;
 /// times (where `--every` does not apply).
 pub fn note(rows: f64, columns: usize, destination: &str, save_at: bool) -> Option<String> {
     let bytes = rows * (columns as f64 * BYTES_PER_COLUMN + 1.0);
-    if !(bytes >= HUGE_BYTES) {
+    // NaN rows (an unknown count) write no note either
+    if bytes.is_nan() || bytes < HUGE_BYTES {
         return None;
     }
     let fewer = if save_at {

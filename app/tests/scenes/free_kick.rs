@@ -223,7 +223,10 @@ fn a_ball_kicked_from_the_ground_lands_inside_the_first_step() {
     assert!(landing.y[1].abs() < 1e-12, "on the ground: z = {}", landing.y[1]);
     // on the continuous extension, as `stormer run --method dop853` does
     let stop = s.model.stop().unwrap();
-    let mut dop853 = registry::stepper::<SpinningBall>("dop853", &s.y0, &ImplicitOptions::fixed_point()).unwrap();
+    let dop853 = Method::named("dop853").unwrap();
+    let mut dop853 = dop853
+        .stepper_for(&s.model, &s.y0, &ImplicitOptions::fixed_point())
+        .unwrap();
     let by_event = Driver::fixed(0.1)
         .event(|t, y: &[f64; 4]| (stop.g)(&s.model, t, y), Crossing::Either, true)
         .run(&s.model, &mut dop853, s.run.t0, &s.y0, s.run.t_end)
