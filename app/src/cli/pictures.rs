@@ -176,7 +176,7 @@ mod tests {
                 let row: Vec<f64> = (1..header.len()).map(|j| (k * j) as f64 + 1.0).collect();
                 let energy = header.contains(&"energy".to_string());
                 let state = if energy { &row[..row.len() - 1] } else { &row[..] };
-                sample.push(k as f64, state, energy.then(|| 1.0 + k as f64));
+                sample.push(k as f64, state, energy.then_some(1.0 + k as f64));
             }
             let stem = dir.join("run");
             let drawn = draw_run(&sample, &stem, ("scene", &Units::default()), "rk4");

@@ -3,7 +3,7 @@
 //! clear error line and a non-zero exit, and the
 //! parsers, fed arbitrary text, return errors instead of panicking (proptest).
 
-use crate::support::binary::{stormer_ok, workdir};
+use crate::support::binary::{self, stormer_ok, workdir};
 use proptest::prelude::*;
 use std::collections::HashMap;
 use std::path::Path;
