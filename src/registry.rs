@@ -28,7 +28,7 @@ pub static BUTCHER: &[TableauData] = catalog::for_each_butcher_method!(data_list
 pub static SPLITTING: &[SplittingData] = catalog::for_each_splitting_method!(splitting_data_list);
 
 /// The names users bring from other libraries, as `(alias, catalog name, where it comes
-/// from)`. An alias is matched with the spelling rules of [`lookup`] (case, `-`, `_` and
+/// from)`. An alias is matched with the spelling rules of [`Method::named`] (case, `-`, `_` and
 /// spaces do not matter), so `RK45`, `rk-45` and `rk45` are one alias.
 pub const ALIASES: &[(&str, &str, &str)] = &[
     ("RK45", "dormand_prince5", "scipy"),
@@ -155,7 +155,7 @@ pub(crate) fn lookup(name: &str) -> Result<Method, Error> {
     })
 }
 
-/// Looks a Butcher tableau up by name or alias ([`lookup`]); a splitting's name is an
+/// Looks a Butcher tableau up by name or alias ([`Method::named`]); a splitting's name is an
 /// error that says so.
 ///
 /// ```
@@ -174,7 +174,7 @@ pub fn find(name: &str) -> Result<&'static TableauData, Error> {
     }
 }
 
-/// Looks a splitting or composition up by name or alias ([`lookup`]); a Butcher method's
+/// Looks a splitting or composition up by name or alias ([`Method::named`]); a Butcher method's
 /// name is an error that says so.
 pub fn find_splitting(name: &str) -> Result<&'static SplittingData, Error> {
     match lookup(name)? {
