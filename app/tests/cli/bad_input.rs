@@ -383,7 +383,7 @@ fn a_stray_file_does_not_shadow_a_catalog_method() {
         &["run", "harmonic", "--method", "rk4", "--t-end", "0.1", "--out", "h.csv"],
     );
     assert!(
-        binary::stderr(&out).contains("rk4 on harmonic: 10 steps"),
+        binary::stderr(&out).contains("rk4 on harmonic: 100 steps"),
         "{}",
         binary::stderr(&out)
     );
@@ -564,7 +564,7 @@ fn repository_texts() -> Vec<std::path::PathBuf> {
     files
 }
 
-/// Issue #30, item 19: the code cited SCENES.md and DESIGN.md, pages outside the
+/// Issue #30, item 19: the code cited the users' scene page and the design page outside the
 /// repository, 99 times; it cites the project's own docs/scenes.md and docs/design.md, and
 /// every `docs/PAGE.md` the texts name exists.
 #[test]

@@ -1543,7 +1543,7 @@ fn a_scan_outside_the_asymptotic_regime_warns_and_reports_no_order() {
     let err = stderr(&out);
     assert!(
         err.contains("warning: rk4: 2 of its errors (up to 2.32")
-            && err.contains("are not below the size of the solution (10)"),
+            && err.contains("are not below the size of the solution (30.12)"),
         "{err}"
     );
     let (header, rows) = read_table(&dir.join("out/scan-harmonic-rk4.csv"));

@@ -252,7 +252,7 @@ fn verify_fails_when_the_measurements_contradict_the_file() {
     assert_error(&out, "not the declared 4");
     let out = stormer(&dir, &["verify", file.to_str().unwrap(), "--format", "json"]);
     assert!(serde_json::from_slice::<serde_json::Value>(&out.stdout).is_ok());
-    assert_error(&out, "contradict");
+    assert_error(&out, "the checks disagree with the method's data");
     // the catalog's velocity Verlet, declared 2: no contradiction
     let out = stormer(&dir, &["verify", "velocity_verlet_kdk"]);
     assert!(out.status.success(), "{}", stderr(&out));
