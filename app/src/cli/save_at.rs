@@ -24,8 +24,12 @@ pub fn parse(text: &str) -> Result<Vec<f64>, Error> {
                 )));
             }
             let ratio = (end - start) / step;
-            // END counts when it is a whole number of steps away, to rounding
-            let last = (ratio + 1e-9 * ratio.abs().max(1.0)).floor();
+            // END counts when it is a whole number of steps away, to rounding (the nearest
+            // whole number then, not the floor of the ratio plus the allowance, which
+            // counted a thousand times too many for 1e12 steps)
+            let nearest = ratio.round();
+            let whole = (ratio - nearest).abs() <= 1e-9 * ratio.abs().max(1.0);
+            let last = if whole { nearest } else { ratio.floor() };
             if last + 1.0 > MAX_TIMES {
                 return Err(bad(format!(
                     "'{text}' gives {} output times, more than the {} a run writes (a CSV row \
@@ -37,7 +41,7 @@ pub fn parse(text: &str) -> Result<Vec<f64>, Error> {
             let n = last as usize;
             Ok((0..=n)
                 .map(|i| {
-                    if i == n && (ratio - last).abs() <= 1e-9 * ratio.abs().max(1.0) {
+                    if i == n && whole {
                         end
                     } else {
                         start + step * i as f64
