@@ -1,5 +1,6 @@
 //! Problems of a newcomer's crate, for the build-time measurements of docs/build-shape.md.
-use stormer::{Hamiltonian, SecondOrder};
+use stormer::SecondOrder;
+use stormer::hamiltonian::Hamiltonian;
 
 macro_rules! second_order {
     ($name:ident, $k:expr) => {

@@ -1,4 +1,4 @@
-use stormer::{Driver, Method, Problem};
+use stormer::{Driver, Method, Problem, State};
 use user_crate::{HenonHeiles, Pendulum, Pendulum2, Pendulum3, Pendulum4};
 fn last<P: Problem<Scalar = f64> + 'static>(p: &P, y0: P::State, method: &Method) -> f64 {
     let mut stepper = method.stepper_for(p, &y0, &Default::default()).unwrap();

@@ -1,5 +1,6 @@
 use stormer::catalog::Rk4;
-use stormer::{Driver, ExplicitRk};
+use stormer::Driver;
+use stormer::stepper::ExplicitRk;
 use user_crate::Pendulum;
 fn main() {
     let y0 = [0.5, 0.0];
