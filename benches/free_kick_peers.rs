@@ -36,7 +36,9 @@ use ode_solvers::dop_shared::{IntegrationError, SolverResult, Stats};
 use ode_solvers::{OutputType, System, Vector4};
 use stormer::catalog::{Dop853, DormandPrince5};
 use stormer::driver::Recorder;
-use stormer::{Driver, ExplicitMethod, ExplicitRk, Problem, Tolerances};
+use stormer::method::ExplicitMethod;
+use stormer::stepper::{ExplicitRk, Tolerances};
+use stormer::{Driver, Problem};
 
 const T_END: f64 = 1.2;
 const R: f64 = 0.11;

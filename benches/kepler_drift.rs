@@ -28,7 +28,8 @@ use criterion::{criterion_group, criterion_main, Criterion};
 use stormer::catalog::{StormerVerletDkd, VelocityVerletKdk};
 use stormer::kepler::{KeplerDrift, KeplerLanes, LagrangeCoefficients, LANES};
 use stormer::models::{KeplerCoordinates, KeplerSplit};
-use stormer::{SplittingStepper, Stepper};
+use stormer::stepper::SplittingStepper;
+use stormer::Stepper;
 
 /// The state at pericentre of the conic of eccentricity `e` and semi-major axis 1 (or
 /// pericentre distance 0.5 for e >= 1), tilted out of the reference plane.

@@ -21,8 +21,9 @@ use std::hint::black_box;
 use criterion::{criterion_group, Criterion};
 use stormer::catalog::VelocityVerletKdk;
 use stormer::magnetic::{gyration_coefficients, Charged, GyrationCache, Lorentz};
+use stormer::stepper::SplittingStepper;
 use stormer::stepper::{Boris, BorisRotation};
-use stormer::{SplittingStepper, Stepper};
+use stormer::Stepper;
 
 const STEPS: usize = 1000;
 const H: f64 = 0.01;

@@ -19,10 +19,11 @@ use std::cell::RefCell;
 use std::time::Instant;
 use stormer::catalog::VelocityVerletKdk;
 use stormer::magnetic::{Charged, GyrationCache};
+use stormer::models::SplitMix64;
 use stormer::models::{ChargedParticles, MagneticField, RelativisticParticles};
-use stormer::splitmix64::SplitMix64;
+use stormer::stepper::SplittingStepper;
 use stormer::stepper::{Boris, BorisRotation, RelativisticMethod, RelativisticPush};
-use stormer::{SplittingStepper, Stepper};
+use stormer::Stepper;
 
 type Classical = Charged<ChargedParticles<f64, DVector<f64>>>;
 type Relativistic = RelativisticParticles<f64, DVector<f64>>;

@@ -26,8 +26,10 @@ use criterion::{BenchmarkId, Criterion, Throughput};
 use nalgebra::DVector;
 use star_and_disc::{pairs, star_and_disc};
 use stormer::catalog::VelocityVerletKdk;
+use stormer::hamiltonian::Hamiltonian;
 use stormer::models::NBody;
-use stormer::{Hamiltonian, Real, SplittingStepper, Stepper};
+use stormer::stepper::SplittingStepper;
+use stormer::{Real, Stepper};
 
 /// Bytes held, all threads.
 static HELD: AtomicIsize = AtomicIsize::new(0);
@@ -55,7 +57,7 @@ type Verlet<T> = SplittingStepper<VelocityVerletKdk, DVector<T>>;
 /// The problem, its initial state and a stepper.
 fn setup<T: Real>(n: usize) -> (NBody<T, DVector<T>>, DVector<T>, Verlet<T>) {
     let (q, v, m) = star_and_disc(n);
-    let cast = |x: &[f64]| x.iter().map(|&x| stormer::lit::<T>(x)).collect::<Vec<T>>();
+    let cast = |x: &[f64]| x.iter().map(|&x| stormer::real::lit::<T>(x)).collect::<Vec<T>>();
     let nb = NBody::new(T::one(), &cast(&m), 3).unwrap();
     let mut y = DVector::zeros(6 * n);
     nb.set_state(&cast(&q), &cast(&v), &mut y).unwrap();
@@ -74,7 +76,7 @@ fn criterion_steps<T: Real>(c: &mut Criterion, precision: &str) {
         group.sample_size(10);
         for n in SIZES {
             let (nb, mut y, mut st) = setup::<T>(n);
-            let dt = stormer::lit::<T>(1e-3);
+            let dt = stormer::real::lit::<T>(1e-3);
             group.throughput(Throughput::Elements(pairs(n, n) as u64));
             group.bench_with_input(BenchmarkId::from_parameter(n), &n, |b, _| {
                 pool.install(|| b.iter(|| st.step_in_place(&nb, T::zero(), black_box(dt), &mut y).unwrap()))
@@ -87,7 +89,7 @@ fn criterion_steps<T: Real>(c: &mut Criterion, precision: &str) {
 /// ns per step on `pool`: the best of `rounds` timings of `steps` steps.
 fn ns_per_step<T: Real>(pool: &rayon::ThreadPool, n: usize, steps: usize) -> f64 {
     let (nb, mut y, mut st) = setup::<T>(n);
-    let dt = stormer::lit::<T>(1e-3);
+    let dt = stormer::real::lit::<T>(1e-3);
     pool.install(|| {
         let start = Instant::now();
         for _ in 0..steps {

@@ -5,7 +5,7 @@
 //! so the trajectories are bitwise equal; this is asserted once before any timing. The
 //! run-time tableau stepper (same operations, loops instead of unrolled code) is measured
 //! beside them. After criterion's report, an interleaved min/median timing prints the
-//! ratios (PERFORMANCE.md: at least 7 repetitions, interleaved).
+//! ratios (docs/anchors.md: at least 7 repetitions, interleaved).
 //!
 //! Run: `cargo bench --bench rk4_pendulum`
 
@@ -17,7 +17,10 @@ mod interleaved;
 use std::hint::black_box;
 
 use criterion::{criterion_group, Criterion};
-use stormer::{catalog::Rk4, registry, ExplicitRk, ImplicitOptions, Method, Problem, RuntimeRk, Stepper, Tableau};
+use stormer::catalog::Rk4;
+use stormer::method::Tableau;
+use stormer::stepper::{ExplicitRk, ImplicitOptions, RuntimeRk};
+use stormer::{catalog, Method, Problem, Stepper};
 
 const STEPS: usize = 1000;
 const H: f64 = 0.01;
@@ -80,7 +83,7 @@ fn runtime_tableau(tableau: &Tableau, steps: usize, h: f64, y0: [f64; 2]) -> [f6
 }
 
 fn rk4_tableau() -> Tableau {
-    let data = registry::find("rk4").expect("rk4 is in the catalog");
+    let data = catalog::find("rk4").expect("rk4 is in the catalog");
     Tableau::from_data(data).expect("the catalog's rk4 is valid")
 }
 

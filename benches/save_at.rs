@@ -18,7 +18,9 @@ use criterion::{criterion_group, Criterion};
 use problems::Kepler;
 use std::hint::black_box;
 use stormer::catalog::{Dop853, DormandPrince5};
-use stormer::{Driver, ExplicitMethod, ExplicitRk, Tolerances};
+use stormer::method::ExplicitMethod;
+use stormer::stepper::{ExplicitRk, Tolerances};
+use stormer::Driver;
 
 /// Pericentre of the e = 0.6 orbit.
 const Y0: [f64; 4] = [0.4, 0.0, 0.0, 2.0];

@@ -18,7 +18,8 @@ use star_and_disc::{pairs, star_and_disc};
 use std::time::Instant;
 use stormer::catalog::VelocityVerletKdk;
 use stormer::models::NBody;
-use stormer::{Real, SplittingStepper, Stepper};
+use stormer::stepper::SplittingStepper;
+use stormer::{Real, Stepper};
 
 fn usage() -> ! {
     eprintln!("usage: nbody_timing time N [--threads T] [--f32] [--steps S] [--reps R] [--active M] | state N");
@@ -28,14 +29,14 @@ fn usage() -> ! {
 /// Best ns per step over `reps` runs of `steps` Verlet steps from the initial values.
 fn best<T: Real>(n: usize, active: usize, steps: usize, reps: usize) -> f64 {
     let (q, v, m) = star_and_disc(n);
-    let cast = |x: &[f64]| x.iter().map(|&x| stormer::lit::<T>(x)).collect::<Vec<T>>();
+    let cast = |x: &[f64]| x.iter().map(|&x| stormer::real::lit::<T>(x)).collect::<Vec<T>>();
     let nb = NBody::<T, DVector<T>>::new(T::one(), &cast(&m), 3)
         .unwrap()
         .with_active(active)
         .unwrap();
     let mut y0 = DVector::zeros(6 * n);
     nb.set_state(&cast(&q), &cast(&v), &mut y0).unwrap();
-    let dt = stormer::lit::<T>(1e-3);
+    let dt = stormer::real::lit::<T>(1e-3);
     let mut best = f64::INFINITY;
     for _ in 0..reps {
         let mut y = y0.clone();

@@ -7,8 +7,8 @@
 //! cargo run --release --example verify_catalog -- rk4     # some methods
 //! ```
 
-use stormer::order::stability::Interval;
-use stormer::registry;
+use stormer::catalog;
+use stormer::verify::conditions::stability::Interval;
 use stormer::verify::report;
 use stormer::Method;
 
@@ -16,7 +16,7 @@ fn main() -> Result<(), stormer::Error> {
     let only: Vec<String> = std::env::args().skip(1).collect();
     println!("| method | family | order | measured | on | embedded | stability | symplectic | reversible |");
     println!("|---|---|---|---|---|---|---|---|---|");
-    for name in registry::names() {
+    for name in catalog::names() {
         if !only.is_empty() && !only.iter().any(|o| o == name) {
             continue;
         }

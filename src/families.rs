@@ -7,18 +7,20 @@
 //! Euler-Cromer) needs a Lorentz-force problem ([`Charged`]), a relativistic pusher (Boris,
 //! Vay, Higuera-Cary) relativistic particles ([`RelativisticParticles`]). A problem class says which
 //! through [`Problem::families`](crate::Problem::families): every [`crate::SecondOrder`]
-//! problem admits every splitting, every [`crate::Hamiltonian`] the general ones, a
+//! problem admits every splitting, every [`crate::hamiltonian::Hamiltonian`] the general ones, a
 //! [`Charged`] problem the general ones and the pushers when its field is uniform and the
 //! pushers only when it is not; any other problem only Runge-Kutta methods. The builder
 //! ([`Method::stepper_for`](crate::Method::stepper_for)) reads the answer, so what a problem
 //! admits is said in one place, with the sentence a user sees when a method is refused.
 
-use crate::flows::{QuadraticKinetic, Splittable};
+use crate::flows::{quadratic_kinetic_refused, QuadraticKinetic, Splittable};
 use crate::magnetic::{Charged, Lorentz};
+use crate::method::Splitting;
 use crate::method::SplittingData;
 use crate::models::RelativisticParticles;
+use crate::stepper::RuntimeSplitting;
 use crate::stepper::{ParticleMethod, RelativisticMethod};
-use crate::{Error, Problem, Real, RuntimeSplitting, Splitting, State, Stepper};
+use crate::{Error, Problem, Real, State, Stepper};
 
 /// A splitting or composition to build: compiled into the crate (its generated stepper is
 /// used) or held in memory (read from a file, or built with [`Splitting::splitting`]).
@@ -60,7 +62,8 @@ type BuildResult<P> = Result<Box<dyn Stepper<P>>, Error>;
 /// ones it refuses.
 ///
 /// ```
-/// use stormer::{Families, Method, Problem, SecondOrder};
+/// use stormer::{Method, Problem, SecondOrder};
+/// use stormer::method::Families;
 ///
 /// /// x'' = -x - 0.1 x': friction, so no drift and kick flows.
 /// struct Damped;
@@ -80,8 +83,9 @@ type BuildResult<P> = Result<Box<dyn Stepper<P>>, Error>;
 /// ```
 pub struct Families<P: Problem> {
     splitting: Result<SplittingBuilder<P>, String>,
-    /// `Err(why)` when Runge-Kutta-Nystrom methods are refused.
-    quadratic_kinetic: Result<(), &'static str>,
+    /// `Err(why)` when Runge-Kutta-Nystrom methods are refused (`None`: the problem does
+    /// not declare a quadratic kinetic energy, [`quadratic_kinetic_refused`] says why).
+    quadratic_kinetic: Result<(), Option<&'static str>>,
     particle: Result<ParticleBuilder<P>, String>,
     relativistic: Result<RelativisticBuilder<P>, String>,
 }
@@ -92,7 +96,7 @@ impl<P: Problem> Families<P> {
     pub fn runge_kutta_only(why: impl Into<String>) -> Self {
         Families {
             splitting: Err(why.into()),
-            quadratic_kinetic: Err(NOT_QUADRATIC),
+            quadratic_kinetic: Err(None),
             particle: Err(NOT_CHARGED.into()),
             relativistic: Err(NOT_RELATIVISTIC.into()),
         }
@@ -114,7 +118,7 @@ impl<P: Problem> Families<P> {
     {
         Families {
             splitting: Ok(general::<P>),
-            quadratic_kinetic: Err(NOT_QUADRATIC),
+            quadratic_kinetic: Err(None),
             particle: Err(NOT_CHARGED.into()),
             relativistic: Err(NOT_RELATIVISTIC.into()),
         }
@@ -154,9 +158,12 @@ impl<P: Problem> Families<P> {
             reason: format!("{why}; use a Runge-Kutta method instead, such as rk4 or dop853"),
         })?;
         if let (true, Err(why)) = (method.requires_quadratic_kinetic(), self.quadratic_kinetic) {
-            return Err(Error::Unsupported {
-                name: method.name().to_string(),
-                reason: why.into(),
+            return Err(match why {
+                None => quadratic_kinetic_refused(method.name()),
+                Some(why) => Error::Unsupported {
+                    name: method.name().to_string(),
+                    reason: why.into(),
+                },
             });
         }
         Ok(build)
@@ -182,10 +189,6 @@ fn admitted<B: Copy>(family: &Result<B, String>, name: &str) -> Result<B, Error>
     })
 }
 
-const NOT_QUADRATIC: &str = "it reaches its order only when the kinetic energy is quadratic in p (a \
-                             Runge-Kutta-Nystrom method), which this problem does not declare; use a general \
-                             splitting or composition";
-
 const NOT_CHARGED: &str = "it is a charged-particle method, for Lorentz-force problems (charged particles in a \
                            magnetic field), not for this problem; use a Runge-Kutta method or a splitting";
 
@@ -205,7 +208,7 @@ impl<T: Real, S: State<Scalar = T> + 'static> Families<RelativisticParticles<T, 
                             higuera_cary"
                     .into(),
             ),
-            quadratic_kinetic: Err(NOT_QUADRATIC),
+            quadratic_kinetic: Err(None),
             particle: Err(
                 "it is a non-relativistic pusher (state q, v, speeds unbounded), and the particles of \
                            this scene are relativistic (state x, u = gamma v, speed of light c); use \
@@ -235,13 +238,14 @@ impl<L: Lorentz + 'static> Families<Charged<L>> {
             };
         Families {
             splitting,
-            quadratic_kinetic: Err(
+            // the general rule's sentence, with why the rotation is not a free flight
+            quadratic_kinetic: Err(Some(
                 "it is a Runge-Kutta-Nystrom method, which reaches its order only when the kinetic energy is \
                  quadratic in p and the drift a free flight, and the drift here is the rotation by the magnetic \
                  field (or by the Coriolis force of a rotating frame); use a general splitting or composition \
                  (velocity_verlet_kdk is the magnetic Verlet, triple_jump4 and kahan_li6 compose it), boris, or a \
                  Runge-Kutta method",
-            ),
+            )),
             particle: Ok(|method, y0| method.stepper::<L>(y0)),
             relativistic: Err(
                 "it is a relativistic pusher (state x, u = gamma v, with a speed of light c), and the \

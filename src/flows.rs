@@ -15,7 +15,7 @@ use crate::{Problem, Real};
 
 /// A problem with exact drift and kick sub-flows on a state `(q, p)` of length `2n`.
 ///
-/// Implemented for every [`crate::Hamiltonian`] (and so every [`crate::SecondOrder`]
+/// Implemented for every [`crate::hamiltonian::Hamiltonian`] (and so every [`crate::SecondOrder`]
 /// problem); implement it directly for a problem whose drift is not `q += tau dT/dp`.
 pub trait Splittable: Problem {
     /// Memory a stepper keeps for the sub-flows between calls, e.g. the rotation of a
@@ -46,11 +46,12 @@ pub trait Splittable: Problem {
     /// comes from increments computed without forming the new state. The provided form
     /// does form it (the drift applied to a copy, minus the start), so the rounding of the
     /// new state stays in the increment: a problem that keeps this default gets no
-    /// compensation benefit for its drift. Every [`crate::Hamiltonian`] and
+    /// compensation benefit for its drift. Every [`crate::hamiltonian::Hamiltonian`] and
     /// [`crate::magnetic::Charged`] model has an exact increment form.
     ///
     /// ```
-    /// use stormer::{Hamiltonian, Splittable};
+    /// use stormer::flows::Splittable;
+    /// use stormer::hamiltonian::Hamiltonian;
     /// struct Free;
     /// impl Hamiltonian for Free {
     ///     type Scalar = f64;
@@ -111,7 +112,7 @@ pub fn kick<T: Real>(tau: T, f: &[T], p: &mut [T]) {
 /// flows satisfy `[B, [B, [B, A]]] = 0`), the condition under which the methods built for
 /// Runge-Kutta-Nystrom problems reach their order.
 ///
-/// Implemented for every [`crate::SecondOrder`] problem; a [`crate::Hamiltonian`] with
+/// Implemented for every [`crate::SecondOrder`] problem; a [`crate::hamiltonian::Hamiltonian`] with
 /// `T = |p|^2 / (2m)` (or any `p^T M^-1 p / 2`) opts in with an empty impl. A method
 /// with `requires_quadratic_kinetic` only accepts problems with this trait.
 #[diagnostic::on_unimplemented(
@@ -121,8 +122,20 @@ pub fn kick<T: Real>(tau: T, f: &[T], p: &mut [T]) {
 )]
 pub trait QuadraticKinetic: Splittable {}
 
+/// The refusal of a Runge-Kutta-Nystrom method (`requires_quadratic_kinetic`) on a problem
+/// that does not declare [`QuadraticKinetic`]: the one place the rule is said in words
+/// (the trait says it to the compiler, [`Admits`] to the generic steppers).
+pub(crate) fn quadratic_kinetic_refused(method: &str) -> crate::Error {
+    crate::Error::Unsupported {
+        name: method.to_string(),
+        reason: "it reaches its order only when the kinetic energy is quadratic in p (a Runge-Kutta-Nystrom \
+                 method), which this problem does not declare; use a general splitting or composition"
+            .into(),
+    }
+}
+
 /// The class of problems a splitting method is valid for (a type-level flag of
-/// [`crate::SplittingMethod`]).
+/// [`crate::method::SplittingMethod`]).
 pub trait ProblemClass: Copy + Default + core::fmt::Debug + Send + Sync + 'static {}
 
 /// Valid for every splittable problem.

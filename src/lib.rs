@@ -11,39 +11,29 @@ mod error;
 mod families;
 pub mod flows;
 pub mod hamiltonian;
-pub mod input;
 pub mod kepler;
 pub mod magnetic;
 pub mod method;
 pub mod models;
 mod problem;
-mod real;
-pub mod registry;
-pub mod splitmix64;
+pub mod real;
+mod registry;
 mod state;
 pub mod stepper;
+pub mod text;
 pub mod verify;
 
-pub use driver::{
-    hermite, hermite5, hermite_order, Crossing, Driver, EventHit, Interrupted, Solution, Stats, StepControl, StopEvent,
-};
+// The front door: what the README's first examples name. Everything else lives in its
+// module (`stepper::ExplicitRk`, `driver::Solution`, ...) and the everyday part of it in
+// the prelude.
+pub use driver::Driver;
 pub use error::Error;
-pub use families::{Families, SplittingSource};
-
-/// One-line messages for the errors of text files (method files here, scene files in the
-/// application): where in the file, and what.
-pub mod diagnostics {
-    pub use crate::error::{line_column, number, one_line, toml_message, Number};
-}
-pub use flows::{Admits, QuadraticKinetic, Splittable};
-pub use hamiltonian::{Hamiltonian, SecondOrder};
-pub use method::{
-    AlgebraicOrders, ButcherMethod, ExplicitMethod, Flags, Method, MethodInfo, Splitting, SplittingData,
-    SplittingMethod, Tableau, TableauData,
-};
+pub use hamiltonian::SecondOrder;
+pub use method::Method;
 pub use problem::Problem;
-pub use real::{lit, to_f64, Real};
+pub use real::Real;
 pub use state::State;
+pub use stepper::Stepper;
 
 /// The nalgebra the library is built with: use it for dynamic states (`DVector`) and the
 /// user's problems, so that its version always matches.
@@ -53,10 +43,6 @@ pub use nalgebra;
 #[cfg(doctest)]
 #[doc = include_str!("../README.md")]
 pub struct ReadmeDoctests;
-pub use stepper::{
-    ExplicitRk, ImplicitOptions, ImplicitRk, ImplicitSolver, RuntimeRk, RuntimeSplitting, SplittingStepper, StepRun,
-    Stepper, Tolerances,
-};
 
 /// Declares a Butcher tableau, checks it at compile time and generates its stepper.
 ///
@@ -73,9 +59,6 @@ pub use stormer_macros::splitting;
 /// generates its unrolled step. See `docs/define-your-own-scheme.md`.
 #[cfg(feature = "macros")]
 pub use stormer_macros::composition;
-
-/// The order-condition algebra shared with the macros (re-exported for `verify`-style use).
-pub use stormer_order as order;
 
 /// The user guide (the pages of `docs/`), compiled here so that its examples run as tests.
 pub mod guide {
@@ -95,22 +78,25 @@ pub mod guide {
 
 /// The everyday items in one import.
 pub mod prelude {
-    pub use crate::{
-        Driver, Error, ExplicitRk, Hamiltonian, ImplicitOptions, ImplicitRk, Method, Problem, Real, RuntimeRk,
-        SecondOrder, Solution, State, Stepper, Tableau, Tolerances,
-    };
+    pub use crate::driver::{Driver, Solution};
+    pub use crate::hamiltonian::{Hamiltonian, SecondOrder};
+    pub use crate::method::{Method, Splitting, Tableau};
+    pub use crate::real::{lit, Real};
+    pub use crate::stepper::{ExplicitRk, ImplicitOptions, ImplicitRk, RuntimeRk, Stepper, Tolerances};
+    pub use crate::{Error, Problem, State};
 }
 
 /// Items the macros' expansions use; not part of the public API.
 #[doc(hidden)]
 pub mod __private {
     pub use crate::flows::{General, QuadraticOnly, Splittable};
+    pub use crate::method::Tableau;
     pub use crate::method::{
         ButcherMethod, DenseData, ExplicitMethod, Flags, SplittingData, SplittingMethod, TableauData,
     };
     pub use crate::real::lit;
     pub use crate::stepper::{ExplicitRk, ImplicitOptions, ImplicitRk, Stepper};
-    pub use crate::{Problem, Real, State, Tableau};
+    pub use crate::{Problem, Real, State};
     pub use core::option::Option::{None, Some};
     pub use std::boxed::Box;
 

@@ -1,6 +1,7 @@
 //! Problems of the form `y' = f(t, y)`.
 
-use crate::{Families, Real, State};
+use crate::method::Families;
+use crate::{Real, State};
 
 /// A first-order system `y' = f(t, y)`.
 ///
@@ -42,7 +43,7 @@ pub trait Problem {
 
     /// The families of methods this problem admits besides Runge-Kutta (splittings,
     /// charged-particle pushers), declared once per problem class ([`Families`]). The
-    /// default admits Runge-Kutta methods only; [`crate::Hamiltonian`],
+    /// default admits Runge-Kutta methods only; [`crate::hamiltonian::Hamiltonian`],
     /// [`crate::SecondOrder`] and [`crate::magnetic::Charged`] problems declare theirs.
     fn families(&self) -> Families<Self>
     where

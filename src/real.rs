@@ -8,7 +8,7 @@ use nalgebra::RealField;
 /// A blanket alias, so it never needs implementing by hand:
 ///
 /// ```
-/// fn half<T: stormer::Real>(x: T) -> T { x * stormer::lit::<T>(0.5) }
+/// fn half<T: stormer::Real>(x: T) -> T { x * stormer::real::lit::<T>(0.5) }
 /// assert_eq!(half(3.0f32), 1.5);
 /// ```
 pub trait Real: RealField + Copy {}

@@ -3,8 +3,10 @@
 //! whose [`Method::stepper_for`] builds the stepper.
 
 use crate::catalog;
+use crate::method::Tableau;
 use crate::method::{ButcherMethod, SplittingData, SplittingMethod, StepperResult, TableauData};
-use crate::{Error, ImplicitOptions, ImplicitRk, Method, Problem, RuntimeRk, Tableau};
+use crate::stepper::{ImplicitOptions, ImplicitRk, RuntimeRk};
+use crate::{Error, Method, Problem};
 
 macro_rules! data_list {
     ($($method:ident),* $(,)?) => {
@@ -159,10 +161,10 @@ pub(crate) fn lookup(name: &str) -> Result<Method, Error> {
 /// error that says so.
 ///
 /// ```
-/// let rk4 = stormer::registry::find("rk4").unwrap();
+/// let rk4 = stormer::catalog::find("rk4").unwrap();
 /// assert_eq!(rk4.order, 4);
-/// assert_eq!(stormer::registry::find("DOP853").unwrap().name, "dop853");
-/// assert!(stormer::registry::find("rk-5").unwrap_err().to_string().contains("did you mean"));
+/// assert_eq!(stormer::catalog::find("DOP853").unwrap().name, "dop853");
+/// assert!(stormer::catalog::find("rk-5").unwrap_err().to_string().contains("did you mean"));
 /// ```
 pub fn find(name: &str) -> Result<&'static TableauData, Error> {
     match lookup(name)? {
@@ -227,9 +229,9 @@ where
 /// As a tableau: `c = [0, 1]`, `a = [[0, 0], [alpha, 1 - alpha]]`, `b = [alpha, 1 - alpha]`.
 ///
 /// ```
-/// let t = stormer::registry::theta(0.5).unwrap();
+/// let t = stormer::catalog::theta(0.5).unwrap();
 /// assert_eq!(t.order(), 2);
-/// assert!(stormer::registry::theta(f64::NAN).is_err());
+/// assert!(stormer::catalog::theta(f64::NAN).is_err());
 /// ```
 pub fn theta(alpha: f64) -> Result<Tableau, Error> {
     if !(alpha.is_finite() && (0.0..=1.0).contains(&alpha)) {

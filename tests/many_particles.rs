@@ -8,8 +8,8 @@ mod counting_alloc;
 use counting_alloc::allocations;
 use nalgebra::DVector;
 use stormer::magnetic::{Charged, Lorentz};
+use stormer::models::SplitMix64;
 use stormer::models::{ChargedParticles, MagneticField, RelativisticParticles};
-use stormer::splitmix64::SplitMix64;
 use stormer::stepper::{Boris, BorisRotation, RelativisticPush, PARALLEL_FROM, RELATIVISTIC_METHODS};
 use stormer::Stepper;
 

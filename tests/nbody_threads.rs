@@ -8,8 +8,10 @@ mod star_and_disc;
 use nalgebra::DVector;
 use star_and_disc::star_and_disc;
 use stormer::catalog::VelocityVerletKdk;
+use stormer::hamiltonian::Hamiltonian;
 use stormer::models::NBody;
-use stormer::{Hamiltonian, SplittingStepper, Stepper};
+use stormer::stepper::SplittingStepper;
+use stormer::Stepper;
 
 /// The forces by the definition, in `f64` whatever the problem's scalar: body `l` pulls
 /// body `k` with `G m_k m_l (q_l - q_k) / |q_l - q_k|^3` when `l < active`; and per body the

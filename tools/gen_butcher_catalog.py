@@ -302,7 +302,9 @@ HEADER = generated_header("gen_butcher_catalog.py", "data/butcher.toml")
 
 TRANSCRIBED = """\
 //! Coefficients are transcribed from the project's `data/butcher.toml` by
-//! `tools/gen_butcher_catalog.py` and checked at compile time by the `tableau!` macro.
+//! `tools/gen_butcher_catalog.py` and checked at compile time by the `tableau!` macro. The
+//! same methods as data, by name: [`BUTCHER`], [`SPLITTING`], [`find`], [`names`] and the
+//! names other libraries give them ([`ALIASES`]).
 """
 
 MOD_RS = """\
@@ -322,6 +324,9 @@ pub use explicit::*;
 pub use implicit::*;
 pub use splitting::*;
 pub(crate) use splitting_list::for_each_splitting_method;
+
+// The same catalog as data lists, by name (src/registry.rs).
+pub use crate::registry::{aliases_of, find, find_splitting, names, normalize, theta, ALIASES, BUTCHER, SPLITTING};
 
 /// Invokes `$callback! {{ Euler, Midpoint, ... }}` with the type names of all {count} Butcher
 /// tableaus above, in catalog order (used to build the method registry).

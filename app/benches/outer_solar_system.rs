@@ -27,7 +27,7 @@
 //! - **hand_loop_nbody_force**: the hand-written step calling `NBody`'s force and velocity
 //!   (the problem's generality without the stepper);
 //! - **file_scene**: the generated stepper on the scene read from `scenes/`, a
-//!   `DVector<f64>` state (PERFORMANCE.md's "cost of generality", target 1.3x).
+//!   `DVector<f64>` state (docs/anchors.md's "cost of generality", target 1.3x).
 //!
 //! Before any timing the bench asserts that all of them (and the boxed stepper of the
 //! registry, the CLI's path) give trajectories bitwise equal to the hand-written loop over
@@ -49,9 +49,12 @@ use interleaved::Kernel;
 use nalgebra::DVector;
 use stormer::catalog::{TripleJump4, VelocityVerletKdk};
 use stormer::driver::Recorder;
+use stormer::hamiltonian::Hamiltonian;
+use stormer::method::SplittingMethod;
 use stormer::models::{Bodies, NBody};
-use stormer::order::splitting::Flow;
-use stormer::{Driver, Hamiltonian, Method, SplittingMethod, SplittingStepper, Stepper};
+use stormer::stepper::SplittingStepper;
+use stormer::verify::conditions::splitting::Flow;
+use stormer::{Driver, Method, Stepper};
 use stormer_app::scenes::{self, AnyScene};
 
 const STEPS: usize = 1000;

@@ -42,8 +42,10 @@ use stormer::catalog::{
     StormerVerletDkd, TripleJump4, VelocityVerletKdk, Verner9,
 };
 use stormer::driver::Recorder;
+use stormer::method::{ExplicitMethod, SplittingMethod};
 use stormer::models::{KeplerCoordinates, KeplerSplit, NBody};
-use stormer::{Driver, ExplicitMethod, ExplicitRk, Problem, SplittingMethod, SplittingStepper, Stepper, Tolerances};
+use stormer::stepper::{ExplicitRk, SplittingStepper, Tolerances};
+use stormer::{Driver, Problem, Stepper};
 
 type Nb = NBody<f64, [f64; 24]>;
 type Split = KeplerSplit<f64, [f64; 24]>;

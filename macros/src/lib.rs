@@ -58,7 +58,7 @@ fn declare<I: syn::parse::Parse, M>(
 ///
 /// The expansion is a zero-sized `#[derive(Clone, Copy, Debug, Default, PartialEq, Eq,
 /// Hash)]` struct carrying the outer attributes given, implementing
-/// `stormer::ButcherMethod` and, for an explicit tableau, `stormer::ExplicitMethod` with a
+/// `stormer::method::ButcherMethod` and, for an explicit tableau, `stormer::method::ExplicitMethod` with a
 /// step unrolled over the nonzero coefficients only.
 #[proc_macro]
 pub fn tableau(input: TokenStream) -> TokenStream {
@@ -96,7 +96,7 @@ pub fn tableau(input: TokenStream) -> TokenStream {
 /// eps B`, local error `O(eps h^(p_1+1) + eps^2 h^(p_2+1) + ..)`) checks, in the same class,
 /// every bracket with `k` letters `B` up to order `p_k`. Symmetry and FSAL are derived from
 /// the merged word. The expansion is a zero-sized struct
-/// implementing `stormer::SplittingMethod` whose step is the merged word, unrolled.
+/// implementing `stormer::method::SplittingMethod` whose step is the merged word, unrolled.
 #[proc_macro]
 pub fn splitting(input: TokenStream) -> TokenStream {
     let validate = |input| splitting::valid::validate(input, splitting::Family::Splitting);

@@ -2,7 +2,9 @@
 //! kernel's, its energy and outputs those of the corrected states.
 
 use super::{CorrectorData, Kernel, Processor};
-use crate::{Error, Families, Method, Problem, Splittable};
+use crate::flows::Splittable;
+use crate::method::Families;
+use crate::{Error, Method, Problem};
 
 /// `problem` run by a second-order Wisdom-Holman kernel in the mapping coordinates of a
 /// symplectic corrector ([`crate::corrector`]).

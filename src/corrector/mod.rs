@@ -6,7 +6,7 @@
 //! The kernel runs in "mapping coordinates": the corrector's inverse is applied once to the
 //! initial state, and the corrector to each state the run outputs ([`Corrected`]). The
 //! corrector is a product of drifts and kicks with small coefficients
-//! ([`Processor`]), so it applies to any [`crate::Splittable`] problem whose drift is an
+//! ([`Processor`]), so it applies to any [`crate::flows::Splittable`] problem whose drift is an
 //! exact flow; the Kepler split of a planetary system ([`crate::models::KeplerSplit`] in
 //! Jacobi coordinates) is the one that needs it. The coefficients are data:
 //! `data/correctors.toml`, transcribed into the crate by `tools/gen_corrector_catalog.py`.
@@ -14,7 +14,8 @@
 //! ```
 //! use stormer::corrector::{Corrected, CorrectorData};
 //! use stormer::models::{KeplerCoordinates, KeplerSplit, NBody};
-//! use stormer::{Driver, ImplicitOptions, Method, Problem};
+//! use stormer::{Driver, Method, Problem};
+//! use stormer::stepper::ImplicitOptions;
 //!
 //! // the Sun, Jupiter and Saturn on circular orbits in the plane; G = 1
 //! let bodies = NBody::<f64, [f64; 12]>::new(1.0, &[1.0, 1e-3, 3e-4], 2).unwrap();

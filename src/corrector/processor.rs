@@ -2,8 +2,10 @@
 //! loop (a symplectic corrector and its inverse).
 
 use super::CorrectorData;
+use crate::flows::Splittable;
 use crate::hamiltonian::halves_mut;
-use crate::{lit, Error, Method, Real, Splittable, State};
+use crate::real::lit;
+use crate::{Error, Method, Real, State};
 
 /// One of the two sub-flows of a [`Splittable`] problem.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

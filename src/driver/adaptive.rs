@@ -1,9 +1,11 @@
 //! The adaptive step-size control: Hairer's PI controller and initial step.
 
 use super::Stats;
+use crate::real::lit;
 #[allow(unused_imports)]
 use crate::real::ops::*;
-use crate::{lit, Problem, Real, State, Tolerances};
+use crate::stepper::Tolerances;
+use crate::{Problem, Real, State};
 
 /// Safety factor on the predicted step (Hairer: 0.9).
 const SAFETY: f64 = 0.9;

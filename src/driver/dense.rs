@@ -14,10 +14,11 @@
 
 use super::events::{Event, EventHit};
 use super::{Driver, Recorder, Stats, StopEvent};
-use crate::error::number;
 #[allow(unused_imports)]
 use crate::real::ops::*;
-use crate::{lit, to_f64, Error, Problem, Real, State, Stepper};
+use crate::real::{lit, to_f64};
+use crate::text::number;
+use crate::{Error, Problem, Real, State, Stepper};
 
 /// The order of the driver's continuous extension for a method of order `method_order`
 /// without its own: 3 (cubic Hermite) up to order 3, else 5 (quintic Hermite: a fourth-order

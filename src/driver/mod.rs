@@ -18,10 +18,12 @@ pub use events::{Crossing, Event, EventHit};
 pub use record::{Interrupted, Recorder, Solution, Stats, StopEvent};
 pub(crate) use run::{steps_in_place, steps_unchecked};
 
-use crate::error::number;
 #[allow(unused_imports)]
 use crate::real::ops::*;
-use crate::{lit, to_f64, Error, Problem, Real, State, Stepper, Tolerances};
+use crate::real::{lit, to_f64};
+use crate::stepper::Tolerances;
+use crate::text::number;
+use crate::{Error, Problem, Real, State, Stepper};
 use core::sync::atomic::{AtomicBool, Ordering};
 
 /// The fixed-step loop in place reads the cancel flag at least once every this many steps,
@@ -57,7 +59,9 @@ pub type StopFn<'a, T, S> = Box<dyn Fn(T, &S) -> T + 'a>;
 /// Configuration of a run. Build it with [`Driver::fixed`] or [`Driver::adaptive`].
 ///
 /// ```
-/// use stormer::{catalog::Rk4, Driver, ExplicitRk, Problem};
+/// use stormer::{Driver, Problem};
+/// use stormer::catalog::Rk4;
+/// use stormer::stepper::ExplicitRk;
 /// struct Fall;
 /// impl Problem for Fall {
 ///     type Scalar = f64;
@@ -128,7 +132,9 @@ impl<'a, T: Real, S: State<Scalar = T>> Driver<'a, T, S> {
     /// with its event as the last record.
     ///
     /// ```
-    /// use stormer::{catalog::Rk4, Driver, ExplicitRk, Problem};
+    /// use stormer::{Driver, Problem};
+    /// use stormer::catalog::Rk4;
+    /// use stormer::stepper::ExplicitRk;
     /// struct Decay;
     /// impl Problem for Decay {
     ///     type Scalar = f64;
@@ -157,7 +163,10 @@ impl<'a, T: Real, S: State<Scalar = T>> Driver<'a, T, S> {
     /// out in time order. (`stop_when` locates its crossing by stepping again instead.)
     ///
     /// ```
-    /// use stormer::{catalog::DormandPrince5, Crossing, Driver, ExplicitRk, Problem, Tolerances};
+    /// use stormer::{Driver, Problem};
+    /// use stormer::catalog::DormandPrince5;
+    /// use stormer::driver::Crossing;
+    /// use stormer::stepper::{ExplicitRk, Tolerances};
     /// struct Fall;
     /// impl Problem for Fall {
     ///     type Scalar = f64;
@@ -228,7 +237,9 @@ impl<'a, T: Real, S: State<Scalar = T>> Driver<'a, T, S> {
     ///
     /// ```
     /// use std::sync::atomic::AtomicBool;
-    /// use stormer::{catalog::Rk4, Driver, Error, ExplicitRk, Problem};
+    /// use stormer::{Driver, Error, Problem};
+    /// use stormer::catalog::Rk4;
+    /// use stormer::stepper::ExplicitRk;
     /// struct Decay;
     /// impl Problem for Decay {
     ///     type Scalar = f64;

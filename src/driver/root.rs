@@ -9,9 +9,10 @@
 //! inside that step crosses where it comes back; one that leaves zero straight towards the
 //! side where the step ends does not cross in it.
 
+use crate::real::lit;
 #[allow(unused_imports)]
 use crate::real::ops::*;
-use crate::{lit, Real};
+use crate::Real;
 
 /// Iterations of the root finder; each halves the bracket at worst.
 const MAX_ITERATIONS: usize = 100;
@@ -75,7 +76,9 @@ pub(super) fn crossing<T: Real, E>(
 mod tests {
     use super::crossing;
     use crate::catalog::{DormandPrince5, Rk4};
-    use crate::{Crossing, Driver, ExplicitRk, Problem};
+    use crate::driver::Crossing;
+    use crate::stepper::ExplicitRk;
+    use crate::{Driver, Problem};
     use core::convert::Infallible;
 
     fn find(g0: f64, g1: f64, g: impl Fn(f64) -> f64) -> Option<f64> {

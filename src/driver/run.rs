@@ -7,8 +7,10 @@ use super::dense::Inside;
 use super::{Between, Driver, Recorder, Stats, StopEvent, CANCEL_EVERY};
 #[allow(unused_imports)]
 use crate::real::ops::*;
+use crate::real::{lit, to_f64};
 use crate::stepper::StepRun;
-use crate::{lit, to_f64, Error, Problem, Real, State, Stepper, Tolerances};
+use crate::stepper::Tolerances;
+use crate::{Error, Problem, Real, State, Stepper};
 use std::time::{Duration, Instant};
 
 /// A run of `driver` on problem `p` with `stepper`, recording into `out`.
@@ -35,7 +37,7 @@ where
         if !(h.is_finite() && h != T::zero()) {
             return Err(Error::invalid(
                 "step size",
-                format!("must be finite and non-zero, got {}", crate::error::number(to_f64(h))),
+                format!("must be finite and non-zero, got {}", crate::text::number(to_f64(h))),
             ));
         }
         let h = if span < T::zero() { -h.abs() } else { h.abs() };
@@ -245,7 +247,7 @@ where
             Some(h) => {
                 return Err(Error::invalid(
                     "initial step",
-                    format!("must be finite and non-zero, got {}", crate::error::number(to_f64(h))),
+                    format!("must be finite and non-zero, got {}", crate::text::number(to_f64(h))),
                 ))
             }
             None => initial_step(self.p, t0, y0, tol, self.stepper.info().order, h_max, dir, self.stats),

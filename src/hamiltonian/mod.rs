@@ -5,7 +5,7 @@
 //! `(q, p)`: positions first, momenta second ([`halves`], [`halves_mut`]). Every stepper of
 //! the crate therefore runs on a Hamiltonian problem unchanged (a Hamiltonian is also a
 //! [`Problem`](crate::Problem), `y' = (dT/dp, F)`), and splitting methods reach the two
-//! halves through the sub-flows of [`Splittable`](crate::Splittable).
+//! halves through the sub-flows of [`Splittable`](crate::flows::Splittable).
 
 mod second_order;
 mod separable;

@@ -1,7 +1,9 @@
 //! The second-order form `q'' = F(t, q)`.
 
 use crate::flows::QuadraticKinetic;
-use crate::{Families, Hamiltonian, Real, State};
+use crate::hamiltonian::Hamiltonian;
+use crate::method::Families;
+use crate::{Real, State};
 
 /// A second-order system `q'' = F(t, q)`: a Hamiltonian with unit mass, `p = q'` and a
 /// quadratic kinetic energy, so that every splitting method applies, including those

@@ -2,9 +2,10 @@
 
 use super::{halves, halves_mut};
 use crate::flows::Splittable;
+use crate::method::Families;
 #[allow(unused_imports)]
 use crate::real::ops::*;
-use crate::{Families, Problem, Real, State};
+use crate::{Problem, Real, State};
 
 /// A separable Hamiltonian `H = T(p) + V(q)`, possibly time-dependent through `V`.
 ///
@@ -15,7 +16,7 @@ use crate::{Families, Problem, Real, State};
 /// exact sub-flows `drift: q += tau dT/dp(p)` and `kick: p += tau F(t, q)`.
 ///
 /// ```
-/// use stormer::Hamiltonian;
+/// use stormer::hamiltonian::Hamiltonian;
 /// /// The pendulum: H = p^2/2 - cos q.
 /// struct Pendulum;
 /// impl Hamiltonian for Pendulum {
@@ -64,7 +65,7 @@ pub trait Hamiltonian {
 
     /// The families of methods the problem admits ([`Problem::families`]): every general
     /// splitting and composition. A Hamiltonian whose kinetic energy is quadratic (it
-    /// implements [`crate::QuadraticKinetic`]) returns [`Families::all_splittings`].
+    /// implements [`crate::flows::QuadraticKinetic`]) returns [`Families::all_splittings`].
     fn families(&self) -> Families<Self>
     where
         Self: Sized + 'static,

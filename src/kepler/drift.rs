@@ -1,8 +1,9 @@
 //! The two-body flow about a centre of gravitational parameter `mu`, applied to states.
 
+use crate::real::lit;
 #[allow(unused_imports)]
 use crate::real::ops::*;
-use crate::{lit, Real};
+use crate::Real;
 
 use super::{dot, LagrangeCoefficients};
 

@@ -1,8 +1,10 @@
 //! The Stumpff functions `c0..c3`, for either sign of their argument.
 
+use crate::magnetic::stumpff_series;
+use crate::real::lit;
 #[allow(unused_imports)]
 use crate::real::ops::*;
-use crate::{lit, magnetic::stumpff_series, Real};
+use crate::Real;
 
 /// The most quarterings of the argument: `4^64 > 3e38`, beyond every finite `f32` and
 /// beyond any argument an `f64` solve reaches before its `c_k` overflow.

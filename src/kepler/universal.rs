@@ -20,7 +20,8 @@
 
 #[allow(unused_imports)]
 use crate::real::ops::*;
-use crate::{lit, to_f64, Real};
+use crate::real::{lit, to_f64};
+use crate::Real;
 
 use super::{dot, stumpff, LagrangeCoefficients};
 

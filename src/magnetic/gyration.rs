@@ -3,7 +3,8 @@
 
 #[allow(unused_imports)]
 use crate::real::ops::*;
-use crate::{lit, to_f64, Real};
+use crate::real::{lit, to_f64};
+use crate::Real;
 
 /// Taylor coefficients `(-1)^k / (2k + m)!`, `k = 0..9`, of `sin x / x` (`m = 1`),
 /// `(1 - cos x) / x^2` (`m = 2`) and `(x - sin x) / x^3` (`m = 3`) in powers of `x^2`.

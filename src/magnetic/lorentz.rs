@@ -3,8 +3,9 @@
 use super::gyration::{cross, Gyration, GyrationCache};
 use crate::flows::Splittable;
 use crate::hamiltonian::{halves, halves_mut};
+use crate::method::Families;
 use crate::models::ExternalFields;
-use crate::{Families, Problem, Real, State};
+use crate::{Problem, Real, State};
 
 /// Particles in 3-D moving under `q' = v`, `v' = a(t, q) + omega_k(q) x v` for particle
 /// `k`: a force field `a` (electric field, potential forces between particles, gravity)

@@ -3,8 +3,9 @@
 
 use crate::families::SplittingSource;
 use crate::method::{MethodInfo, Splitting, SplittingData, Tableau, TableauData};
+use crate::stepper::ImplicitOptions;
 use crate::stepper::{ParticleMethod, RelativisticMethod};
-use crate::{registry, Error, ImplicitOptions, Problem, Stepper};
+use crate::{registry, Error, Problem, Stepper};
 use std::path::Path;
 use stormer_order::stability::{butcher_interval, splitting_interval, Interval};
 
@@ -104,7 +105,7 @@ impl Method {
         }
     }
 
-    /// The theta method with weight `alpha` ([`registry::theta`]).
+    /// The theta method with weight `alpha` ([`crate::catalog::theta`]).
     pub fn theta(alpha: f64) -> Result<Self, Error> {
         Ok(Method::RuntimeTableau(registry::theta(alpha)?))
     }
@@ -164,7 +165,7 @@ impl Method {
     /// [`stormer_order::stability`]). A pusher's is not computed here (`Bounded(0)`).
     ///
     /// ```
-    /// use stormer::order::stability::Interval;
+    /// use stormer::verify::conditions::stability::Interval;
     /// use stormer::Method;
     /// let rk4 = Method::named("rk4").unwrap().stability_interval().value();
     /// assert!((rk4 - 8f64.sqrt()).abs() < 1e-9);

@@ -10,10 +10,12 @@
 //! the catalog's only when it is the catalog's own entry ([`Method::named`]): a tableau
 //! declared elsewhere under a catalog name runs its own coefficients.
 
+use crate::catalog::{BUTCHER, SPLITTING};
 use crate::flows::{QuadraticKinetic, Splittable};
 use crate::method::{ButcherMethod, SplittingMethod, StepperResult, TableauData};
-use crate::registry::{BUTCHER, SPLITTING};
-use crate::{catalog, ImplicitOptions, Method, Problem, SplittingData, SplittingSource, SplittingStepper};
+use crate::method::{SplittingData, SplittingSource};
+use crate::stepper::{ImplicitOptions, SplittingStepper};
+use crate::{catalog, Method, Problem};
 
 /// The index of `data` in `table` when it is that table's own entry (the same address,
 /// not merely the same name).
@@ -210,7 +212,7 @@ mod tests {
     /// name.
     #[test]
     fn a_tableau_named_like_a_catalog_method_runs_its_own_coefficients() {
-        use crate::ButcherMethod;
+        use crate::method::ButcherMethod;
         let users = Method::Tableau(&<NamedLikeRk4 as ButcherMethod>::DATA);
         let catalog = Method::named("rk4").unwrap();
         let (own, catalog_rk4) = (one_step(&users, false), one_step(&catalog, false));

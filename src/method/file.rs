@@ -2,7 +2,7 @@
 //! level, or a `[[method]]` array whose entries of the wanted family are read.
 
 use super::MethodInfo;
-use crate::error::{one_line, toml_message};
+use crate::text::{one_line, toml_message};
 use crate::Error;
 use serde::de::DeserializeOwned;
 
@@ -152,11 +152,11 @@ pub(super) fn exactly_one<M>(mut all: Vec<M>, origin: &str, what: &str) -> Resul
     }
 }
 
-/// The text of the method file at `path` (read through the bound of [`crate::input`])
+/// The text of the method file at `path` (read through the bound of [`crate::text`])
 /// and its name for messages.
 pub(super) fn read_file(path: &std::path::Path) -> Result<(String, String), Error> {
     let origin = path.display().to_string();
-    let text = crate::input::read_text(path).map_err(|reason| Error::InvalidMethod {
+    let text = crate::text::read_text(path).map_err(|reason| Error::InvalidMethod {
         name: origin.clone(),
         reason,
     })?;

@@ -64,7 +64,7 @@ pub struct MethodInfo {
     /// Embedded order, if the method estimates its error.
     pub embedded_order: Option<usize>,
     /// Order of the method's own dense output, if it has one (else the driver's cubic
-    /// Hermite interpolant serves, order [`crate::hermite_order`] of the method's order).
+    /// Hermite interpolant serves, order [`crate::driver::hermite_order`] of the method's order).
     pub dense_order: Option<usize>,
     /// Derived flags.
     pub flags: Flags,

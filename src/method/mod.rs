@@ -14,3 +14,6 @@ pub use butcher::{ButcherMethod, ExplicitMethod};
 pub use info::{DenseData, Flags, MethodInfo, TableauData};
 pub use splitting::{AlgebraicOrders, Splitting, SplittingData, SplittingMethod};
 pub use tableau::Tableau;
+
+/// What a problem admits besides Runge-Kutta methods ([`crate::Problem::families`]).
+pub use crate::families::{Families, SplittingSource};

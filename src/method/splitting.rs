@@ -115,7 +115,7 @@ pub trait SplittingMethod: Copy + Default + Send + Sync + core::fmt::Debug + 'st
 /// run time (or read from a file) and run by [`crate::stepper::RuntimeSplitting`].
 ///
 /// ```
-/// use stormer::Splitting;
+/// use stormer::method::Splitting;
 /// // velocity Verlet, declared at run time
 /// let kdk = Splitting::splitting("my_verlet", &[0.0, 1.0], &[0.5, 0.5], 2, false).unwrap();
 /// assert!(kdk.flags().symmetric && kdk.flags().fsal);

@@ -172,7 +172,7 @@ impl Splitting {
     /// `origin` (a file name) is used in error messages.
     ///
     /// ```
-    /// use stormer::Splitting;
+    /// use stormer::method::Splitting;
     /// let m = Splitting::from_toml_str(r#"
     ///     name = "my_leapfrog"
     ///     family = "splitting"

@@ -10,7 +10,7 @@ use stormer_order::{Condition, TableauSpec, ValidTableau};
 /// A validated Butcher tableau held in memory (coefficients as `f64`).
 ///
 /// ```
-/// use stormer::Tableau;
+/// use stormer::method::Tableau;
 /// let heun = Tableau::from_toml_str(r#"
 ///     name = "my_heun"
 ///     order = 2

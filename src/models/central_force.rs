@@ -1,5 +1,5 @@
 //! One body around a fixed attracting centre: the Kepler problem
-//! `H = |p|^2/2 - mu/|q|` (the `kepler-e06` scene, PERFORMANCE.md's accuracy anchor).
+//! `H = |p|^2/2 - mu/|q|` (the `kepler-e06` scene, docs/anchors.md's accuracy anchor).
 
 #[allow(unused_imports)]
 use crate::real::ops::*;
@@ -68,6 +68,6 @@ impl<T: Real, S: State<Scalar = T>> SecondOrder for CentralForce<T, S> {
     }
 
     fn energy(&self, _t: T, q: &[T], p: &[T]) -> Option<T> {
-        Some(norm_squared(p) * crate::lit(0.5) - self.mu / norm_squared(q).sqrt())
+        Some(norm_squared(p) * crate::real::lit(0.5) - self.mu / norm_squared(q).sqrt())
     }
 }

@@ -7,8 +7,9 @@ use crate::hamiltonian::{halves, halves_mut};
 use crate::magnetic::{cross, Gyration, Lorentz};
 #[allow(unused_imports)]
 use crate::real::ops::*;
+use crate::real::{lit, to_f64};
 use crate::verify::Structure;
-use crate::{lit, to_f64, Error, Real, State};
+use crate::{Error, Real, State};
 use core::marker::PhantomData;
 use nalgebra::{DMatrix, DVector};
 
@@ -481,8 +482,10 @@ impl<T: Real, S: State<Scalar = T>> Structure for ChargedParticles<T, S> {
 #[allow(clippy::float_cmp)] // exact values compared exactly
 mod tests {
     use super::*;
+    use crate::catalog::Dop853;
     use crate::magnetic::Charged;
-    use crate::{catalog::Dop853, Driver, ExplicitRk, Problem};
+    use crate::stepper::ExplicitRk;
+    use crate::{Driver, Problem};
 
     /// Two ions in a Penning trap with interaction, plus a uniform E along the axis.
     fn trap() -> ChargedParticles<f64, [f64; 12]> {

@@ -6,10 +6,14 @@ use super::democratic_heliocentric::DemocraticHeliocentric;
 use super::jacobi::Jacobi;
 use super::nbody::NBody;
 use super::nbody_shape::{AnyShape, Shape};
+use crate::flows::{QuadraticKinetic, Splittable};
+use crate::hamiltonian::Hamiltonian;
 use crate::kepler::{KeplerLanes, LagrangeCoefficients, LaneFlows, LaneStates, LANES};
+use crate::method::Families;
 #[allow(unused_imports)]
 use crate::real::ops::*;
-use crate::{lit, to_f64, Error, Families, Hamiltonian, Problem, QuadraticKinetic, Real, Splittable, State};
+use crate::real::{lit, to_f64};
+use crate::{Error, Problem, Real, State};
 
 /// The coordinates a [`KeplerSplit`] runs in, and so which Kepler problems its drift solves.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -3,14 +3,16 @@
 //! centre ([`CentralForce`]) and charged particles in electric and magnetic fields
 //! ([`ChargedParticles`], run through [`crate::magnetic::Charged`]; at speeds close to
 //! light, [`RelativisticParticles`]); and a planetary system split the Wisdom-Holman way
-//! ([`KeplerSplit`], in [`Jacobi`] or [`DemocraticHeliocentric`] coordinates).
+//! ([`KeplerSplit`], in [`Jacobi`] or [`DemocraticHeliocentric`] coordinates); and
+//! [`SplitMix64`], the seeded sequence that draws many particles the same way everywhere.
 //!
 //! The application's scene files build these; a program uses them directly:
 //!
 //! ```
 //! use stormer::catalog::VelocityVerletKdk;
 //! use stormer::models::NBody;
-//! use stormer::{Driver, Problem, SplittingStepper};
+//! use stormer::{Driver, Problem};
+//! use stormer::stepper::SplittingStepper;
 //! // Sun and Jupiter in the plane, G = 1
 //! let bodies = NBody::<f64, [f64; 8]>::new(1.0, &[1.0, 1e-3], 2).unwrap();
 //! let y0 = [0.0, 0.0, 5.2, 0.0, 0.0, 0.0, 0.0, 1e-3 * (1.0f64 / 5.2).sqrt()];
@@ -33,6 +35,7 @@ mod nbody_shape;
 mod nbody_tiles;
 mod orbit;
 mod relativistic_particles;
+mod splitmix64;
 
 pub use central_force::CentralForce;
 pub use charged_particles::ChargedParticles;
@@ -45,6 +48,7 @@ pub use nbody::NBody;
 pub use nbody_shape::{AnyShape, Bodies, Shape};
 pub use orbit::{eccentric_anomaly, Orbit};
 pub use relativistic_particles::RelativisticParticles;
+pub use splitmix64::SplitMix64;
 
 /// `names` if there is one per member (`count` of them, called `what`: "bodies",
 /// "particles"), else an error saying how many of each there are.

@@ -3,9 +3,13 @@
 
 use super::nbody_shape::{AnyShape, Shape};
 use super::orbit::Orbit;
+use crate::flows::QuadraticKinetic;
+use crate::hamiltonian::Hamiltonian;
+use crate::method::Families;
 #[allow(unused_imports)]
 use crate::real::ops::*;
-use crate::{lit, to_f64, Error, Families, Hamiltonian, QuadraticKinetic, Real, State};
+use crate::real::{lit, to_f64};
+use crate::{Error, Real, State};
 use core::marker::PhantomData;
 
 /// `q_k - q_l` in dimension `D` and its squared length, the loops unrolled: the start of
@@ -174,7 +178,7 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> NBody<T, S, K> {
     ///
     /// ```
     /// use stormer::models::NBody;
-    /// use stormer::Hamiltonian;
+    /// use stormer::hamiltonian::Hamiltonian;
     /// // a star and a test particle one unit away, G = 1: the star feels nothing
     /// let nb = NBody::<f64, [f64; 4]>::new(1.0, &[1.0, 1e-3], 1).unwrap().with_active(1).unwrap();
     /// let mut f = [0.0; 2];
@@ -735,7 +739,7 @@ mod tests {
         let mut y0 = [0.0; 8];
         nb.set_state(&[0.0, 0.0, 2.5, 0.0], &[0.0, -0.3, 0.0, 3.0], &mut y0)
             .unwrap();
-        let mut st = crate::ExplicitRk::<crate::catalog::Dop853, [f64; 8]>::new(&y0);
+        let mut st = crate::stepper::ExplicitRk::<crate::catalog::Dop853, [f64; 8]>::new(&y0);
         let sol = crate::Driver::fixed(1e-3)
             .every(250)
             .run(&nb, &mut st, 0.0, &y0, 5.0)

@@ -6,9 +6,11 @@ use super::charged_particles::write_particles;
 use super::{ChargedParticles, ExternalFields, MagneticField};
 use crate::hamiltonian::{halves, halves_mut};
 use crate::magnetic::{cross, Gyration};
+use crate::method::Families;
 #[allow(unused_imports)]
 use crate::real::ops::*;
-use crate::{to_f64, Error, Families, Problem, Real, State};
+use crate::real::to_f64;
+use crate::{Error, Problem, Real, State};
 
 /// `N` charged particles moving at relativistic speeds in a uniform electric field `E` and
 /// a magnetic field `B` ([`MagneticField`]: uniform, a bottle, a dipole), with the speed

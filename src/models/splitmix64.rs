@@ -5,7 +5,7 @@
 /// bits, the same sequence on every platform.
 ///
 /// ```
-/// use stormer::splitmix64::SplitMix64;
+/// use stormer::models::SplitMix64;
 /// let xs: Vec<f64> = SplitMix64::new(7).take(1000).collect();
 /// assert!(xs.iter().all(|x| (-1.0..1.0).contains(x)));
 /// assert_eq!(xs, SplitMix64::new(7).take(1000).collect::<Vec<_>>());

@@ -6,10 +6,12 @@ use super::particle_chunks::{check_particles_in_3d, try_for_each_chunk};
 use super::{Counters, ParticleMethod, Stepper};
 use crate::hamiltonian::halves_mut;
 use crate::magnetic::{cayley_rotate, Charged, Lorentz};
+use crate::method::MethodInfo;
 use crate::models::ExternalFields;
+use crate::real::lit;
 #[allow(unused_imports)]
 use crate::real::ops::*;
-use crate::{lit, Error, MethodInfo, Real, State};
+use crate::{Error, Real, State};
 
 /// How Boris turns the velocity over a step `h` (rotation vector `omega`, angle
 /// `|omega| h`).
@@ -148,7 +150,7 @@ fn too_fast<T: crate::Real>(t: T) -> Error {
         "step",
         format!(
             "Boris with exact phase needs |omega| h < pi, but the field turns a particle by more at t = {}",
-            crate::to_f64(t)
+            crate::real::to_f64(t)
         ),
     )
 }

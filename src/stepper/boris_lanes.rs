@@ -4,7 +4,8 @@
 //! instructions (two `f64` per SSE2 instruction, four with AVX2).
 
 use crate::models::ExternalFields;
-use crate::{lit, Real};
+use crate::real::lit;
+use crate::Real;
 
 /// Particles per lane group: 2, one SSE2 register per component (4 spill registers on
 /// x86-64's 16 with the default target; measured in docs/benchmarks.md).

@@ -16,9 +16,10 @@
 
 use crate::flows::Splittable;
 use crate::hamiltonian::{halves, halves_mut};
+use crate::real::lit;
 #[allow(unused_imports)]
 use crate::real::ops::*;
-use crate::{lit, State};
+use crate::State;
 use stormer_order::splitting::Flow;
 
 /// Turns a stepper's compensated form on (made by `make` unless it is on already, so a

@@ -2,7 +2,9 @@
 //! Gauss-Legendre-like base, any user stepper): `S(gamma_s h) o ... o S(gamma_1 h)`.
 
 use super::{Counters, Stepper};
-use crate::{lit, Error, MethodInfo, Problem, Splitting, State};
+use crate::method::{MethodInfo, Splitting};
+use crate::real::lit;
+use crate::{Error, Problem, State};
 
 /// The composition `S(gamma_s h) o ... o S(gamma_1 h)` of a base stepper `S`.
 ///
@@ -12,7 +14,9 @@ use crate::{lit, Error, MethodInfo, Problem, Splitting, State};
 ///
 /// ```
 /// use stormer::stepper::Composed;
-/// use stormer::{ImplicitOptions, Method, Problem, Splitting, Stepper};
+/// use stormer::{Method, Problem, Stepper};
+/// use stormer::method::Splitting;
+/// use stormer::stepper::ImplicitOptions;
 /// struct Oscillator;
 /// impl Problem for Oscillator {
 ///     type Scalar = f64;

@@ -1,8 +1,9 @@
 //! The scaled error norm of Hairer's codes, and DOP853's combined estimator.
 
+use crate::real::lit;
 #[allow(unused_imports)]
 use crate::real::ops::*;
-use crate::{lit, Real, State};
+use crate::{Real, State};
 
 /// Relative and absolute tolerances of adaptive stepping.
 ///

@@ -5,7 +5,8 @@ use super::particle_chunks::check_particles_in_3d;
 use super::{Counters, ParticleMethod, Stepper};
 use crate::hamiltonian::halves_mut;
 use crate::magnetic::{Charged, Lorentz};
-use crate::{Error, MethodInfo, Real, State};
+use crate::method::MethodInfo;
+use crate::{Error, Real, State};
 
 /// Euler-Cromer (semi-implicit Euler of the users' E x B study, docs/scenes.md 6):
 ///

@@ -5,9 +5,11 @@
 use super::compensated::CompensatedCombination;
 use super::{Counters, Stepper, Tolerances};
 use crate::method::ExplicitMethod;
+use crate::method::MethodInfo;
+use crate::real::lit;
 #[allow(unused_imports)]
 use crate::real::ops::*;
-use crate::{lit, Error, MethodInfo, Problem, State};
+use crate::{Error, Problem, State};
 
 /// The stages of an explicit tableau, as [`ExplicitStepper`] runs them: compiled
 /// ([`Unrolled`], the code `tableau!` generates) or read at run time
@@ -163,7 +165,9 @@ impl<S: State> Dense<S> {
 /// Stepper for an explicit method `M` declared with [`crate::tableau!`], on states `S`.
 ///
 /// ```
-/// use stormer::{catalog::Rk4, ExplicitRk, Problem, Stepper};
+/// use stormer::{Problem, Stepper};
+/// use stormer::catalog::Rk4;
+/// use stormer::stepper::ExplicitRk;
 /// struct Decay;
 /// impl Problem for Decay {
 ///     type Scalar = f64;

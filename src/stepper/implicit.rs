@@ -17,10 +17,12 @@ mod newton;
 
 use super::compensated::CompensatedSum;
 use super::{Counters, Stepper, Tolerances};
+use crate::method::{MethodInfo, Tableau};
 use crate::real::magnitude;
 #[allow(unused_imports)]
 use crate::real::ops::*;
-use crate::{lit, to_f64, Error, MethodInfo, Problem, Real, State, Tableau};
+use crate::real::{lit, to_f64};
+use crate::{Error, Problem, Real, State};
 use newton::Newton;
 
 /// How the stage equations (1) are solved.
@@ -73,7 +75,7 @@ pub enum ImplicitSolver {
 /// `tol > 0` trades that for fewer iterations when only the order of the method matters.
 ///
 /// ```
-/// use stormer::{ImplicitOptions, ImplicitSolver};
+/// use stormer::stepper::{ImplicitOptions, ImplicitSolver};
 /// let stiff = ImplicitOptions::newton();
 /// assert_eq!(stiff.solver, ImplicitSolver::Newton);
 /// assert_eq!(ImplicitOptions::default(), ImplicitOptions::fixed_point());
@@ -280,7 +282,10 @@ struct Extrapolation<S: State> {
 /// the others are fixed-step only.
 ///
 /// ```
-/// use stormer::{catalog::GaussLegendre4, ButcherMethod, ImplicitOptions, ImplicitRk, Problem, Stepper, Tableau};
+/// use stormer::{Problem, Stepper};
+/// use stormer::catalog::GaussLegendre4;
+/// use stormer::method::{ButcherMethod, Tableau};
+/// use stormer::stepper::{ImplicitOptions, ImplicitRk};
 /// /// The harmonic oscillator x'' = -x.
 /// struct Oscillator;
 /// impl Problem for Oscillator {
@@ -774,7 +779,7 @@ impl<P: Problem> Stepper<P> for ImplicitRk<P::State> {
 mod tests {
     use super::*;
     use crate::catalog::*;
-    use crate::ButcherMethod;
+    use crate::method::ButcherMethod;
 
     fn stepper<M: ButcherMethod>(solver: ImplicitSolver) -> ImplicitRk<[f64; 1]> {
         let options = ImplicitOptions {

@@ -34,7 +34,8 @@ pub use splitting::{
 };
 pub use two_step::StormerTwoStep;
 
-use crate::{Error, MethodInfo, Problem};
+use crate::method::MethodInfo;
+use crate::{Error, Problem};
 
 /// Work done by a stepper so far.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
@@ -101,7 +102,7 @@ pub trait Stepper<P: Problem> {
     /// [`Stepper::accept`]), from `(t, y)`: `out = y(t + theta h)`, of order
     /// `info().dense_order` (the stages it adds after the step, DOP853's, made once per
     /// step); false, with `out` untouched, for a method without one (the driver then
-    /// interpolates itself, [`crate::hermite`]).
+    /// interpolates itself, [`crate::driver::hermite`]).
     fn interpolate(&mut self, _p: &P, _t: P::Scalar, _theta: P::Scalar, _y: &P::State, _out: &mut P::State) -> bool {
         false
     }
@@ -148,7 +149,9 @@ pub trait Stepper<P: Problem> {
     /// compensated form; the default refuses to turn it on.
     ///
     /// ```
-    /// use stormer::{catalog::Rk4, ExplicitRk, Problem, Stepper};
+    /// use stormer::{Problem, Stepper};
+    /// use stormer::catalog::Rk4;
+    /// use stormer::stepper::ExplicitRk;
     /// struct Decay;
     /// impl Problem for Decay {
     ///     type Scalar = f64;

@@ -6,8 +6,9 @@
 
 use super::{Boris, BorisRotation, EulerCromer, Stepper};
 use crate::magnetic::{Charged, Lorentz};
+use crate::method::{Flags, MethodInfo};
 use crate::registry::find_named;
-use crate::{Error, Flags, MethodInfo};
+use crate::Error;
 
 /// A charged-particle stepper, chosen by name.
 ///

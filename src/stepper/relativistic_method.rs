@@ -6,9 +6,10 @@
 
 use super::{RelativisticPush, Stepper};
 use crate::magnetic::RelativisticKick;
+use crate::method::{Flags, MethodInfo};
 use crate::models::RelativisticParticles;
 use crate::registry::find_named;
-use crate::{Error, Flags, MethodInfo, Real, State};
+use crate::{Error, Real, State};
 
 /// A relativistic pusher, chosen by name.
 ///

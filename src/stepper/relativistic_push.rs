@@ -4,10 +4,12 @@
 use super::particle_chunks::{check_particles_in_3d, try_for_each_chunk};
 use super::{Counters, RelativisticMethod, Stepper};
 use crate::hamiltonian::halves_mut;
+use crate::method::MethodInfo;
 use crate::models::{ExternalFields, RelativisticParticles};
+use crate::real::lit;
 #[allow(unused_imports)]
 use crate::real::ops::*;
-use crate::{lit, Error, MethodInfo, Real, State};
+use crate::{Error, Real, State};
 use core::marker::PhantomData;
 
 /// A relativistic pusher in synchronized form (positions and momenta at the same time,

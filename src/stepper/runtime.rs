@@ -2,9 +2,11 @@
 //! coefficients where the generated code is unrolled.
 
 use super::explicit::{ExplicitStages, ExplicitStepper};
+use crate::method::{MethodInfo, Tableau};
+use crate::real::lit;
 #[allow(unused_imports)]
 use crate::real::ops::*;
-use crate::{lit, Error, MethodInfo, Problem, Real, State, Tableau};
+use crate::{Error, Problem, Real, State};
 
 /// A row of coefficients with its zero entries dropped: `(column, value)`.
 type Sparse<T> = Vec<(usize, T)>;

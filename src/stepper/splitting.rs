@@ -7,8 +7,10 @@ use super::compensated::CompensatedWord;
 use super::{Counters, StepRun, Stepper};
 use crate::flows::{Admits, General, ProblemClass, Splittable};
 use crate::hamiltonian::halves_mut;
+use crate::method::MethodInfo;
 use crate::method::SplittingMethod;
-use crate::{lit, Error, MethodInfo, State};
+use crate::real::lit;
+use crate::{Error, State};
 use stormer_order::splitting::Flow;
 
 /// A word of sub-flows `(flow, fraction, node)`, one per op.
@@ -93,7 +95,7 @@ impl<M: SplittingMethod, S: State> SplittingWord<S> for UnrolledWord<M, S> {
     }
 }
 
-/// The word of a run-time [`crate::Splitting`], read op by op.
+/// The word of a run-time [`crate::method::Splitting`], read op by op.
 #[derive(Debug, Clone)]
 pub struct RuntimeWord<S: State> {
     info: MethodInfo,
@@ -140,8 +142,8 @@ impl<S: State> SplittingWord<S> for RuntimeWord<S> {
 }
 
 /// Stepper for the word `W` of a splitting or composition on phase-space states
-/// `S = (q, p)`; `C` is the problem's [`crate::Splittable::FlowCache`] (`()` for every
-/// [`crate::Hamiltonian`]). Compiled methods run as [`SplittingStepper`], run-time ones as
+/// `S = (q, p)`; `C` is the problem's [`crate::flows::Splittable::FlowCache`] (`()` for every
+/// [`crate::hamiltonian::Hamiltonian`]). Compiled methods run as [`SplittingStepper`], run-time ones as
 /// [`RuntimeSplitting`].
 #[derive(Debug, Clone)]
 pub struct WordStepper<W, S: State, C = ()> {
@@ -160,14 +162,16 @@ pub struct WordStepper<W, S: State, C = ()> {
 
 /// Stepper for a splitting or composition `M` (declared with `splitting!` or
 /// `composition!`) on phase-space states `S = (q, p)`; `C` is the problem's
-/// [`crate::Splittable::FlowCache`] (`()` for every [`crate::Hamiltonian`]).
+/// [`crate::flows::Splittable::FlowCache`] (`()` for every [`crate::hamiltonian::Hamiltonian`]).
 ///
 /// Only problems of the method's class are accepted, by the type system: a method built
 /// for quadratic kinetic energies ([`crate::flows::QuadraticOnly`]) does not implement
-/// [`Stepper`] for a problem that is not [`crate::QuadraticKinetic`].
+/// [`Stepper`] for a problem that is not [`crate::flows::QuadraticKinetic`].
 ///
 /// ```
-/// use stormer::{catalog::VelocityVerletKdk, SecondOrder, SplittingStepper, Stepper};
+/// use stormer::{SecondOrder, Stepper};
+/// use stormer::catalog::VelocityVerletKdk;
+/// use stormer::stepper::SplittingStepper;
 /// struct Oscillator;
 /// impl SecondOrder for Oscillator {
 ///     type Scalar = f64;
@@ -181,10 +185,12 @@ pub struct WordStepper<W, S: State, C = ()> {
 /// ```
 pub type SplittingStepper<M, S, C = ()> = WordStepper<UnrolledWord<M, S>, S, C>;
 
-/// Stepper for a [`crate::Splitting`] held in memory, on phase-space states `S = (q, p)`.
+/// Stepper for a [`crate::method::Splitting`] held in memory, on phase-space states `S = (q, p)`.
 ///
 /// ```
-/// use stormer::{RuntimeSplitting, SecondOrder, Splitting, Stepper};
+/// use stormer::{SecondOrder, Stepper};
+/// use stormer::method::Splitting;
+/// use stormer::stepper::RuntimeSplitting;
 /// struct Oscillator;
 /// impl SecondOrder for Oscillator {
 ///     type Scalar = f64;
@@ -220,21 +226,16 @@ impl<M: SplittingMethod, S: State, C: Default + Clone> WordStepper<UnrolledWord<
 impl<S: State, C: Default + Clone> WordStepper<RuntimeWord<S>, S, C> {
     /// A stepper for a general method (valid for every splittable problem). A method that
     /// needs a quadratic kinetic energy is refused: use [`RuntimeSplitting::new_quadratic`]
-    /// for a [`crate::QuadraticKinetic`] problem.
-    pub fn new(method: &crate::Splitting, y0: &S) -> Result<Self, Error> {
+    /// for a [`crate::flows::QuadraticKinetic`] problem.
+    pub fn new(method: &crate::method::Splitting, y0: &S) -> Result<Self, Error> {
         if method.requires_quadratic_kinetic() {
-            return Err(Error::Unsupported {
-                name: method.name().to_string(),
-                reason: "it reaches its order only when the kinetic energy is quadratic in p \
-                         (a Runge-Kutta-Nystrom method); use a general splitting or composition instead"
-                    .into(),
-            });
+            return Err(crate::flows::quadratic_kinetic_refused(method.name()));
         }
         Self::new_quadratic(method, y0)
     }
 
     /// A stepper for any method, for a problem whose kinetic energy is quadratic.
-    pub fn new_quadratic(method: &crate::Splitting, y0: &S) -> Result<Self, Error> {
+    pub fn new_quadratic(method: &crate::method::Splitting, y0: &S) -> Result<Self, Error> {
         check_phase_space(method.name(), y0)?;
         let ops = method.word().iter();
         let word = RuntimeWord {

@@ -3,9 +3,11 @@
 
 use crate::flows::QuadraticKinetic;
 use crate::hamiltonian::halves;
+use crate::hamiltonian::Hamiltonian;
+use crate::real::lit;
 #[allow(unused_imports)]
 use crate::real::ops::*;
-use crate::{lit, Error, Hamiltonian, Real, State};
+use crate::{Error, Real, State};
 
 /// Stormer's two-step recursion `r_{n+1} = 2 r_n - r_{n-1} + h^2 a(t_n, r_n)` on the
 /// positions of a Hamiltonian with quadratic kinetic energy, where the acceleration is
@@ -20,7 +22,8 @@ use crate::{lit, Error, Hamiltonian, Real, State};
 /// cannot be). One force evaluation per step, plus one to start.
 ///
 /// ```
-/// use stormer::{stepper::StormerTwoStep, SecondOrder};
+/// use stormer::SecondOrder;
+/// use stormer::stepper::StormerTwoStep;
 /// /// x'' = -x
 /// struct Oscillator;
 /// impl SecondOrder for Oscillator {

@@ -33,9 +33,9 @@ pub fn limit() -> u64 {
 /// std::fs::create_dir_all(&dir).unwrap();
 /// let path = dir.join("a.toml");
 /// std::fs::write(&path, "x = 1\n").unwrap();
-/// assert_eq!(stormer::input::read_text(&path).unwrap(), "x = 1\n");
+/// assert_eq!(stormer::text::read_text(&path).unwrap(), "x = 1\n");
 /// std::fs::write(&path, b"x = 1\n\xff\n").unwrap();
-/// assert!(stormer::input::read_text(&path).unwrap_err().contains("line 2"));
+/// assert!(stormer::text::read_text(&path).unwrap_err().contains("line 2"));
 /// std::fs::remove_dir_all(&dir).unwrap();
 /// ```
 pub fn read_text(path: &Path) -> Result<String, String> {

@@ -66,7 +66,8 @@ dual_scalar!(Dual32, f32);
 /// ```
 /// use num_dual::Dual64;
 /// use stormer::verify::{jacobian_dual, problems::Pendulum};
-/// use stormer::{lit, Method};
+/// use stormer::Method;
+/// use stormer::real::lit;
 /// let y = Pendulum::<Dual64>::initial();
 /// let mut rk4 = Method::named("rk4").unwrap().stepper_for(&Pendulum::new(), &y, &Default::default()).unwrap();
 /// let j = jacobian_dual(&mut rk4, &Pendulum::new(), 0.0, 0.1, &y).unwrap();

@@ -4,7 +4,9 @@
 use super::order::slope;
 use super::problems::TreeSystem;
 use super::{OrderMeasurement, Sample};
-use crate::{lit, to_f64, Error, ImplicitOptions, Method, Real};
+use crate::real::{lit, to_f64};
+use crate::stepper::ImplicitOptions;
+use crate::{Error, Method, Real};
 use nalgebra::DVector;
 
 /// The integration interval is `[T0, -T0]`.

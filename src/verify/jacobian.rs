@@ -1,9 +1,10 @@
 //! The Jacobian of one step by central differences.
 
 use super::step_once;
+use crate::real::lit;
 #[allow(unused_imports)]
 use crate::real::ops::*;
-use crate::{lit, Error, Problem, Real, State, Stepper};
+use crate::{Error, Problem, Real, State, Stepper};
 use nalgebra::DMatrix;
 
 /// The central-difference increment for a component of size `|y_j|`:

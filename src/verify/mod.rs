@@ -35,11 +35,15 @@ pub use num_dual::{Dual32, Dual64};
 pub use order::{measure_order, reference_flow, OrderMeasurement, OrderOptions, Sample};
 pub use report::{report, Case, Check, OrderError, Report, REVERSIBLE_FACTOR, SYMPLECTIC_FACTOR};
 pub use reversibility::reversibility_defect;
+/// The order-condition algebra the macros check with (the `stormer_order` crate): rooted
+/// trees, splitting conditions, stability intervals.
+pub use stormer_order as conditions;
 pub use structure::{defect_bound, symplectic_defect, Canonical, Structure};
 
 #[allow(unused_imports)]
 use crate::real::ops::*;
-use crate::{to_f64, Error, Problem, Real, State, Stepper};
+use crate::real::to_f64;
+use crate::{Error, Problem, Real, State, Stepper};
 
 /// One step from a clean stepper (no cached stage, no starting guess from another step);
 /// a non-finite result is an error.

@@ -3,7 +3,9 @@
 
 #[allow(unused_imports)]
 use crate::real::ops::*;
-use crate::{lit, to_f64, Error, ImplicitOptions, Method, Problem, Real, State, Stepper};
+use crate::real::{lit, to_f64};
+use crate::stepper::ImplicitOptions;
+use crate::{Error, Method, Problem, Real, State, Stepper};
 
 /// How [`measure_order`] samples and fits the error.
 ///

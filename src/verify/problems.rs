@@ -15,11 +15,15 @@
 //! only when `[B, [B, [B, A]]] = 0`: it is measured on [`HenonHeiles`], and measures lower
 //! on [`QuarticKinetic`]. So a Runge-Kutta-Nystrom method declared general is caught on
 //! the quartic kinetic energy, and one applied with drift and kick swapped (the
-//! McLachlan-Atela bug of `methods/NOTES.md`, measured third order instead of fourth) is
+//! McLachlan-Atela bug of docs/anchors.md, measured third order instead of fourth) is
 //! caught on Henon-Heiles: neither is visible on the harmonic oscillator.
 
+use crate::flows::{QuadraticKinetic, Splittable};
+use crate::hamiltonian::Hamiltonian;
+use crate::method::Families;
 use crate::models::{KeplerCoordinates, KeplerSplit, NBody};
-use crate::{lit, Families, Hamiltonian, Problem, QuadraticKinetic, Real, SecondOrder, Splittable};
+use crate::real::lit;
+use crate::{Problem, Real, SecondOrder};
 use core::marker::PhantomData;
 use nalgebra::DVector;
 

@@ -6,7 +6,10 @@ use super::{
     defect_bound, jacobian_dual, jacobian_fd, measure_global_order, measure_order, reversibility_defect, step_once,
     symplectic_defect, Canonical, GlobalOrderOptions, OrderMeasurement, OrderOptions, Precision,
 };
-use crate::{lit, Error, ImplicitOptions, Method, MethodInfo, Problem};
+use crate::method::MethodInfo;
+use crate::real::lit;
+use crate::stepper::ImplicitOptions;
+use crate::{Error, Method, Problem};
 use num_dual::Dual64;
 use stormer_order::stability::Interval;
 
@@ -108,7 +111,8 @@ const PLANAR_STATES: [[f64; 4]; 2] = [[0.1, -0.2, 0.3, 0.2], [-0.2, 0.25, 0.1, -
 /// each and `h = 0.1, 0.4`.
 ///
 /// ```
-/// use stormer::{verify::report, Method};
+/// use stormer::Method;
+/// use stormer::verify::report;
 /// let r = report(&Method::named("rk4").unwrap()).unwrap();
 /// assert!((r.order.unwrap().order - 4.0).abs() < 0.2);
 /// assert!(!r.symplectic.holds && !r.reversible.holds);

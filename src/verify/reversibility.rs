@@ -14,7 +14,8 @@ use crate::{Error, Problem, State, Stepper};
 ///
 /// ```
 /// use stormer::verify::{problems::Pendulum, reversibility_defect};
-/// use stormer::{ImplicitOptions, Method};
+/// use stormer::Method;
+/// use stormer::stepper::ImplicitOptions;
 /// let y = Pendulum::<f64>::initial();
 /// let options = ImplicitOptions::default();
 /// let midpoint = Method::named("implicit_midpoint").unwrap();

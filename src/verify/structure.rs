@@ -6,9 +6,10 @@
 //! `J^T S J = S`. A problem in non-canonical coordinates (a charged particle's `(q, v)` in
 //! a magnetic field) supplies its own matrix through [`Structure`].
 
+use crate::real::lit;
 #[allow(unused_imports)]
 use crate::real::ops::*;
-use crate::{lit, Real};
+use crate::Real;
 use nalgebra::DMatrix;
 
 /// The matrix `S(y)` of the two-form a map must preserve (`J^T S(Phi(y)) J = S(y)`).

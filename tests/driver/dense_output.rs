@@ -14,8 +14,11 @@ use stormer::catalog::{
     BackwardEuler, Dop853, DormandPrince5, GaussLegendre4, GaussLegendre6, ImplicitMidpoint, Kutta3, LobattoIiia4,
     RadauIia3, RadauIia5, Rk4, Trapezoidal, Verner9,
 };
-use stormer::{hermite_order, Driver, Error, ExplicitRk, Method, Solution, Tolerances};
-use stormer::{ButcherMethod, ExplicitMethod, ImplicitOptions, ImplicitRk, Tableau};
+use stormer::driver::{hermite_order, Solution};
+use stormer::method::{ButcherMethod, ExplicitMethod, Tableau};
+use stormer::stepper::{ExplicitRk, Tolerances};
+use stormer::stepper::{ImplicitOptions, ImplicitRk};
+use stormer::{Driver, Error, Method};
 
 /// `n + 1` times from `a` to `b`.
 fn grid(a: f64, b: f64, n: usize) -> Vec<f64> {
@@ -117,12 +120,12 @@ fn dop853_dense_output_is_as_accurate_between_steps_and_of_order_seven() {
     let (steps, mid) = at_steps_and_midpoints::<Dop853>(1e-11, 6.3);
     let (e_steps, e_mid) = (oscillator_error(&steps.t, &steps.y), oscillator_error(&mid.t, &mid.y));
     assert!(e_mid <= 3.0 * e_steps, "between steps {e_mid:e}, at steps {e_steps:e}");
-    let tableau = stormer::Tableau::from_data(&<Dop853 as stormer::ButcherMethod>::DATA).unwrap();
+    let tableau = stormer::method::Tableau::from_data(&<Dop853 as stormer::method::ButcherMethod>::DATA).unwrap();
     assert_eq!(tableau.info().dense_order, Some(7));
-    let data = <Dop853 as stormer::ButcherMethod>::DATA;
+    let data = <Dop853 as stormer::method::ButcherMethod>::DATA;
     let dense = data.dense.unwrap();
     let (s, e) = (data.stages, dense.c.len());
-    let spec = stormer::order::TableauSpec {
+    let spec = stormer::verify::conditions::TableauSpec {
         a: data.a.chunks(s).map(<[f64]>::to_vec).collect(),
         b: data.b.to_vec(),
         c: Some(data.c.to_vec()),
@@ -140,7 +143,7 @@ fn dop853_dense_output_is_as_accurate_between_steps_and_of_order_seven() {
         ),
         ..Default::default()
     };
-    let e = stormer::order::validate(&spec).unwrap_err().to_string();
+    let e = stormer::verify::conditions::validate(&spec).unwrap_err().to_string();
     assert!(e.starts_with("dense output: order 8 condition"), "{e}");
 }
 

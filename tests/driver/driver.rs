@@ -10,7 +10,9 @@ use crate::support::problems;
 use problems::{BlowUp, Decay, Fall};
 use std::sync::atomic::AtomicBool;
 use stormer::catalog::{DormandPrince5, Rk4, VelocityVerletKdk};
-use stormer::{Driver, Error, ExplicitRk, Interrupted, Problem, SecondOrder, Solution, SplittingStepper, Tolerances};
+use stormer::driver::{Interrupted, Solution};
+use stormer::stepper::{ExplicitRk, SplittingStepper, Tolerances};
+use stormer::{Driver, Error, Problem, SecondOrder};
 
 /// `y' = -y` in f32.
 struct Decay32;

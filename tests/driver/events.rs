@@ -8,7 +8,9 @@ use crate::support::problems;
 use problems::{Fall, Kepler};
 use std::f64::consts::{PI, TAU};
 use stormer::catalog::{DormandPrince5, Rk4};
-use stormer::{Crossing, Driver, ExplicitRk, Solution, Tolerances};
+use stormer::driver::{Crossing, Solution};
+use stormer::stepper::{ExplicitRk, Tolerances};
+use stormer::Driver;
 
 /// The radial velocity `r . v` of a Kepler state: it rises through zero at pericentre and
 /// falls through zero at apocentre.

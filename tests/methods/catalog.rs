@@ -2,7 +2,8 @@
 //! `src/catalog/` equals the entry of `data/butcher.toml` (a verbatim copy of the
 //! project's checked method catalog), bitwise, with the same derived flags.
 
-use stormer::{registry, Tableau};
+use stormer::catalog;
+use stormer::method::Tableau;
 
 fn catalog() -> Vec<Tableau> {
     let text = include_str!("../../data/butcher.toml");
@@ -13,8 +14,8 @@ fn catalog() -> Vec<Tableau> {
 fn every_compiled_method_matches_the_data_file() {
     let file = catalog();
     assert_eq!(file.len(), 31);
-    assert_eq!(registry::BUTCHER.len(), file.len());
-    for (data, entry) in registry::BUTCHER.iter().zip(&file) {
+    assert_eq!(catalog::BUTCHER.len(), file.len());
+    for (data, entry) in catalog::BUTCHER.iter().zip(&file) {
         assert_eq!(data.name, entry.name(), "catalog order");
         let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
         assert_eq!(bits(data.a), bits(entry.a()), "{}: a", data.name);
@@ -96,12 +97,12 @@ fn max_abs(v: &[f64]) -> f64 {
 /// not vanish.
 #[test]
 fn lobatto_iiib4_has_no_embedded_pair_since_the_catalogs_estimate_vanishes_on_linear_problems() {
-    let iiib = registry::find("lobatto_iiib4").unwrap();
+    let iiib = catalog::find("lobatto_iiib4").unwrap();
     assert_eq!((iiib.b_hat, iiib.embedded_order), (None, None), "the pair is dropped");
     let (a, b, b_hat) = (iiib.a, iiib.b, LOBATTO_IIIB4_CATALOG_B_HAT);
     // the order checks accept the catalog pair (order 2): only `DROPPED_PAIRS` in
     // tools/gen_butcher_catalog.py and this test keep it out
-    let spec = stormer::order::TableauSpec {
+    let spec = stormer::verify::conditions::TableauSpec {
         a: a.chunks(3).map(<[f64]>::to_vec).collect(),
         b: b.to_vec(),
         c: Some(iiib.c.to_vec()),
@@ -148,7 +149,7 @@ fn lobatto_iiib4_has_no_embedded_pair_since_the_catalogs_estimate_vanishes_on_li
     eprintln!("lobatto_iiib4, oscillator, h = 1: local error {error:.2e}, catalog estimate {estimate:?}");
     assert!(error > 5e-4, "local error {error:e}, estimate {estimate:?}");
     // lobatto_iiia4's pair, of the same order, sees it
-    let iiia = registry::find("lobatto_iiia4").unwrap();
+    let iiia = catalog::find("lobatto_iiia4").unwrap();
     let (estimate, _) = linear_step(iiia.a, iiia.b, iiia.b_hat.unwrap(), &oscillator, &[1.0, 0.0], 1.0);
     eprintln!("lobatto_iiia4, oscillator, h = 1: estimate {estimate:?}");
     assert!(max_abs(&estimate) > 1e-2, "lobatto_iiia4: estimate {estimate:?}");
@@ -158,9 +159,14 @@ fn lobatto_iiib4_has_no_embedded_pair_since_the_catalogs_estimate_vanishes_on_li
 fn declared_order_is_exact() {
     // The data reach their declared order and no more (the next order's conditions fail),
     // so no method is listed below what it achieves.
-    for data in registry::BUTCHER {
-        let limit = (data.order + 1).min(stormer::order::MAX_ORDER);
-        let reached = stormer::order::achieved_order(data.a, data.b, limit, stormer::order::DEFAULT_TOLERANCE);
+    for data in catalog::BUTCHER {
+        let limit = (data.order + 1).min(stormer::verify::conditions::MAX_ORDER);
+        let reached = stormer::verify::conditions::achieved_order(
+            data.a,
+            data.b,
+            limit,
+            stormer::verify::conditions::DEFAULT_TOLERANCE,
+        );
         assert_eq!(reached, data.order, "{}", data.name);
     }
 }
@@ -202,14 +208,14 @@ fn flags_declared_in_a_file_must_agree_with_the_data() {
 /// (the file loader rejects a disagreement).
 #[test]
 fn every_compiled_splitting_matches_the_data_file() {
-    use stormer::Splitting;
+    use stormer::method::Splitting;
     let text = include_str!("../../data/splitting.toml");
     let file = Splitting::all_from_toml_str(text, "data/splitting.toml").expect("the data file is valid");
     assert_eq!(file.len(), 58);
-    assert_eq!(registry::SPLITTING.len(), file.len());
+    assert_eq!(catalog::SPLITTING.len(), file.len());
     let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
     for entry in &file {
-        let data = registry::SPLITTING
+        let data = catalog::SPLITTING
             .iter()
             .find(|d| d.name == entry.name())
             .unwrap_or_else(|| panic!("{} is not compiled", entry.name()));
@@ -235,7 +241,7 @@ fn every_compiled_splitting_matches_the_data_file() {
 /// ABAH844 claiming ABAH864's `(8, 6, 4)` an `eps^2` one.
 #[test]
 fn generalized_orders_are_checked_at_load() {
-    use stormer::Splitting;
+    use stormer::method::Splitting;
     let saba2 = r#"
         name = "saba2_as_saba3"
         class = "near_integrable"

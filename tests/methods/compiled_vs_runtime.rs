@@ -22,8 +22,10 @@
 
 use std::collections::HashMap;
 
+use stormer::method::{Splitting, SplittingSource, Tableau};
 use stormer::models::NBody;
-use stormer::{registry, Driver, ImplicitOptions, Method, Problem, SecondOrder, Splitting, SplittingSource, Tableau};
+use stormer::stepper::ImplicitOptions;
+use stormer::{catalog, Driver, Method, Problem, SecondOrder};
 
 const STEPS: u64 = 100;
 
@@ -173,7 +175,7 @@ fn every_catalog_method_agrees_with_its_run_time_twin_to_the_bit() {
     let (bodies, orbit) = kepler();
     let mut failures = Vec::new();
     let mut checked = 0;
-    for name in registry::names() {
+    for name in catalog::names() {
         let compiled = Method::named(name).expect("a catalog name resolves");
         assert!(
             matches!(compiled, Method::Tableau(_) | Method::Splitting(_)),
@@ -204,6 +206,6 @@ fn every_catalog_method_agrees_with_its_run_time_twin_to_the_bit() {
         failures.join("\n")
     );
     // every tableau (explicit, embedded, implicit), splitting and composition
-    assert_eq!(checked, registry::BUTCHER.len() + registry::SPLITTING.len());
+    assert_eq!(checked, catalog::BUTCHER.len() + catalog::SPLITTING.len());
     assert_eq!(checked, twins.len(), "the data files hold exactly the catalog");
 }

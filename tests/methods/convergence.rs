@@ -61,10 +61,11 @@
 //! `STORMER_SHOW_ERRORS=1 cargo test --release -p stormer --test methods convergence:: -- --nocapture
 //! --test-threads 1` prints every refinement.
 
+use stormer::method::Tableau;
 use stormer::verify::problems::TreeSystem;
 use stormer::verify::{measure_global_order, GlobalOrderOptions, OrderMeasurement, Precision};
 use stormer::Method;
-use stormer::{registry, Problem, Tableau};
+use stormer::{catalog, Problem};
 
 /// Largest allowed distance between the measured and the declared order.
 const TOLERANCE: f64 = 0.2;
@@ -101,7 +102,7 @@ fn show(m: Option<&OrderMeasurement>) {
 }
 
 fn check(name: &'static str, embedded: bool, precision: Precision) {
-    let data = registry::find(name).unwrap();
+    let data = catalog::find(name).unwrap();
     let (scheme, declared) = if embedded {
         let main = Tableau::from_data(data).unwrap();
         let tableau = main.embedded_as_main().expect("has b_hat").unwrap();
@@ -145,7 +146,7 @@ macro_rules! convergence {
             fn every_catalog_method_is_tested() {
                 let listed: &[(&str, usize, Option<usize>)] =
                     &[$((stringify!($name), $order, convergence!(@opt $($embedded)?))),*];
-                for data in registry::BUTCHER {
+                for data in catalog::BUTCHER {
                     let entry = listed.iter().find(|e| e.0 == data.name);
                     assert_eq!(
                         entry,
@@ -154,7 +155,7 @@ macro_rules! convergence {
                         data.name
                     );
                 }
-                assert_eq!(listed.len(), registry::BUTCHER.len());
+                assert_eq!(listed.len(), catalog::BUTCHER.len());
             }
         }
     };
@@ -227,11 +228,11 @@ fn tree_system_is_complete_and_exact() {
 
 /// A tableau built from a catalog method with its weights replaced.
 fn with_weights(name: &str, b: Vec<f64>, order: usize, tolerance: Option<f64>) -> Tableau {
-    let data = registry::find(name).unwrap();
+    let data = catalog::find(name).unwrap();
     let s = data.stages;
     Tableau::new(
         format!("{name}-perturbed"),
-        &stormer::order::TableauSpec {
+        &stormer::verify::conditions::TableauSpec {
             a: data.a.chunks(s).map(<[f64]>::to_vec).collect(),
             b,
             c: Some(data.c.to_vec()),
@@ -255,7 +256,7 @@ fn measure_claimed(tableau: &Tableau, claimed: usize) -> Result<f64, String> {
 /// second-order method (it measures first order).
 #[test]
 fn negative_control_perturbed_heun_measures_lower() {
-    let data = registry::find("heun2").unwrap();
+    let data = catalog::find("heun2").unwrap();
     let mut b = data.b.to_vec();
     b[0] += 0.01;
     b[1] -= 0.01;
@@ -267,7 +268,7 @@ fn negative_control_perturbed_heun_measures_lower() {
 /// tolerance 1e-5 would accept as order 9) is not taken for order 9.
 #[test]
 fn negative_control_perturbed_verner9_is_not_order_9() {
-    let data = registry::find("verner9").unwrap();
+    let data = catalog::find("verner9").unwrap();
     let mut b = data.b.to_vec();
     b[0] += 1e-6;
     let tableau = with_weights("verner9", b, 9, Some(1e-5));
@@ -283,13 +284,13 @@ fn negative_control_perturbed_verner9_is_not_order_9() {
 /// system of order 9 exactly, leaving no error above rounding.
 #[test]
 fn negative_control_wrong_claims_fail() {
-    let dop853 = Tableau::from_data(registry::find("dop853").unwrap()).unwrap();
+    let dop853 = Tableau::from_data(catalog::find("dop853").unwrap()).unwrap();
     let order = measure_claimed(&dop853, 9).unwrap();
     assert!((order - 8.0).abs() <= TOLERANCE, "dop853 claimed as 9 measured {order}");
-    let rk4 = Tableau::from_data(registry::find("rk4").unwrap()).unwrap();
+    let rk4 = Tableau::from_data(catalog::find("rk4").unwrap()).unwrap();
     let order = measure_claimed(&rk4, 3).unwrap();
     assert!((order - 4.0).abs() <= TOLERANCE, "rk4 claimed as 3 measured {order}");
-    let verner9 = Tableau::from_data(registry::find("verner9").unwrap()).unwrap();
+    let verner9 = Tableau::from_data(catalog::find("verner9").unwrap()).unwrap();
     let order = measure_claimed(&verner9, 8);
     assert!(order.is_err(), "verner9 claimed as 8 measured {order:?}");
 }

@@ -4,9 +4,11 @@
 use crate::support::problems;
 
 use problems::{Decay, Oscillator};
+use stormer::hamiltonian::Hamiltonian;
 use stormer::magnetic::Charged;
 use stormer::models::{ChargedParticles, MagneticField};
-use stormer::{Hamiltonian, ImplicitOptions, Method, Problem};
+use stormer::stepper::ImplicitOptions;
+use stormer::{Method, Problem};
 
 /// `H = p^4/4 + q^2/2`: separable, but the kinetic energy is not quadratic.
 struct QuarticKinetic;

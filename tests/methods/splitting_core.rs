@@ -2,12 +2,15 @@
 //! expansion the `splitting!` macro must produce for velocity Verlet) against the run-time
 //! stepper of the same word, FSAL counting, and the type-level problem classes.
 
+use stormer::flows::Splittable;
 use stormer::flows::{General, QuadraticKinetic};
+use stormer::hamiltonian::Hamiltonian;
 use stormer::method::SplittingData;
-use stormer::{
-    Driver, Flags, Hamiltonian, Real, RuntimeSplitting, SecondOrder, Splittable, Splitting, SplittingMethod,
-};
-use stormer::{SplittingStepper, Stepper};
+use stormer::method::{Flags, Splitting, SplittingMethod};
+use stormer::stepper::RuntimeSplitting;
+use stormer::stepper::SplittingStepper;
+use stormer::Stepper;
+use stormer::{Driver, Real, SecondOrder};
 
 /// Velocity Verlet written out as the macro expands it: K(1/2) D(1) K(1/2).
 #[derive(Clone, Copy, Debug, Default)]
@@ -35,7 +38,11 @@ impl SplittingMethod for HandKdk {
     type Class = General;
     type Coeffs<T: Real> = [T; 3];
     fn coeffs<T: Real>() -> [T; 3] {
-        [stormer::lit(0.5), stormer::lit(1.0), stormer::lit(1.0)]
+        [
+            stormer::real::lit(0.5),
+            stormer::real::lit(1.0),
+            stormer::real::lit(1.0),
+        ]
     }
     #[inline(always)]
     fn flows<P: Splittable>(
@@ -153,7 +160,7 @@ impl SecondOrder for Coupled {
 fn every_catalog_splitting_matches_its_runtime_word_and_stage_count() {
     let y0 = [0.5, -0.3, 0.1, 0.2];
     let steps = 50;
-    for data in stormer::registry::SPLITTING {
+    for data in stormer::catalog::SPLITTING {
         let named = stormer::Method::named(data.name).unwrap();
         let mut compiled = named
             .compiled_stepper_for_quadratic(&Coupled, &y0, &Default::default())

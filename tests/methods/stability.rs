@@ -3,8 +3,9 @@
 //! oscillator a run at 0.99 times the limit stays bounded and a run at 1.01 times grows.
 //! Known values: Stormer-Verlet 2, RK4 2 sqrt(2).
 
-use stormer::order::stability::{butcher_interval, splitting_interval, Interval};
-use stormer::{registry, Driver, ImplicitOptions, Method, Stepper};
+use stormer::stepper::ImplicitOptions;
+use stormer::verify::conditions::stability::{butcher_interval, splitting_interval, Interval};
+use stormer::{catalog, Driver, Method, Stepper};
 
 use crate::support::problems;
 use problems::Oscillator;
@@ -12,12 +13,12 @@ use problems::Oscillator;
 const Y0: [f64; 2] = [1.0, 0.0];
 
 fn catalog() -> Vec<(&'static str, Interval)> {
-    let mut all: Vec<(&'static str, Interval)> = registry::BUTCHER
+    let mut all: Vec<(&'static str, Interval)> = catalog::BUTCHER
         .iter()
         .map(|d| (d.name, butcher_interval(d.a, d.b)))
         .collect();
     all.extend(
-        registry::SPLITTING
+        catalog::SPLITTING
             .iter()
             .map(|d| (d.name, splitting_interval(d.drift, d.kick))),
     );
@@ -70,8 +71,8 @@ fn known_limits() {
 /// (`t = |trace| / 2`) for a splitting.
 #[test]
 fn every_limit_is_confirmed_by_runs_on_both_sides() {
-    use stormer::order::stability::{butcher_growth, splitting_growth};
-    for data in registry::BUTCHER {
+    use stormer::verify::conditions::stability::{butcher_growth, splitting_growth};
+    for data in catalog::BUTCHER {
         let Interval::Bounded(limit) = butcher_interval(data.a, data.b) else {
             continue;
         };
@@ -96,7 +97,7 @@ fn every_limit_is_confirmed_by_runs_on_both_sides() {
             data.name
         );
     }
-    for data in registry::SPLITTING {
+    for data in catalog::SPLITTING {
         let Interval::Bounded(limit) = splitting_interval(data.drift, data.kick) else {
             continue;
         };
@@ -152,5 +153,5 @@ fn the_documented_table_is_the_computed_one() {
         assert_eq!(cells[3], expected, "{name}");
         rows += 1;
     }
-    assert_eq!(rows, registry::BUTCHER.len() + registry::SPLITTING.len());
+    assert_eq!(rows, catalog::BUTCHER.len() + catalog::SPLITTING.len());
 }

@@ -8,7 +8,8 @@ use outer_solar_system::{outer_solar_system, Outer};
 
 use stormer::corrector::{Corrected, CorrectorData};
 use stormer::models::{KeplerCoordinates, KeplerSplit, NBody};
-use stormer::{Driver, ImplicitOptions, Method, Problem};
+use stormer::stepper::ImplicitOptions;
+use stormer::{Driver, Method, Problem};
 
 fn split(scale: f64) -> (KeplerSplit<f64, Outer>, Outer) {
     let (bodies, y) = outer_solar_system(scale);

@@ -9,8 +9,8 @@ use kepler_reference::Conic;
 use num_dual::Dual64;
 use proptest::prelude::*;
 use stormer::kepler::{KeplerDrift, KeplerLanes, LagrangeCoefficients, LANES};
-use stormer::lit;
 use stormer::nalgebra::DMatrix;
+use stormer::real::lit;
 use stormer::verify::{defect_bound, symplectic_defect, Canonical, SYMPLECTIC_FACTOR};
 
 const EPS: f64 = f64::EPSILON;

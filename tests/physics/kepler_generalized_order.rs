@@ -27,8 +27,11 @@ use crate::support::power_law;
 use double_double::DoubleDouble as Dd;
 
 use num_traits::{Num, Zero};
+use stormer::flows::Splittable;
 use stormer::models::{KeplerCoordinates, KeplerSplit, NBody};
-use stormer::{lit, to_f64, Driver, ImplicitOptions, Method, Problem, Real, Splittable};
+use stormer::real::{lit, to_f64};
+use stormer::stepper::ImplicitOptions;
+use stormer::{Driver, Method, Problem, Real};
 
 type Split<T> = KeplerSplit<T, [T; 12]>;
 

@@ -9,7 +9,8 @@ use outer_solar_system::{outer_solar_system, Outer};
 use nalgebra::DMatrix;
 use proptest::prelude::*;
 use stormer::models::{DemocraticHeliocentric, Jacobi, KeplerCoordinates, KeplerSplit, NBody};
-use stormer::{registry, Driver, Error, ImplicitOptions, Method, Problem};
+use stormer::stepper::ImplicitOptions;
+use stormer::{catalog, Driver, Error, Method, Problem};
 
 fn split(coordinates: KeplerCoordinates) -> (KeplerSplit<f64, Outer>, Outer, Outer) {
     let (bodies, y) = outer_solar_system(1.0);
@@ -131,7 +132,7 @@ fn two_bodies_have_no_interaction() {
         let split = KeplerSplit::new(bodies.clone(), coordinates).unwrap();
         let q = split.from_scene(&y);
         let mut f = [1.0; 6];
-        stormer::Splittable::force(&split, 0.0, &q[..6], &mut f);
+        stormer::flows::Splittable::force(&split, 0.0, &q[..6], &mut f);
         // Jacobi: Newton's force minus the Kepler force, equal up to rounding
         assert!(max_abs(&f) <= 1e-16, "{coordinates:?}: {f:?}");
     }
@@ -215,7 +216,7 @@ fn every_splitting_of_the_catalog_runs_on_the_kepler_split() {
     for coordinates in KeplerCoordinates::ALL {
         let (split, _, y0) = split(coordinates);
         let mut worst = (0.0, "");
-        for data in registry::SPLITTING {
+        for data in catalog::SPLITTING {
             let method = Method::named(data.name).unwrap();
             let e = energy_error(&split, &method, &y0, 10.0, 4000.0);
             let bound = if data.order == 1 { 1e-5 } else { 1e-7 };

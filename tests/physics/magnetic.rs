@@ -1,13 +1,14 @@
 //! The magnetic sub-flow and the charged-particle methods: exact gyration at every angle,
 //! Boris's invariants, the E x B drift, and the splittings of the catalog on a charged
-//! particle (docs/scenes.md 5-6, PERFORMANCE.md's anchors).
+//! particle (docs/scenes.md 5-6, docs/anchors.md's anchors).
 
 use crate::support::users_magnetic_verlet;
 
 use std::marker::PhantomData;
 use stormer::magnetic::{Charged, Gyration, Lorentz};
+use stormer::real::{lit, to_f64};
 use stormer::stepper::{Boris, BorisRotation, EulerCromer};
-use stormer::{lit, to_f64, Driver, Method, Real, Stepper};
+use stormer::{Driver, Method, Real, Stepper};
 use users_magnetic_verlet::users_magnetic_verlet;
 
 /// A uniform field along axis 3 (`omega = (0, 0, w)`), a uniform acceleration `e`, and
@@ -243,7 +244,7 @@ fn boris_keeps_the_speed_in_a_non_uniform_magnetic_field() {
 /// Crossed uniform fields: started on the drift velocity u = omega x a / |omega|^2 the
 /// exact motion is q = u t. At omega h = 1 Boris (Cayley rotation) follows it exactly,
 /// while Boris with the exact rotation angle drifts at (x/2)/tan(x/2) times u, x = omega h
-/// (PERFORMANCE.md: exact rotation is not always better). The exact-gyration splitting
+/// (docs/anchors.md: exact rotation is not always better). The exact-gyration splitting
 /// (magnetic Verlet) is close to the drift too; its error is bounded here as measured.
 #[test]
 fn boris_gets_the_e_cross_b_drift_and_exact_phase_does_not_at_large_steps() {
@@ -302,7 +303,7 @@ fn velocity_verlet_with_the_gyration_drift_is_the_users_magnetic_verlet() {
 }
 
 /// The users' reference run (docs/scenes.md 5): q0 = (1, 1, 1), v0 = 0, w = 1, h = 0.01,
-/// T = 100: magnetic Verlet's max |dH| is about 3e-5 (PERFORMANCE.md), bounded by 1e-4
+/// T = 100: magnetic Verlet's max |dH| is about 3e-5 (docs/anchors.md), bounded by 1e-4
 /// here, with no drift: the worst error over [0, 1e4] stays below the same bound.
 #[test]
 fn magnetic_verlet_energy_error_on_coulomb_plus_field() {
@@ -410,7 +411,7 @@ fn magnetic_verlet_in_f32() {
 /// particle, even when a particle's field depends on where the others are.
 #[test]
 fn the_drift_reads_every_field_before_moving_any_particle() {
-    use stormer::Splittable;
+    use stormer::flows::Splittable;
     /// Particle 1 turns about z at a rate equal to particle 0's x coordinate.
     #[derive(Clone, Copy)]
     struct Coupled;

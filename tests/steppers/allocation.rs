@@ -6,7 +6,8 @@
 use crate::support::counting_alloc;
 use counting_alloc::allocations;
 use stormer::catalog::{Rk4, TripleJump4};
-use stormer::{Driver, ExplicitRk, Problem, SecondOrder, SplittingStepper, Stepper};
+use stormer::stepper::{ExplicitRk, SplittingStepper};
+use stormer::{Driver, Problem, SecondOrder, Stepper};
 
 struct Pendulum;
 

@@ -21,8 +21,9 @@
 
 use stormer::catalog::{TripleJump4, VelocityVerletKdk};
 use stormer::driver::Recorder;
-use stormer::order::splitting::Flow;
-use stormer::{Driver, Error, Method, SecondOrder, SplittingMethod};
+use stormer::method::SplittingMethod;
+use stormer::verify::conditions::splitting::Flow;
+use stormer::{Driver, Error, Method, SecondOrder};
 
 /// The state length of the acceptance ensemble: 16 oscillators.
 const ENSEMBLE: usize = 32;

@@ -14,12 +14,13 @@ use std::marker::PhantomData;
 use stormer::catalog::{
     Dop853, DormandPrince5, GaussLegendre4, ImplicitMidpoint, RadauIia5, Rk4, TripleJump4, VelocityVerletKdk,
 };
+use stormer::driver::StepControl;
+use stormer::flows::Splittable;
 use stormer::magnetic::{Charged, Lorentz};
+use stormer::method::{ButcherMethod, Splitting, Tableau};
 use stormer::stepper::{Boris, BorisRotation, Composed};
-use stormer::{
-    ButcherMethod, Driver, Error, ImplicitOptions, ImplicitRk, Problem, Real, RuntimeRk, RuntimeSplitting, SecondOrder,
-    Splittable, Splitting, SplittingStepper, StepControl, Stepper, Tableau, Tolerances,
-};
+use stormer::stepper::{ImplicitOptions, ImplicitRk, RuntimeRk, RuntimeSplitting, SplittingStepper, Tolerances};
+use stormer::{Driver, Error, Problem, Real, SecondOrder, Stepper};
 
 /// A compiled splitting's boxed stepper for problem `P`.
 type SplittingStepperFn<P> = fn(&<P as Problem>::State) -> Result<Box<dyn Stepper<P>>, Error>;

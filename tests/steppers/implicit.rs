@@ -18,11 +18,11 @@ use stormer::catalog::{
     BackwardEuler, GaussLegendre4, GaussLegendre6, ImplicitMidpoint, LobattoIiia4, LobattoIiib4, LobattoIiic4,
     RadauIia3, RadauIia5, Rk4, Trapezoidal,
 };
+use stormer::method::{ButcherMethod, Tableau};
+use stormer::real::{lit, to_f64};
 use stormer::stepper::Counters;
-use stormer::{
-    lit, to_f64, ButcherMethod, Driver, Error, ExplicitRk, ImplicitOptions, ImplicitRk, ImplicitSolver, Problem, Real,
-    RuntimeRk, State, Stepper, Tableau, Tolerances,
-};
+use stormer::stepper::{ExplicitRk, ImplicitOptions, ImplicitRk, ImplicitSolver, RuntimeRk, Tolerances};
+use stormer::{Driver, Error, Problem, Real, State, Stepper};
 
 // ---------------------------------------------------------------------------------------
 // Allocation counting, per thread (tests run in parallel threads of this binary).
@@ -671,7 +671,7 @@ fn lobatto_iiib4_refuses_adaptive_steps() {
 #[test]
 fn lobatto_iiib4_with_the_catalog_pair_put_back_grows_its_step_without_limit() {
     let iiib = tableau::<LobattoIiib4>();
-    let spec = stormer::order::TableauSpec {
+    let spec = stormer::verify::conditions::TableauSpec {
         a: iiib.a().chunks(3).map(<[f64]>::to_vec).collect(),
         b: iiib.b().to_vec(),
         c: Some(iiib.c().to_vec()),

@@ -1,5 +1,5 @@
 // McLachlan-Atela 4 as OrdinaryDiffEq.jl's `McAte4` applies it: the catalog's numbers with
-// the roles of drift and kick swapped (shared/methods/NOTES.md, pitfall 2). Even with a
+// the roles of drift and kick swapped (docs/anchors.md, the pitfall). Even with a
 // quadratic kinetic energy it is of order 3: an order-4 condition of that class fails.
 stormer::splitting! {
     pub struct McAte4Swapped {

@@ -1,6 +1,8 @@
 // A method built for quadratic kinetic energies does not step a problem that is not
 // `QuadraticKinetic`: the type system refuses it.
-use stormer::{Hamiltonian, SplittingStepper, Stepper};
+use stormer::Stepper;
+use stormer::hamiltonian::Hamiltonian;
+use stormer::stepper::SplittingStepper;
 
 stormer::splitting! {
     pub struct RknOnly {

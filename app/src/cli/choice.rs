@@ -1,7 +1,7 @@
 //! What `--method` names, as the library's [`Method`]: the theta method takes its weight
 //! from `--alpha`; every other name, alias or method file is [`Method::resolve`]'s.
 
-use stormer::registry::normalize;
+use stormer::catalog::normalize;
 use stormer::{Error, Method};
 
 /// Resolves `name` once for a run: `theta` (with `alpha`, default 1/2), or what

@@ -1,12 +1,12 @@
 //! `stormer methods`: the catalog as a table or as JSON, then the charged-particle steppers
 //! and the relativistic pushers (with what each conserves, under the table);
-//! each method with the names other libraries give it (`registry::ALIASES`).
+//! each method with the names other libraries give it (`catalog::ALIASES`).
 
 use super::output::{print, yes_no};
 use super::TableFormat;
-use stormer::registry::{aliases_of, BUTCHER, SPLITTING};
+use stormer::catalog::{aliases_of, BUTCHER, SPLITTING};
+use stormer::method::MethodInfo;
 use stormer::stepper::{PARTICLE_METHODS, RELATIVISTIC_METHODS};
-use stormer::MethodInfo;
 
 /// The table's columns, in order.
 const HEADER: [&str; 10] = [
@@ -70,7 +70,7 @@ fn json(m: &MethodInfo) -> Row<'_> {
         fsal: m.flags.fsal,
         symplectic: m.flags.symplectic,
         symmetric: m.flags.symmetric,
-        dense_order: m.dense_order.unwrap_or(stormer::hermite_order(m.order)),
+        dense_order: m.dense_order.unwrap_or(stormer::driver::hermite_order(m.order)),
         aliases: aliases_of(&m.name).collect(),
     }
 }

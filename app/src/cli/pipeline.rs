@@ -8,10 +8,10 @@
 use super::section::Section;
 use std::borrow::Cow;
 use std::sync::atomic::AtomicBool;
+use stormer::driver::{Crossing, EventHit, Stats, StepControl};
 use stormer::driver::{Recorder, StopEvent};
-use stormer::{
-    Crossing, Driver, Error, EventHit, ImplicitOptions, Method, State, Stats, StepControl, Stepper, Tolerances,
-};
+use stormer::stepper::{ImplicitOptions, Tolerances};
+use stormer::{Driver, Error, Method, State, Stepper};
 use stormer_app::scenes::{Scene, Setup};
 
 /// How the steps are chosen.
@@ -310,11 +310,7 @@ impl<'s, S: Scene> SceneRun<'s, S> {
         let stop = self.setup.model.stop()?;
         Some(match stopped {
             Some(event) => (stop.report)(&self.setup.model, event.t, &event.y),
-            None => format!(
-                "no {} before t = {}",
-                stop.event,
-                stormer::diagnostics::number(self.t_end)
-            ),
+            None => format!("no {} before t = {}", stop.event, stormer::text::number(self.t_end)),
         })
     }
 

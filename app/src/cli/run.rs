@@ -8,9 +8,11 @@ use super::section::{Section, WithSection};
 use anyhow::anyhow;
 use std::io::Write;
 use std::path::{Path, PathBuf};
-use stormer::diagnostics::number;
+use stormer::driver::Stats;
 use stormer::models::KeplerCoordinates;
-use stormer::{Error, ImplicitOptions, Stats, Tolerances};
+use stormer::stepper::{ImplicitOptions, Tolerances};
+use stormer::text::number;
+use stormer::Error;
 use stormer_app::scenes::{self, Scene, SceneVisitor, Setup};
 
 /// Arguments of `stormer run`; every value defaults to the scene file's.

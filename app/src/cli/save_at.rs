@@ -40,13 +40,7 @@ pub fn parse(text: &str) -> Result<Vec<f64>, Error> {
             }
             let n = last as usize;
             Ok((0..=n)
-                .map(|i| {
-                    if i == n && whole {
-                        end
-                    } else {
-                        start + step * i as f64
-                    }
-                })
+                .map(|i| if i == n && whole { end } else { start + step * i as f64 })
                 .collect())
         }
         [list] => list.split(',').map(number).collect(),

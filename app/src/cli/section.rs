@@ -7,8 +7,9 @@ use super::output::CsvRecorder;
 use super::pictures::Pictures;
 use super::plot::{Chart, Series};
 use std::path::PathBuf;
+use stormer::driver::EventHit;
 use stormer::driver::Recorder;
-use stormer::{Error, EventHit};
+use stormer::Error;
 use stormer_app::scenes::{Scene, Setup};
 
 /// A parsed `--section`: the state component `column` crosses `value`, where `side` holds.

@@ -8,8 +8,9 @@ use super::section::Section as PoincareSection;
 use super::tour_page::{self, Picture, Section};
 use anyhow::Context;
 use std::path::{Path, PathBuf};
+use stormer::driver::EventHit;
 use stormer::driver::Recorder;
-use stormer::{Error, EventHit, State};
+use stormer::{Error, State};
 use stormer_app::scenes::{self, Scene, SceneVisitor, Setup, Units};
 
 /// Arguments of `stormer tour`.
@@ -827,7 +828,7 @@ fn work_precision(out: &Path) -> anyhow::Result<Section> {
                 caption: caption(&name).into(),
             });
         } else if name.ends_with(".md") && table.is_empty() {
-            let text = stormer::input::read_text(&path).map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
+            let text = stormer::text::read_text(&path).map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
             table = text
                 .lines()
                 .filter(|l| l.starts_with('|') && !l.contains("---"))

@@ -9,9 +9,10 @@ use super::output::{print, yes_no};
 use super::verify_checks::{self, JsonChecks};
 use super::{verify_splitting, TextFormat};
 use std::fmt::Write as _;
-use stormer::order::{achieved_order, DEFAULT_TOLERANCE, MAX_ORDER};
+use stormer::method::{Splitting, Tableau};
 use stormer::verify;
-use stormer::{Error, Method, Splitting, Tableau};
+use stormer::verify::conditions::{achieved_order, DEFAULT_TOLERANCE, MAX_ORDER};
+use stormer::{Error, Method};
 
 /// What `verify` reports about a tableau.
 struct Report {
@@ -224,7 +225,7 @@ pub(super) struct ConditionRow<'a> {
 }
 
 impl<'a> ConditionRow<'a> {
-    fn tableau(c: &'a stormer::order::Condition) -> Self {
+    fn tableau(c: &'a stormer::verify::conditions::Condition) -> Self {
         ConditionRow {
             order: c.order,
             condition: &c.text,
@@ -237,7 +238,7 @@ impl<'a> ConditionRow<'a> {
         }
     }
 
-    pub(super) fn splitting(c: &'a stormer::order::SplitCondition) -> Self {
+    pub(super) fn splitting(c: &'a stormer::verify::conditions::SplitCondition) -> Self {
         ConditionRow {
             order: c.order,
             condition: &c.text,
@@ -321,7 +322,7 @@ pub fn run(method: &str, format: TextFormat) -> anyhow::Result<()> {
     let choice = super::choice::resolve(method, None)?;
     // what was read from a file (a path, or a bare name the catalog does not know)
     let from_file = matches!(choice, Method::RuntimeTableau(_) | Method::RuntimeSplitting(_))
-        && stormer::registry::normalize(method) != "theta";
+        && stormer::catalog::normalize(method) != "theta";
     let source = if from_file {
         method.to_string()
     } else {
@@ -331,7 +332,7 @@ pub fn run(method: &str, format: TextFormat) -> anyhow::Result<()> {
         Method::Splitting(d) => splitting_report(Splitting::from_data(d)?, source, &choice, format)?,
         Method::RuntimeSplitting(s) => splitting_report(s.clone(), source, &choice, format)?,
         Method::Tableau(d) => tableau_report(Tableau::from_data(d)?, source, &choice, format)?,
-        Method::RuntimeTableau(t) if stormer::registry::normalize(method) == "theta" => {
+        Method::RuntimeTableau(t) if stormer::catalog::normalize(method) == "theta" => {
             tableau_report(t.clone(), "the theta method (alpha = 1/2)".into(), &choice, format)?
         }
         Method::RuntimeTableau(t) => tableau_report(t.clone(), source, &choice, format)?,

@@ -3,7 +3,7 @@
 
 use super::output::yes_no;
 use std::fmt::Write as _;
-use stormer::order::stability::{Interval, SCAN_LIMIT};
+use stormer::verify::conditions::stability::{Interval, SCAN_LIMIT};
 use stormer::verify::problems::TreeSystem;
 use stormer::verify::{Check, OrderError, OrderMeasurement, Report, REVERSIBLE_FACTOR, SYMPLECTIC_FACTOR};
 use stormer::Error;

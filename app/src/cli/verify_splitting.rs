@@ -6,10 +6,10 @@ use super::output::yes_no;
 use super::verify::{condition_table, properties, ConditionRow};
 use super::verify_checks::{self, JsonChecks};
 use std::fmt::Write as _;
-use stormer::order::splitting::Flow;
-use stormer::order::OrderClass;
+use stormer::method::Splitting;
+use stormer::verify::conditions::splitting::Flow;
+use stormer::verify::conditions::OrderClass;
 use stormer::verify::Report as Checks;
-use stormer::Splitting;
 
 /// What `verify` reports about a splitting or composition.
 pub struct Report {

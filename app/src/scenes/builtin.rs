@@ -101,7 +101,7 @@ pub fn builtin(name: &str) -> Option<&'static BuiltinScene> {
 }
 
 /// Loads a scene: a built-in name, or a path to a `.toml` scene file (read through the
-/// bound of [`stormer::input`]).
+/// bound of [`stormer::text`]).
 ///
 /// ```
 /// let scene = stormer_app::scenes::load("harmonic").unwrap();
@@ -153,7 +153,7 @@ pub fn source(name_or_path: &str) -> Result<SceneSource, Error> {
         });
     }
     let origin = path.display().to_string();
-    let text = stormer::input::read_text(path).map_err(|reason| Error::Scene {
+    let text = stormer::text::read_text(path).map_err(|reason| Error::Scene {
         file: origin.clone(),
         reason,
     })?;

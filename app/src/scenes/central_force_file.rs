@@ -93,7 +93,9 @@ impl Scene for CentralForce<f64, DVector<f64>> {
 mod tests {
     use super::*;
     use crate::scenes::{load, parse, AnyScene};
-    use stormer::{catalog::Dop853, Driver, ExplicitRk};
+    use stormer::catalog::Dop853;
+    use stormer::stepper::ExplicitRk;
+    use stormer::Driver;
 
     #[test]
     fn kepler_e06_is_the_anchor_orbit() {

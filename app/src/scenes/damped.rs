@@ -3,7 +3,8 @@
 use super::file::{Number, Source};
 use super::{Built, OscillatorInitial, Scene};
 use serde::Deserialize;
-use stormer::{Families, Problem};
+use stormer::method::Families;
+use stormer::Problem;
 
 /// The damped oscillator `x'' = -w0^2 x - (w0/Q) x'`, state `[x, v]`.
 ///
@@ -128,7 +129,9 @@ impl Scene for DampedOscillator {
 #[allow(clippy::float_cmp)] // values read from a file or computed exactly are compared exactly
 mod tests {
     use super::*;
-    use stormer::{catalog::Dop853, Driver, ExplicitRk};
+    use stormer::catalog::Dop853;
+    use stormer::stepper::ExplicitRk;
+    use stormer::Driver;
 
     /// The exact solution against a DOP853 integration, in each damping regime.
     fn check(w0: f64, q: f64, y0: [f64; 2]) -> f64 {

@@ -4,7 +4,7 @@
 
 use super::{Scene, Setup};
 use serde::Deserialize;
-use stormer::diagnostics::{line_column, one_line, toml_message};
+use stormer::text::{line_column, one_line, toml_message};
 use stormer::Error;
 use toml::Spanned;
 

@@ -5,7 +5,8 @@ use super::file::{Number, Source};
 use super::{Built, Scene, Stop};
 use serde::Deserialize;
 use stormer::magnetic::gyration_coefficients;
-use stormer::{Error, Families, Problem};
+use stormer::method::Families;
+use stormer::{Error, Problem};
 
 /// A ball of radius `R` and mass `m`, spinning at `spin` rad/s about the horizontal axis
 /// `y` perpendicular to its (vertical) plane of motion `(x, z)`, `z` up:
@@ -247,7 +248,8 @@ mod tests {
     use crate::scenes::{load, parse, AnyScene};
     use std::f64::consts::PI;
     use stormer::catalog::Dop853;
-    use stormer::{Driver, ExplicitRk};
+    use stormer::stepper::ExplicitRk;
+    use stormer::Driver;
 
     #[test]
     fn the_builtin_scene_has_the_users_values() {

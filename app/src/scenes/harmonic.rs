@@ -102,7 +102,9 @@ impl Scene for Harmonic {
 #[allow(clippy::float_cmp)] // values read from a file or computed exactly are compared exactly
 mod tests {
     use super::*;
-    use stormer::{catalog::Dop853, Driver, ExplicitRk};
+    use stormer::catalog::Dop853;
+    use stormer::stepper::ExplicitRk;
+    use stormer::Driver;
 
     #[test]
     fn exact_solution_solves_the_equation() {

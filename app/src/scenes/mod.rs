@@ -77,7 +77,8 @@ use serde::de::DeserializeOwned;
 use stormer::magnetic::Charged;
 use stormer::method::StepperResult;
 use stormer::models::{CentralForce, NBody};
-use stormer::{Error, ImplicitOptions, Method, Problem};
+use stormer::stepper::ImplicitOptions;
+use stormer::{Error, Method, Problem};
 
 /// A model of a scene: a problem in `f64` that knows how a scene file describes it.
 ///
@@ -153,7 +154,7 @@ macro_rules! compiled_in_release {
             &self,
             method: &stormer::Method,
             y0: &Self::State,
-            implicit: &stormer::ImplicitOptions,
+            implicit: &stormer::stepper::ImplicitOptions,
         ) -> stormer::method::StepperResult<Self> {
             method.$dispatch(self, y0, implicit)
         }

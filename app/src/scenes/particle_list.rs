@@ -16,7 +16,7 @@
 use super::charged_file::{mass_and_charge, vector3, ParticleEntry};
 use super::file::Source;
 use super::nbody_file::{column, Taken};
-use stormer::splitmix64::SplitMix64;
+use stormer::models::SplitMix64;
 use stormer::Error;
 use toml::Spanned;
 

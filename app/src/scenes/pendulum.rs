@@ -86,7 +86,9 @@ mod tests {
     use super::*;
     use std::f64::consts::{FRAC_PI_4, FRAC_PI_8, PI};
     use stormer::catalog::{Dop853, Euler, Rk4};
-    use stormer::{Driver, ExplicitMethod, ExplicitRk};
+    use stormer::method::ExplicitMethod;
+    use stormer::stepper::ExplicitRk;
+    use stormer::Driver;
 
     /// Time of the first located sign change of `g` after the start, released at rest
     /// from pi/4.

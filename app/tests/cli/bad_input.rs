@@ -8,7 +8,7 @@ use proptest::prelude::*;
 use std::collections::HashMap;
 use std::path::Path;
 use std::process::Command;
-use stormer::{Splitting, Tableau};
+use stormer::method::{Splitting, Tableau};
 use stormer_app::scenes;
 
 fn corpus() -> Vec<std::path::PathBuf> {

@@ -128,7 +128,8 @@ fn adaptive_dop853_on_the_harmonic_oscillator() {
 
 #[test]
 fn csv_round_trip_is_bitwise() {
-    use stormer::{Driver, ImplicitOptions, Method};
+    use stormer::stepper::ImplicitOptions;
+    use stormer::{Driver, Method};
     use stormer_app::scenes::Pendulum;
     let dir = workdir("roundtrip");
     let (_, header, rows) = run_csv(
@@ -1023,7 +1024,7 @@ fn exb_drift_with_boris_moves_with_the_drift_velocity() {
     // and the particle itself follows the exact cycloid to Boris's phase error
     assert!(summary_number(&summary, "max error vs exact") < 1e-3, "{summary}");
 
-    // PERFORMANCE.md's trade-off at omega h = 1: started on the drift velocity, Boris moves
+    // docs/anchors.md's trade-off at omega h = 1: started on the drift velocity, Boris moves
     // exactly with it, Boris with the exact phase lags by u t (1 - (x/2)/tan(x/2)), x = 1
     let show = stormer(&dir, &["scene", "show", "exb-drift"]);
     let text = stdout(&show).replace("velocity = [0.0, 0.0, 0.0]", "velocity = [0.0, -0.5, 0.0]");

@@ -220,7 +220,7 @@ fn methods_lists_the_aliases() {
         .iter()
         .map(|m| m["aliases"].as_array().unwrap().len())
         .sum();
-    assert_eq!(listed, stormer::registry::ALIASES.len());
+    assert_eq!(listed, stormer::catalog::ALIASES.len());
     let table = stormer(&dir, &["methods"]);
     let text = String::from_utf8_lossy(&table.stdout);
     assert!(text.lines().next().unwrap().trim_end().ends_with("aliases"), "{text}");

@@ -4,7 +4,9 @@
 
 use std::sync::atomic::{AtomicBool, Ordering};
 use stormer::catalog::{Dop853, Euler};
-use stormer::{Driver, Error, ExplicitRk, Interrupted, Problem, Tolerances};
+use stormer::driver::Interrupted;
+use stormer::stepper::{ExplicitRk, Tolerances};
+use stormer::{Driver, Error, Problem};
 
 // `y' = y^2`, `y(0) = 1`: `y = 1 / (1 - t)`, infinite at t = 1 (`BlowUp`); `x'' = -x`
 // (`Oscillator`).

@@ -2,8 +2,10 @@
 //! the speed at apocentre), through the scene machinery (`model = "central-force"`).
 
 use nalgebra::DVector;
+use stormer::driver::Solution;
 use stormer::models::CentralForce;
-use stormer::{Driver, Method, Solution, Stepper, Tolerances};
+use stormer::stepper::Tolerances;
+use stormer::{Driver, Method, Stepper};
 use stormer_app::scenes::{self, AnyScene, Setup};
 
 type Kepler = CentralForce<f64, DVector<f64>>;

@@ -17,8 +17,10 @@
 use nalgebra::DVector;
 use stormer::magnetic::{Charged, Lorentz};
 use stormer::models::{CentralForce, KeplerSplit, NBody};
+use stormer::real::lit;
+use stormer::stepper::Tolerances;
 use stormer::stepper::PARTICLE_METHODS;
-use stormer::{lit, registry, Driver, Method, Problem, Real, SecondOrder, State, Stepper, Tolerances};
+use stormer::{catalog, Driver, Method, Problem, Real, SecondOrder, State, Stepper};
 use stormer_app::scenes::{self, AnyScene, Scene, Setup};
 
 /// Steps per run: enough for round-off to accumulate, few enough for a debug build.
@@ -105,7 +107,7 @@ fn measure<S: Scene, P: Problem<Scalar = f32> + 'static>(setup: &Setup<S>, twin:
         .run(&setup.model, &mut dop853, 0.0, &setup.y0, t_end)
         .unwrap();
     let reference = reference.y.last().unwrap().as_slice().to_vec();
-    let names = registry::names().chain(PARTICLE_METHODS.iter().map(|m| m.name()));
+    let names = catalog::names().chain(PARTICLE_METHODS.iter().map(|m| m.name()));
     for name in names {
         let Some(mut s64) = f64_stepper(setup, name) else {
             continue;
@@ -406,9 +408,9 @@ fn every_method_runs_in_f32_on_every_scene_within_f32_bounds() {
             .find(|b| b.0 == s.name)
             .unwrap_or_else(|| panic!("a new scene, {}: measure it and add its bounds", s.name));
         let m = scene(s.name);
-        let butcher = registry::BUTCHER.len();
+        let butcher = catalog::BUTCHER.len();
         assert!(m.methods >= butcher, "{}: {} methods ran", s.name, m.methods);
-        let embedded = registry::BUTCHER.iter().filter(|d| d.embedded_order.is_some()).count();
+        let embedded = catalog::BUTCHER.iter().filter(|d| d.embedded_order.is_some()).count();
         assert_eq!(m.adaptive_runs, embedded, "{}", s.name);
         eprintln!(
             "MEASURED {} {:?} {:?} {:?} {:?}",

@@ -82,8 +82,8 @@ fn steps_of_1e_9_periods_keep_an_exact_time_grid_and_round_off_errors() {
 #[test]
 fn a_tiny_first_step_guess_grows() {
     let s = setup();
-    let control = stormer::StepControl::Adaptive {
-        tol: stormer::Tolerances::new(1e-8, 1e-8),
+    let control = stormer::driver::StepControl::Adaptive {
+        tol: stormer::stepper::Tolerances::new(1e-8, 1e-8),
         h0: Some(1e-16),
         h_max: None,
     };

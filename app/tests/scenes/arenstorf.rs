@@ -6,8 +6,10 @@
 // The run ends on the scene's end time exactly.
 #![allow(clippy::float_cmp)]
 
+use stormer::driver::{Solution, StepControl};
 use stormer::magnetic::Charged;
-use stormer::{registry, Driver, ImplicitOptions, Method, Problem, Solution, StepControl, Stepper, Tolerances};
+use stormer::stepper::{ImplicitOptions, Tolerances};
+use stormer::{catalog, Driver, Method, Problem, Stepper};
 use stormer_app::scenes::{self, AnyScene, RestrictedThreeBody, Setup};
 
 use crate::support::refusals;
@@ -39,7 +41,7 @@ fn one_period(
 }
 
 fn splitting(s: &Setup<Charged<RestrictedThreeBody>>, name: &str) -> Box<dyn Stepper<Charged<RestrictedThreeBody>>> {
-    let method = Method::Splitting(registry::find_splitting(name).unwrap());
+    let method = Method::Splitting(catalog::find_splitting(name).unwrap());
     method.stepper_for(&s.model, &s.y0, &Default::default()).unwrap()
 }
 

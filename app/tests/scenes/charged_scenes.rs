@@ -3,8 +3,10 @@
 
 use nalgebra::DVector;
 use stormer::magnetic::Charged;
+use stormer::method::Splitting;
 use stormer::models::ChargedParticles;
-use stormer::{registry, Driver, Method, RuntimeSplitting, Splitting, Stepper};
+use stormer::stepper::RuntimeSplitting;
+use stormer::{catalog, Driver, Method, Stepper};
 use stormer_app::scenes::{self, AnyScene, ChargedScene, Setup};
 
 fn setup(name: &str) -> Setup<ChargedScene> {
@@ -163,7 +165,7 @@ fn in_the_magnetic_bottle_boris_is_second_order_and_the_splittings_first() {
         assert!((measured - expected).abs() < 0.1, "{name}: order {measured}");
     }
     // the scene refuses the splittings, saying why
-    let verlet = registry::find_splitting("velocity_verlet_kdk").unwrap();
+    let verlet = catalog::find_splitting("velocity_verlet_kdk").unwrap();
     let refused = Method::Splitting(verlet)
         .stepper_for(&s.model, &s.y0, &Default::default())
         .err()
@@ -174,7 +176,7 @@ fn in_the_magnetic_bottle_boris_is_second_order_and_the_splittings_first() {
     // update docs/charged-particles.md and scenes/magnetic-bottle.toml
     for name in ["velocity_verlet_kdk", "kahan_li6"] {
         let run = |n: usize| {
-            let word = Splitting::from_data(registry::find_splitting(name).unwrap()).unwrap();
+            let word = Splitting::from_data(catalog::find_splitting(name).unwrap()).unwrap();
             let mut st = RuntimeSplitting::<DVector<f64>, _>::new(&word, &s.y0).unwrap();
             let sol = Driver::fixed(t_end / n as f64)
                 .every(u64::MAX)

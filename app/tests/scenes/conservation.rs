@@ -18,7 +18,8 @@
 
 use nalgebra::DVector;
 use stormer::models::NBody;
-use stormer::{Driver, ImplicitOptions, Method, Stepper};
+use stormer::stepper::ImplicitOptions;
+use stormer::{Driver, Method, Stepper};
 use stormer_app::scenes::{self, AnyScene, Setup};
 
 type Scene = Setup<NBody<f64, DVector<f64>>>;
@@ -60,7 +61,7 @@ fn run(scene: &Scene, method: &str, steps: u64) -> Drift {
             let kicks = d
                 .word()
                 .iter()
-                .filter(|op| op.flow == stormer::order::splitting::Flow::Kick)
+                .filter(|op| op.flow == stormer::verify::conditions::splitting::Flow::Kick)
                 .count();
             (stepper.unwrap(), kicks as u64, d.word().len() as u64)
         }

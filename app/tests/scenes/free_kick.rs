@@ -4,7 +4,9 @@
 //! `Omega = -mu R^3 rho |omega| / m`.
 
 use std::f64::consts::PI;
-use stormer::{Crossing, Driver, ImplicitOptions, Method, Problem, Solution, StepControl, StopEvent, Tolerances};
+use stormer::driver::{Crossing, Solution, StepControl, StopEvent};
+use stormer::stepper::{ImplicitOptions, Tolerances};
+use stormer::{Driver, Method, Problem};
 use stormer_app::scenes::{self, AnyScene, Scene, Setup, SpinningBall};
 
 use crate::support::{binary, refusals};

@@ -1,4 +1,4 @@
-//! Kepler's problem with e = 0.6 at 1000 steps per orbit (PERFORMANCE.md's accuracy
+//! Kepler's problem with e = 0.6 at 1000 steps per orbit (docs/anchors.md's accuracy
 //! anchor, the `kepler-e06` scene): a 4th-order composition's error grows linearly in
 //! time (about x10 per decade of orbits) and its energy error stays bounded; RK4's error
 //! grows quadratically (x50-90 per decade) and its energy drifts linearly.
@@ -15,7 +15,8 @@
 
 use stormer::catalog::{Rk4, TripleJump4};
 use stormer::models::{CentralForce, Orbit};
-use stormer::{ExplicitRk, Problem, SplittingStepper, Stepper};
+use stormer::stepper::{ExplicitRk, SplittingStepper};
+use stormer::{Problem, Stepper};
 use stormer_app::scenes::{self, AnyScene};
 
 type Kepler = CentralForce<f64, [f64; 4]>;
@@ -69,7 +70,7 @@ fn growth(v: &[f64]) -> Vec<f64> {
     v.windows(2).map(|w| w[1] / w[0]).collect()
 }
 
-/// The claims, with PERFORMANCE.md's figures and 2.5x headroom: composition error x10 per
+/// The claims, with docs/anchors.md's figures and 2.5x headroom: composition error x10 per
 /// decade (linear: within [4, 25]); RK4 x50-90 per decade (quadratic: within [20, 225])
 /// and at least twice the composition's, from 10 orbits on (RK4's error is `a t + b t^2`:
 /// over the first decade the linear phase error still counts, measured x19); RK4's energy

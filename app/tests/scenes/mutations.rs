@@ -9,7 +9,7 @@ use crate::support::mutate;
 use mutate::{apply, edits, keys, names_a_line_or_field, Edit};
 use proptest::prelude::*;
 use std::time::{Duration, Instant};
-use stormer::{Splitting, Tableau};
+use stormer::method::{Splitting, Tableau};
 use stormer_app::scenes::{self, BUILTIN};
 
 /// Per case, far above the milliseconds a case takes: a guard against a hang, not a

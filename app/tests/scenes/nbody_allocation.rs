@@ -8,8 +8,10 @@
 use crate::library_support::counting_alloc;
 use counting_alloc::allocations;
 use stormer::catalog::{TripleJump4, VelocityVerletKdk};
+use stormer::method::SplittingMethod;
 use stormer::models::NBody;
-use stormer::{Driver, SplittingMethod, SplittingStepper, Stepper};
+use stormer::stepper::SplittingStepper;
+use stormer::{Driver, Stepper};
 use stormer_app::scenes::{self, AnyScene};
 
 type Static = NBody<f64, [f64; 24]>;

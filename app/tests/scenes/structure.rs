@@ -15,9 +15,10 @@ mod scene_structure {
     use nalgebra::DVector;
     use stormer::magnetic::Charged;
     use stormer::models::ChargedParticles;
+    use stormer::real::lit;
     use stormer::stepper::ParticleMethod;
     use stormer::verify::{defect_bound, jacobian_dual, symplectic_defect, Dual64, SYMPLECTIC_FACTOR};
-    use stormer::{lit, Method, Stepper};
+    use stormer::{Method, Stepper};
     use stormer_app::scenes::{self, AnyScene};
 
     type Model = ChargedParticles<Dual64, DVector<Dual64>>;

@@ -21,9 +21,12 @@
 //! the negative control shows.
 
 use stormer::catalog::VelocityVerletKdk;
+use stormer::flows::QuadraticKinetic;
+use stormer::hamiltonian::Hamiltonian;
 use stormer::models::NBody;
+use stormer::stepper::SplittingStepper;
 use stormer::stepper::StormerTwoStep;
-use stormer::{Hamiltonian, Problem, QuadraticKinetic, SplittingStepper, State, Stepper};
+use stormer::{Problem, State, Stepper};
 use stormer_app::scenes::{self, AnyScene, Pendulum};
 
 /// Max over `steps` steps of the position and velocity differences between the two

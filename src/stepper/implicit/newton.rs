@@ -1,10 +1,11 @@
 //! The simplified Newton iteration of Hairer & Wanner (*Solving ODEs II*, IV.8): one
 //! finite-difference Jacobian and one LU factorisation per step.
 
+use crate::real::lit;
 use crate::real::magnitude;
 #[allow(unused_imports)]
 use crate::real::ops::*;
-use crate::{lit, Error, Problem, Real, State};
+use crate::{Error, Problem, Real, State};
 use nalgebra::{DMatrix, DVector, Dyn, LU};
 
 /// The Newton workspace, allocated on the first Newton step and reused.

@@ -6,11 +6,13 @@
 
 use super::{catalog_report, catalog_reports};
 use num_dual::Dual32;
-use stormer::registry;
+use stormer::catalog;
+use stormer::real::lit;
+use stormer::stepper::ImplicitOptions;
 use stormer::verify::problems::Pendulum;
 use stormer::verify::{defect_bound, jacobian_dual, symplectic_defect, Canonical, SYMPLECTIC_FACTOR};
-use stormer::{lit, Stepper};
-use stormer::{ImplicitOptions, Method};
+use stormer::Method;
+use stormer::Stepper;
 
 /// What `stormer verify --format json` reports as `measured_order` (and
 /// `measured_embedded_order`) is within 0.2 of the declared order, for all 89 methods of
@@ -19,7 +21,7 @@ use stormer::{ImplicitOptions, Method};
 #[test]
 fn every_catalog_method_measures_its_declared_order_in_the_report() {
     let reports = catalog_reports();
-    assert_eq!(reports.len(), registry::BUTCHER.len() + registry::SPLITTING.len());
+    assert_eq!(reports.len(), catalog::BUTCHER.len() + catalog::SPLITTING.len());
     assert_eq!(reports.len(), 89);
     let mut embedded = 0;
     for r in reports {
@@ -27,7 +29,7 @@ fn every_catalog_method_measures_its_declared_order_in_the_report() {
         let m = r.order.as_ref().unwrap_or_else(|e| panic!("{name}: {e}"));
         let expected = if r.info.family == "butcher" {
             "tree_system"
-        } else if registry::find_splitting(name).unwrap().requires_quadratic_kinetic {
+        } else if catalog::find_splitting(name).unwrap().requires_quadratic_kinetic {
             "henon_heiles"
         } else {
             "quartic_kinetic"
@@ -58,7 +60,7 @@ fn every_catalog_method_measures_its_declared_order_in_the_report() {
 #[test]
 fn the_symplecticity_condition_of_every_tableau_agrees_with_the_numerical_check() {
     let mut symplectic = Vec::new();
-    for data in registry::BUTCHER {
+    for data in catalog::BUTCHER {
         let r = catalog_report(data.name);
         let residual = r.symplectic_condition_residual.unwrap();
         assert_eq!(
@@ -77,7 +79,7 @@ fn the_symplecticity_condition_of_every_tableau_agrees_with_the_numerical_check(
 
 #[test]
 fn every_splitting_is_symplectic_and_reversible_exactly_when_symmetric() {
-    for data in registry::SPLITTING {
+    for data in catalog::SPLITTING {
         let r = catalog_report(data.name);
         assert!(r.symplectic.holds, "{}: {:?}", data.name, r.symplectic);
         assert_eq!(
@@ -91,7 +93,7 @@ fn every_splitting_is_symplectic_and_reversible_exactly_when_symmetric() {
 #[test]
 fn a_tableau_is_reversible_exactly_when_symmetric() {
     let mut reversible = 0;
-    for data in registry::BUTCHER {
+    for data in catalog::BUTCHER {
         let r = catalog_report(data.name);
         assert_eq!(
             data.flags.symmetric, r.reversible.holds,
@@ -142,9 +144,9 @@ fn defects_scale_with_the_scalars_epsilon() {
 /// is the declared order in the method's own class.
 #[test]
 fn algebraic_and_measured_orders_agree_on_every_splitting() {
-    for data in registry::SPLITTING {
+    for data in catalog::SPLITTING {
         let name = data.name;
-        let orders = stormer::Splitting::from_data(data).unwrap().algebraic_orders();
+        let orders = stormer::method::Splitting::from_data(data).unwrap().algebraic_orders();
         assert_eq!(orders.own, data.order, "{name}: {orders:?}");
         let algebraic = if data.requires_quadratic_kinetic {
             assert!(orders.general < data.order, "{name}: {orders:?}");

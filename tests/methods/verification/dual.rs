@@ -6,10 +6,12 @@
 //! The solvers measure updates with every part of the scalar (`real::magnitude`).
 
 use num_dual::Dual64;
+use stormer::real::lit;
+use stormer::stepper::ImplicitOptions;
 use stormer::verify::problems::Pendulum;
 use stormer::verify::{defect_bound, jacobian_dual, symplectic_defect, Canonical, SYMPLECTIC_FACTOR};
 use stormer::Method;
-use stormer::{lit, ImplicitOptions, Stepper};
+use stormer::Stepper;
 
 #[test]
 fn implicit_solvers_converge_the_derivative_at_and_near_equilibria() {

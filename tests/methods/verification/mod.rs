@@ -12,16 +12,16 @@ mod structure;
 mod symplectic;
 
 use std::sync::OnceLock;
-use stormer::registry;
+use stormer::catalog;
 use stormer::verify::{report, Report};
 use stormer::Method;
 
 /// `stormer::verify::report` (what `stormer verify` prints) of every catalog method, in
-/// the order of `registry::names()`: computed once for the tests that read it.
+/// the order of `catalog::names()`: computed once for the tests that read it.
 pub fn catalog_reports() -> &'static [Report] {
     static REPORTS: OnceLock<Vec<Report>> = OnceLock::new();
     REPORTS.get_or_init(|| {
-        registry::names()
+        catalog::names()
             .map(|name| report(&Method::named(name).unwrap()).unwrap())
             .collect()
     })
@@ -37,7 +37,7 @@ pub fn catalog_report(name: &str) -> &'static Report {
 
 /// The catalog's splittings and compositions, by the class of problems they are valid
 /// for, invoked as `$callback! { general: [..], quadratic: [..] }`. Every entry of
-/// `registry::SPLITTING` must be here: `order::every_splitting_has_its_generated_tests`
+/// `catalog::SPLITTING` must be here: `order::every_splitting_has_its_generated_tests`
 /// checks it, so a new catalog method cannot be left untested.
 #[macro_export]
 macro_rules! for_each_catalog_splitting {

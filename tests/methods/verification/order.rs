@@ -2,12 +2,13 @@
 //! general methods on the quartic kinetic energy (a nonlinear problem whose kinetic energy
 //! is not quadratic), Runge-Kutta-Nystrom methods on Henon-Heiles. Negative controls: the
 //! Runge-Kutta-Nystrom methods lose order on the quartic kinetic energy, and McLachlan-Atela
-//! 4 with drift and kick swapped (the bug of methods/NOTES.md, pitfall 2) measures 3.
+//! 4 with drift and kick swapped (the bug of docs/anchors.md, the pitfall) measures 3.
 
-use stormer::registry;
+use stormer::catalog;
+use stormer::stepper::ImplicitOptions;
 use stormer::verify::problems::{HenonHeiles, QuarticKinetic};
 use stormer::verify::{measure_order, OrderOptions};
-use stormer::{ImplicitOptions, Method};
+use stormer::Method;
 
 fn method(name: &str) -> Method {
     Method::named(name).unwrap()
@@ -16,7 +17,8 @@ fn method(name: &str) -> Method {
 fn newton() -> ImplicitOptions {
     ImplicitOptions::newton()
 }
-use stormer::{RuntimeSplitting, Splitting};
+use stormer::method::Splitting;
+use stormer::stepper::RuntimeSplitting;
 
 const TOLERANCE: f64 = 0.2;
 
@@ -35,7 +37,7 @@ fn quadratic(name: &str) -> f64 {
 }
 
 fn declared(name: &str) -> f64 {
-    registry::find_splitting(name).unwrap().order as f64
+    catalog::find_splitting(name).unwrap().order as f64
 }
 
 /// The order of `name` measured on `problem` is its declared order.
@@ -69,7 +71,7 @@ macro_rules! order_tests {
             fn every_splitting_has_its_generated_tests() {
                 let general = [$(stringify!($g)),*];
                 let quadratic = [$(stringify!($r)),*];
-                for d in registry::SPLITTING {
+                for d in catalog::SPLITTING {
                     let listed = if d.requires_quadratic_kinetic { &quadratic[..] } else { &general[..] };
                     assert!(
                         listed.contains(&d.name),
@@ -78,7 +80,7 @@ macro_rules! order_tests {
                         d.name
                     );
                 }
-                assert_eq!(general.len() + quadratic.len(), registry::SPLITTING.len());
+                assert_eq!(general.len() + quadratic.len(), catalog::SPLITTING.len());
             }
 
             /// The Runge-Kutta-Nystrom methods need their quadratic kinetic energy: on the
@@ -86,7 +88,7 @@ macro_rules! order_tests {
             #[test]
             fn rkn_methods_lose_order_on_a_non_quadratic_kinetic_energy() {
                 for name in [$(stringify!($r)),*] {
-                    let data = registry::find_splitting(name).unwrap();
+                    let data = catalog::find_splitting(name).unwrap();
                     let method = Splitting::from_data(data).unwrap();
                     let y = QuarticKinetic::<f64>::initial();
                     let mut stepper = RuntimeSplitting::new_quadratic(&method, &y).unwrap();
@@ -107,11 +109,11 @@ macro_rules! order_tests {
 crate::for_each_catalog_splitting!(order_tests);
 
 /// McLachlan-Atela 4 applied with the roles of drift and kick swapped, as OrdinaryDiffEq's
-/// `McAte4` does (methods/NOTES.md, pitfall 2): third order on Henon-Heiles, while the
+/// `McAte4` does (docs/anchors.md, the pitfall): third order on Henon-Heiles, while the
 /// catalog's orientation measures 4 (`order_mclachlan_atela4`).
 #[test]
 fn a_drift_kick_role_swap_is_caught_on_a_nonlinear_problem() {
-    let data = registry::find_splitting("mclachlan_atela4").unwrap();
+    let data = catalog::find_splitting("mclachlan_atela4").unwrap();
     // K(k1) D(d1) ... K(k4) D(d4) becomes D(k1) K(d1) ... D(k4) K(d4)
     let (drift, kick) = (data.drift, data.kick);
     assert_eq!(

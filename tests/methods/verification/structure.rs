@@ -10,10 +10,12 @@
 use core::marker::PhantomData;
 use nalgebra::DMatrix;
 use stormer::magnetic::{Charged, Lorentz};
+use stormer::real::lit;
+use stormer::stepper::ImplicitOptions;
 use stormer::verify::{
     defect_bound, jacobian_dual, symplectic_defect, Canonical, Dual64, Structure, SYMPLECTIC_FACTOR,
 };
-use stormer::{lit, ImplicitOptions, Method, Real, Stepper};
+use stormer::{Method, Real, Stepper};
 
 const OMEGA: [f64; 3] = [0.3, -0.2, 1.1];
 

@@ -20,10 +20,12 @@
 use num_dual::Dual64;
 use proptest::prelude::*;
 use stormer::flows::Splittable;
+use stormer::real::lit;
+use stormer::stepper::ImplicitOptions;
 use stormer::verify::problems::{HenonHeiles, Pendulum, QuarticKinetic};
 use stormer::verify::{defect_bound, jacobian_dual, symplectic_defect, Canonical, SYMPLECTIC_FACTOR};
-use stormer::{lit, Error, Stepper};
-use stormer::{ImplicitOptions, Method};
+use stormer::Method;
+use stormer::{Error, Stepper};
 
 /// A random case: a state of each problem and a step.
 #[derive(Debug, Clone)]

@@ -10,7 +10,7 @@ use anyhow::Context;
 use std::fmt::Write as _;
 use std::io::Write as _;
 use std::path::{Path, PathBuf};
-use stormer::diagnostics::number;
+use stormer::text::number;
 
 /// The files [`write`] writes: the table, and the picture when there is one (one or two
 /// varied numbers).

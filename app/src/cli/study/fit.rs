@@ -2,7 +2,7 @@
 //! the points in the asymptotic regime, and the warnings when the errors are not in it.
 
 use super::{Control, Row, StudyId};
-use stormer::diagnostics::number;
+use stormer::text::number;
 
 /// The observed order of one method of a scan.
 #[derive(Debug, Clone, PartialEq)]

@@ -8,7 +8,8 @@ use anyhow::Context;
 use serde::{Deserialize, Serialize};
 use std::path::{Path, PathBuf};
 use std::time::Instant;
-use stormer::{Error, Method, Tolerances};
+use stormer::stepper::Tolerances;
+use stormer::{Error, Method};
 use stormer_app::scenes::{self, AnyScene, Scene, SceneVisitor, Setup, Units};
 
 /// A scene's file text, parsed again by each job (each worker thread has its own model).
@@ -201,7 +202,7 @@ pub fn reference(scene: &SceneText, study: &StudyId, cache: &Path) -> anyhow::Re
             && c.t_end.to_bits() == study.t_end.to_bits()
     };
     // a cache that cannot be read (too large, damaged, not ours) is recomputed
-    if let Some(c) = stormer::input::read_text(&path)
+    if let Some(c) = stormer::text::read_text(&path)
         .ok()
         .and_then(|text| serde_json::from_str::<CachedReference>(&text).ok())
         .filter(fits)
@@ -305,7 +306,7 @@ struct JobRunner<'a> {
 }
 
 impl JobRunner<'_> {
-    fn failed(&self, stats: stormer::Stats, e: &Error) -> Row {
+    fn failed(&self, stats: stormer::driver::Stats, e: &Error) -> Row {
         Row {
             job: self.j,
             steps: stats.steps,

@@ -480,7 +480,7 @@ pub fn merge(args: &MergeArgs) -> anyhow::Result<()> {
 /// The text of the partial table at `path`, read through the input bound; the error names
 /// the file.
 fn read_text(path: &Path) -> anyhow::Result<String> {
-    stormer::input::read_text(path).map_err(|reason| anyhow!("{}: {reason}", path.display()))
+    stormer::text::read_text(path).map_err(|reason| anyhow!("{}: {reason}", path.display()))
 }
 
 /// A partial table from its JSON text, checked; errors name `file`.
