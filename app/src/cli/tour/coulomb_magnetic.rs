@@ -4,7 +4,7 @@
 use super::picture::{picture, plane, relative_energy_picture, Figure};
 use crate::cli::tour_page::Section;
 use super::sim::sim;
-use super::verdict::{drift_word, max_rel, sci};
+use super::verdict::{drift_word, max_rel, measured};
 use crate::cli::plot::Series;
 use std::path::Path;
 
@@ -43,11 +43,11 @@ pub(super) fn run(out: &Path) -> anyhow::Result<Section> {
         "E(0) = {e0:.6} (-1/sqrt(3) = {:.6}); magnetic Stormer-Verlet's energy {} over t = 100 (max |dE/E0| = {}).",
         -1.0 / 3f64.sqrt(),
         drift_word(t),
-        sci(max_rel(t)),
+        measured(max_rel(t)),
     );
     let table = vec![
         vec!["method".into(), "E(0)".into(), "max abs dE/E0".into(), "energy".into()],
-        vec![label.into(), format!("{e0:.9}"), sci(max_rel(t)), drift_word(t).into()],
+        vec![label.into(), format!("{e0:.9}"), measured(max_rel(t)), drift_word(t).into()],
     ];
     Ok(Section {
         title: "Charged particle: Coulomb centre plus magnetic field".into(),

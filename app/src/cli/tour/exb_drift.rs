@@ -5,7 +5,7 @@ use super::picture::{picture, plane, Figure};
 use crate::cli::tour_page::Section;
 use super::sim::sim_alpha;
 use super::trace::Trace;
-use super::verdict::sci;
+use super::verdict::measured;
 use crate::cli::plot::{Chart, Scale, Series};
 use std::path::Path;
 
@@ -95,12 +95,12 @@ pub(super) fn run(out: &Path) -> anyhow::Result<Section> {
     let verdict = format!(
         "Most accurate: {} (max error {}); least accurate: {} (max error {}){drift_text}.",
         ranked[0].0,
-        sci(ranked[0].1),
+        measured(ranked[0].1),
         ranked[ranked.len() - 1].0,
-        sci(ranked[ranked.len() - 1].1),
+        measured(ranked[ranked.len() - 1].1),
     );
     let mut table = vec![vec!["method".into(), "max error vs exact".into()]];
-    table.extend(ranked.iter().map(|(l, e)| vec![(*l).to_string(), sci(*e)]));
+    table.extend(ranked.iter().map(|(l, e)| vec![(*l).to_string(), measured(*e)]));
     Ok(Section {
         title: "E x B drift: the six schemes".into(),
         verdict,

@@ -4,6 +4,7 @@
 use super::picture::{picture, plane, Figure};
 use crate::cli::tour_page::Section;
 use super::sim::sim;
+use super::verdict::{number, signed};
 use crate::cli::plot::Series;
 use std::path::Path;
 
@@ -25,7 +26,7 @@ pub(super) fn run(out: &Path) -> anyhow::Result<Section> {
         .iter()
         .map(|(dt, t)| {
             Series::line(
-                format!("dt = {dt}"),
+                format!("dt = {}", number(*dt)),
                 t.column("x").into_iter().zip(t.column("z")).collect(),
             )
         })
@@ -40,18 +41,18 @@ pub(super) fn run(out: &Path) -> anyhow::Result<Section> {
         let landing = t.stop.as_ref().map(|s| (s.0.clone(), s.2[x]));
         let de = t.energy_error().last().map_or(f64::NAN, |p| p.1);
         table.push(vec![
-            dt.to_string(),
+            number(*dt).to_string(),
             landing.as_ref().map_or("no landing".into(), |l| l.0.clone()),
-            format!("{de:+.3e}"),
+            signed(de),
         ]);
         landings.push((landing.map_or(f64::NAN, |l| l.1), de));
     }
     let decreases = landings.iter().all(|l| l.1 < 0.0);
     let verdict = format!(
-        "The ball lands {:.4} m away at dt = 0.1 and {:.4} m away at dt = 0.0125 (difference {:.2e} m); the energy {} (drag).",
+        "The ball lands {:.4} m away at dt = 0.1 and {:.4} m away at dt = 0.0125 (difference {} m); the energy {} (drag).",
         landings[0].0,
         landings[1].0,
-        (landings[0].0 - landings[1].0).abs(),
+        number((landings[0].0 - landings[1].0).abs()).significant(3),
         if decreases { "decreases" } else { "does NOT decrease" },
     );
     Ok(Section {

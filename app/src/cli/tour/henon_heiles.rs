@@ -5,7 +5,7 @@ use super::picture::{picture, Figure};
 use crate::cli::tour_page::Section;
 use super::sim::Sim;
 use super::trace::Trace;
-use super::verdict::sci;
+use super::verdict::{measured, number};
 use crate::cli::plot::{Chart, Series};
 use anyhow::Context;
 use std::path::Path;
@@ -85,7 +85,7 @@ pub(super) fn run(out: &Path) -> anyhow::Result<Section> {
             out,
             figure,
             &chart,
-            &section_dots(&traces, |k| format!("y0 = {}", ys[k])),
+            &section_dots(&traces, |k| format!("y0 = {}", number(ys[k]))),
         )?);
     }
     let coarse = [("RK4", "rk4"), ("velocity Verlet", "velocity_verlet_kdk")];
@@ -125,11 +125,11 @@ pub(super) fn run(out: &Path) -> anyhow::Result<Section> {
             "crossings".into(),
             "max |E/E0 - 1| on the section".into(),
         ],
-        vec!["RK4".into(), traces[0].crossings.len().to_string(), sci(spread[0])],
+        vec!["RK4".into(), traces[0].crossings.len().to_string(), measured(spread[0])],
         vec![
             "velocity Verlet".into(),
             traces[1].crossings.len().to_string(),
-            sci(spread[1]),
+            measured(spread[1]),
         ],
     ];
     Ok(Section {

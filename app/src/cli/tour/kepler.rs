@@ -3,7 +3,7 @@
 use super::picture::{picture, plane, relative_energy_picture, Figure};
 use crate::cli::tour_page::Section;
 use super::sim::sims;
-use super::verdict::{drift_word, energy_table, max_rel, sci};
+use super::verdict::{drift_word, energy_table, max_rel, measured};
 use crate::cli::plot::Series;
 use std::path::Path;
 
@@ -50,10 +50,10 @@ pub(super) fn run(out: &Path) -> anyhow::Result<Section> {
     let verdict = format!(
         "RK4's energy {} (max |dE/E0| = {}, last quarter {:.1}x the first); velocity Verlet's {} (max |dE/E0| = {}).",
         drift_word(rk4),
-        sci(max_rel(rk4)),
+        measured(max_rel(rk4)),
         rk4.quarters().1 / rk4.quarters().0,
         drift_word(verlet),
-        sci(max_rel(verlet)),
+        measured(max_rel(verlet)),
     );
     Ok(Section {
         title: "Kepler two-body problem: RK4 against velocity Verlet over 43 orbits".into(),

@@ -4,7 +4,7 @@ use super::picture::{relative_energy_picture, Figure};
 use super::sim::sims;
 use crate::cli::tour_page::Section;
 use super::trace::Trace;
-use super::verdict::{drift_word, energy_table, max_rel, sci};
+use super::verdict::{drift_word, energy_table, max_rel, measured};
 use std::path::Path;
 
 /// The energy error of the four methods.
@@ -38,14 +38,14 @@ pub(super) fn run(out: &Path) -> anyhow::Result<Section> {
     let verdict = format!(
         "Explicit Euler's H {} (max |dH/H0| = {}); symplectic Euler's {} (max {}); Stormer-Verlet's {} with a {} oscillation (max {}); the order-4 composition's is {} still (max {}).",
         drift_word(e),
-        sci(max_rel(e)),
+        measured(max_rel(e)),
         drift_word(s),
-        sci(max_rel(s)),
+        measured(max_rel(s)),
         drift_word(v),
         smaller(v, s),
-        sci(max_rel(v)),
+        measured(max_rel(v)),
         smaller(c, v),
-        sci(max_rel(c)),
+        measured(max_rel(c)),
     );
     Ok(Section {
         title: "Outer solar system: four methods at dt = 10 days over 40000 days".into(),

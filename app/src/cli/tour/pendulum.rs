@@ -3,7 +3,7 @@
 use super::picture::{picture, relative_energy_picture, Figure};
 use crate::cli::tour_page::Section;
 use super::sim::sims;
-use super::verdict::{drift_word, sci};
+use super::verdict::{drift_word, measured, signed};
 use crate::cli::plot::{Chart, Series};
 use std::path::Path;
 use stormer_app::scenes::Units;
@@ -44,12 +44,12 @@ pub(super) fn run(out: &Path) -> anyhow::Result<Section> {
     let euler_end = euler.energy_error().last().map_or(f64::NAN, |p| p.1);
     let upward = if euler_end > 0.0 { "upward" } else { "downward" };
     let verdict = format!(
-        "Explicit Euler's energy {} {upward} (max |dE| = {}, E(60) - E0 = {:+.3e}); Stormer-Verlet's {} (max |dE| = {}).",
+        "Explicit Euler's energy {} {upward} (max |dE| = {}, E(60) - E0 = {}); Stormer-Verlet's {} (max |dE| = {}).",
         drift_word(euler),
-        sci(euler.max_abs_de()),
-        euler_end,
+        measured(euler.max_abs_de()),
+        signed(euler_end),
         drift_word(verlet),
-        sci(verlet.max_abs_de()),
+        measured(verlet.max_abs_de()),
     );
     let mut table = vec![vec![
         "method".into(),
@@ -59,7 +59,7 @@ pub(super) fn run(out: &Path) -> anyhow::Result<Section> {
     ]];
     for (l, t) in &traces {
         let (a, b) = t.quarters();
-        table.push(vec![(*l).into(), sci(t.max_abs_de()), sci(a), sci(b)]);
+        table.push(vec![(*l).into(), measured(t.max_abs_de()), measured(a), measured(b)]);
     }
     Ok(Section {
         title: "Simple pendulum: explicit Euler against Stormer-Verlet".into(),

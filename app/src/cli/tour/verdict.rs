@@ -3,9 +3,22 @@
 
 use super::trace::Trace;
 
-/// A measured number: four significant digits.
-pub(super) fn sci(x: f64) -> String {
-    format!("{x:.3e}")
+/// The library's numbers for people, for every number the tour prints (one path to follow
+/// when the library moves it).
+pub(super) use stormer::diagnostics::number;
+
+/// A measured number: four significant digits (`1.235e-5`, `0.02139`, `NaN`).
+pub(super) fn measured(x: f64) -> String {
+    number(x).significant(4).to_string()
+}
+
+/// A measured difference, its sign always shown: `+1.235e-5`, `-0.5`.
+pub(super) fn signed(x: f64) -> String {
+    if x > 0.0 {
+        format!("+{}", measured(x))
+    } else {
+        measured(x)
+    }
 }
 
 /// Whether the run's energy drifts, in words.
@@ -31,9 +44,9 @@ pub(super) fn energy_table(traces: &[(&str, Trace)]) -> Vec<Vec<String>> {
         let e0 = t.e0().abs();
         table.push(vec![
             (*l).into(),
-            sci(t.max_abs_de() / e0),
-            sci(a / e0),
-            sci(b / e0),
+            measured(t.max_abs_de() / e0),
+            measured(a / e0),
+            measured(b / e0),
             drift_word(t).into(),
         ]);
     }
