@@ -273,4 +273,5 @@ mod tests {
         .unwrap();
         assert!(std::fs::read_to_string(&path).unwrap().contains("orbit"));
         std::fs::remove_dir_all(&dir).unwrap();
+    }
 }

@@ -12,8 +12,8 @@ mod ensemble_part;
 mod ensemble_report;
 mod fit;
 mod job;
-mod part_check;
 mod part;
+mod part_check;
 #[cfg(test)]
 mod part_mutations;
 mod report;
@@ -28,10 +28,10 @@ use std::io::Write as _;
 use std::path::{Path, PathBuf};
 use stormer::{Error, Method};
 
+use args::{check_common, parse_shard, positive_list};
+pub use args::{CommonArgs, CompareArgs, MergeArgs, ScanArgs};
 pub use ensemble::{ensemble, EnsembleArgs};
 pub use job::SceneText;
-pub use args::{CommonArgs, CompareArgs, MergeArgs, ScanArgs};
-use args::{check_common, parse_shard, positive_list};
 use part::{fnv1a, Control, Job, Kind, MethodEntry, Part, ReferenceInfo, Row, StudyId, FORMAT};
 use shards::{join, parse_part, read_text, shard_jobs, write_json, Sharded};
 

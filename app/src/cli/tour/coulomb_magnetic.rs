@@ -2,10 +2,10 @@
 //! that stays bounded with the magnetic Stormer-Verlet method.
 
 use super::picture::{picture, plane, relative_energy_picture, Figure};
-use crate::cli::tour_page::Section;
 use super::sim::sim;
 use super::verdict::{drift_word, max_rel, measured};
 use crate::cli::plot::Series;
+use crate::cli::tour_page::Section;
 use std::path::Path;
 
 /// The particle's path.
@@ -47,7 +47,12 @@ pub(super) fn run(out: &Path) -> anyhow::Result<Section> {
     );
     let table = vec![
         vec!["method".into(), "E(0)".into(), "max abs dE/E0".into(), "energy".into()],
-        vec![label.into(), format!("{e0:.9}"), measured(max_rel(t)), drift_word(t).into()],
+        vec![
+            label.into(),
+            format!("{e0:.9}"),
+            measured(max_rel(t)),
+            drift_word(t).into(),
+        ],
     ];
     Ok(Section {
         title: "Charged particle: Coulomb centre plus magnetic field".into(),

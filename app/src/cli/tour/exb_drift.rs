@@ -2,11 +2,11 @@
 //! exact guiding centre.
 
 use super::picture::{picture, plane, Figure};
-use crate::cli::tour_page::Section;
 use super::sim::sim_alpha;
 use super::trace::Trace;
 use super::verdict::measured;
 use crate::cli::plot::{Chart, Scale, Series};
+use crate::cli::tour_page::Section;
 use std::path::Path;
 
 /// The distance to the exact solution of the six schemes.

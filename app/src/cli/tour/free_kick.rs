@@ -2,10 +2,10 @@
 //! takes.
 
 use super::picture::{picture, plane, Figure};
-use crate::cli::tour_page::Section;
 use super::sim::sim;
 use super::verdict::{number, signed};
 use crate::cli::plot::Series;
+use crate::cli::tour_page::Section;
 use std::path::Path;
 
 /// The ball's flight at both steps.

@@ -2,11 +2,11 @@
 //! RK4's energy drift at a coarse step against velocity Verlet's.
 
 use super::picture::{picture, Figure};
-use crate::cli::tour_page::Section;
 use super::sim::Sim;
 use super::trace::Trace;
 use super::verdict::{measured, number};
 use crate::cli::plot::{Chart, Series};
+use crate::cli::tour_page::Section;
 use anyhow::Context;
 use std::path::Path;
 use stormer_app::scenes;
@@ -73,10 +73,7 @@ pub(super) fn run(out: &Path) -> anyhow::Result<Section> {
     let (method, dt, t_end) = ("velocity_verlet_kdk", 0.05, 1000.0);
     let mut pictures = Vec::new();
     let mut counts = Vec::new();
-    for (energy, name, figure) in [
-        (1.0 / 12.0, "1/12", &REGULAR),
-        (1.0 / 6.0, "1/6", &CHAOTIC),
-    ] {
+    for (energy, name, figure) in [(1.0 / 12.0, "1/12", &REGULAR), (1.0 / 6.0, "1/6", &CHAOTIC)] {
         let traces = henon_heiles_orbits(energy, &ys, method, dt, t_end)?;
         counts.push(traces.iter().map(|t| t.crossings.len()).sum::<usize>());
         let title = format!("Henon-Heiles, E = {name}: section x = 0, px > 0");

@@ -1,10 +1,10 @@
 //! Kepler's two-body problem: RK4's energy drifts over 43 orbits, velocity Verlet's does not.
 
 use super::picture::{picture, plane, relative_energy_picture, Figure};
-use crate::cli::tour_page::Section;
 use super::sim::sims;
 use super::verdict::{drift_word, energy_table, max_rel, measured};
 use crate::cli::plot::Series;
+use crate::cli::tour_page::Section;
 use std::path::Path;
 
 /// The energy error of both methods.

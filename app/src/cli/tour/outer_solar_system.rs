@@ -2,9 +2,9 @@
 
 use super::picture::{relative_energy_picture, Figure};
 use super::sim::sims;
-use crate::cli::tour_page::Section;
 use super::trace::Trace;
 use super::verdict::{drift_word, energy_table, max_rel, measured};
+use crate::cli::tour_page::Section;
 use std::path::Path;
 
 /// The energy error of the four methods.

@@ -1,10 +1,10 @@
 //! The simple pendulum: explicit Euler's energy drifts, Stormer-Verlet's stays bounded.
 
 use super::picture::{picture, relative_energy_picture, Figure};
-use crate::cli::tour_page::Section;
 use super::sim::sims;
 use super::verdict::{drift_word, measured, signed};
 use crate::cli::plot::{Chart, Series};
+use crate::cli::tour_page::Section;
 use std::path::Path;
 use stormer_app::scenes::Units;
 

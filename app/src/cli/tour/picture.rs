@@ -1,8 +1,8 @@
 //! The tour's pictures: each drawn into the report's directory with its caption.
 
 use super::trace::Trace;
-use crate::cli::tour_page::Picture;
 use crate::cli::plot::{draw, Chart, Scale, Series};
+use crate::cli::tour_page::Picture;
 use std::path::Path;
 use stormer_app::scenes::Units;
 

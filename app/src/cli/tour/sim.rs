@@ -85,7 +85,13 @@ impl SceneVisitor for Sim<'_> {
 }
 
 /// `method` on the built-in `scene`.
-pub(super) fn sim(scene: &str, method: &str, dt: Option<f64>, t_end: Option<f64>, every: Option<u64>) -> anyhow::Result<Trace> {
+pub(super) fn sim(
+    scene: &str,
+    method: &str,
+    dt: Option<f64>,
+    t_end: Option<f64>,
+    every: Option<u64>,
+) -> anyhow::Result<Trace> {
     sim_alpha(scene, method, None, dt, t_end, every)
 }
 
