@@ -5,6 +5,7 @@
 extern crate self as stormer;
 
 pub mod catalog;
+pub mod chaos;
 pub mod corrector;
 pub mod driver;
 mod error;

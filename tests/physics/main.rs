@@ -4,6 +4,7 @@
 //!
 //! One test binary (one link) with a module per concept (docs/test-layout.md).
 
+mod chaos;
 mod double_double;
 mod kepler_correctors;
 mod kepler_drift;

@@ -1,0 +1,164 @@
+//! One orbit and one variation, stepped together on dual numbers.
+
+use super::Indicators;
+#[allow(unused_imports)]
+use crate::real::ops::*;
+use crate::real::{lit, to_f64};
+use crate::verify::DualScalar;
+use crate::{Error, Problem, State, Stepper};
+
+/// The real scalar under a dual one (`f64` under `Dual64`).
+type Re<P> = <<P as Problem>::Scalar as DualScalar>::Re;
+
+/// The variation is renormalised when its length leaves `[1/LIMIT, LIMIT]`: far from
+/// overflow and underflow, rarely enough that the stepper's reset costs nothing measurable.
+const LIMIT: f64 = 1e64;
+
+/// An orbit of problem `P` (whose scalar is a dual number) with one variation carried
+/// through the same steps: the dual parts of the state hold the tangent map of the
+/// numerical flow applied to the initial variation ([the module](crate::chaos)).
+///
+/// The variation starts at unit length and is rescaled whenever its length leaves
+/// `[1e-64, 1e64]` (the stepper is then reset, so that no cached stage holds the old scale),
+/// so a chaotic orbit can be followed for any time; [`Tangent::indicators`] keeps the
+/// growth in logarithms.
+#[derive(Debug, Clone)]
+pub struct Tangent<P: Problem>
+where
+    P::Scalar: DualScalar,
+{
+    /// The time after the last step.
+    t: Re<P>,
+    steps: u64,
+    y: P::State,
+    y_new: P::State,
+    /// The natural log of the factors the variation was divided by so far.
+    log_scale: f64,
+    indicators: Indicators,
+}
+
+impl<P: Problem> Tangent<P>
+where
+    P::Scalar: DualScalar,
+{
+    /// The orbit from `(t0, y0)` (the real parts of `y0`; their dual parts are replaced)
+    /// with the variation `delta0` (any non-zero length: it is normalised).
+    pub fn new(t0: Re<P>, y0: &P::State, delta0: &[Re<P>]) -> Result<Self, Error> {
+        if delta0.len() != y0.dim() {
+            return Err(Error::invalid(
+                "variation",
+                format!("{} components for a state of {}", delta0.len(), y0.dim()),
+            ));
+        }
+        let length = delta0.iter().map(|&d| d * d).fold(Re::<P>::zero(), |a, b| a + b).sqrt();
+        if !(to_f64(length).is_finite() && to_f64(length) > 0.0) {
+            return Err(Error::invalid("variation", "its length must be finite and not zero"));
+        }
+        let mut y = y0.clone();
+        for (y, &d) in y.as_mut_slice().iter_mut().zip(delta0) {
+            *y = P::Scalar::seeded(y.real_part(), d / length);
+        }
+        let y_new = y.zeros_like();
+        Ok(Tangent {
+            t: t0,
+            steps: 0,
+            y,
+            y_new,
+            log_scale: 0.0,
+            indicators: Indicators::new(),
+        })
+    }
+
+    /// `n` steps of size `h` with `stepper` (built for `problem`, on the same dual scalar),
+    /// each followed by the indicators' update. A state that is no longer finite stops with
+    /// [`Error::NonFinite`]; the orbit and the indicators stay those of the last good step.
+    pub fn steps<St>(&mut self, problem: &P, stepper: &mut St, h: Re<P>, n: u64) -> Result<(), Error>
+    where
+        St: Stepper<P> + ?Sized,
+    {
+        let zero = Re::<P>::zero();
+        let h_dual = P::Scalar::seeded(h, zero);
+        // step `i` of this call starts at `t_start + i h` (no sum of many `h`)
+        let t_start = self.t;
+        for i in 0..n {
+            let t = t_start + lit::<Re<P>>(i as f64) * h;
+            let non_finite = Error::NonFinite {
+                t: to_f64(t),
+                step: self.steps,
+            };
+            stepper.step(problem, P::Scalar::seeded(t, zero), h_dual, &self.y, &mut self.y_new)?;
+            if !self.y_new.is_finite() {
+                return Err(non_finite);
+            }
+            let length = to_f64(variation_length::<P>(&self.y_new));
+            if !(length.is_finite() && length > 0.0) {
+                return Err(non_finite);
+            }
+            stepper.accept();
+            core::mem::swap(&mut self.y, &mut self.y_new);
+            self.steps += 1;
+            self.t = t_start + lit::<Re<P>>((i + 1) as f64) * h;
+            self.indicators.record(to_f64(h), self.log_scale + length.ln());
+            if !(1.0 / LIMIT..=LIMIT).contains(&length) {
+                let inverse = lit::<Re<P>>(1.0 / length);
+                for y in self.y.as_mut_slice() {
+                    *y = P::Scalar::seeded(y.real_part(), y.dual_part() * inverse);
+                }
+                self.log_scale += length.ln();
+                stepper.reset();
+            }
+        }
+        Ok(())
+    }
+
+    /// The time after the last step.
+    pub fn t(&self) -> Re<P> {
+        self.t
+    }
+
+    /// The state (the real parts).
+    pub fn state(&self) -> Vec<Re<P>> {
+        self.y.as_slice().iter().map(|y| y.real_part()).collect()
+    }
+
+    /// The variation now, `D Phi(y0) delta0 / |delta0|`: the tangent map applied to the
+    /// unit initial variation (it overflows to infinity where the growth passes `f64`'s
+    /// range; [`Tangent::direction`] and the indicators' `log_growth` never do).
+    pub fn variation(&self) -> Vec<Re<P>> {
+        let scale = lit::<Re<P>>(self.log_scale.exp());
+        self.y.as_slice().iter().map(|y| y.dual_part() * scale).collect()
+    }
+
+    /// The variation's direction (unit length).
+    pub fn direction(&self) -> Vec<Re<P>> {
+        let inverse = Re::<P>::one() / variation_length::<P>(&self.y);
+        self.y.as_slice().iter().map(|y| y.dual_part() * inverse).collect()
+    }
+
+    /// The state and the variation as dual numbers.
+    pub fn dual_state(&self) -> &P::State {
+        &self.y
+    }
+
+    /// MEGNO, the Lyapunov exponent and the FLI after the last step.
+    pub fn indicators(&self) -> &Indicators {
+        &self.indicators
+    }
+
+    /// Steps taken.
+    pub fn steps_taken(&self) -> u64 {
+        self.steps
+    }
+}
+
+/// `|delta|`, the Euclidean length of the dual parts.
+fn variation_length<P: Problem>(y: &P::State) -> Re<P>
+where
+    P::Scalar: DualScalar,
+{
+    y.as_slice()
+        .iter()
+        .map(|y| y.dual_part() * y.dual_part())
+        .fold(Re::<P>::zero(), |a, b| a + b)
+        .sqrt()
+}
