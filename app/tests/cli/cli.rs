@@ -142,10 +142,12 @@ fn csv_round_trip_is_bitwise() {
     assert_eq!(header, ["t", "theta", "omega", "energy"]);
     let y0 = [std::f64::consts::FRAC_PI_4, 0.0];
     let dop853 = Method::named("dop853").unwrap();
-    let mut stepper = dop853.stepper_for(&Pendulum, &y0, &ImplicitOptions::default()).unwrap();
+    let mut stepper = dop853
+        .stepper_for(&Pendulum::new(), &y0, &ImplicitOptions::default())
+        .unwrap();
     let sol = Driver::fixed(0.03)
         .every(7)
-        .run(&Pendulum, &mut stepper, 0.0, &y0, 7.0)
+        .run(&Pendulum::new(), &mut stepper, 0.0, &y0, 7.0)
         .unwrap();
     assert_eq!(rows.len(), sol.t.len());
     for (i, row) in rows.iter().enumerate() {
