@@ -389,67 +389,83 @@ mod tests {
         x.to_bits() == y.to_bits()
     }
 
+    /// Every `(src, value)` of `cases` evaluates to `value`, to the bit.
+    fn assert_exact(cases: &[(&str, f64)]) {
+        for &(src, value) in cases {
+            let got = ok(src);
+            assert!(same(got, value), "{src:?} evaluated to {got:e}, expected {value:e}");
+        }
+    }
+
     #[test]
     fn literals_are_correctly_rounded() {
         let src = "0.526001519587677318785587544488e-01";
         let expected: f64 = src.parse().unwrap_or(f64::NAN);
-        assert!(same(ok(src), expected));
-        assert!(same(ok("5.2e-2"), 0.052));
-        assert!(same(ok("5.2E-2"), 0.052));
-        assert!(same(ok("1."), 1.0));
-        assert!(same(ok(".5"), 0.5));
-        assert!(same(ok("3"), 3.0));
-        assert!(same(ok("1e3"), 1000.0));
-        assert!(same(ok("1.5e+2"), 150.0));
-        // A literal digit by digit would be 0.1 * 3 style; the whole literal is exact.
-        assert!(same(ok("0.3"), 0.3));
-        assert!(same(ok("2.2250738585072014e-308"), f64::MIN_POSITIVE));
+        assert_exact(&[
+            (src, expected),
+            ("5.2e-2", 0.052),
+            ("5.2E-2", 0.052),
+            ("1.", 1.0),
+            (".5", 0.5),
+            ("3", 3.0),
+            ("1e3", 1000.0),
+            ("1.5e+2", 150.0),
+            // A literal digit by digit would be 0.1 * 3 style; the whole literal is exact.
+            ("0.3", 0.3),
+            ("2.2250738585072014e-308", f64::MIN_POSITIVE),
+        ]);
     }
 
     #[test]
     fn rust_suffixes_and_underscores() {
-        assert!(same(ok("1.0f64"), 1.0));
-        assert!(same(ok("2f64"), 2.0));
-        assert!(same(ok("1_000"), 1000.0));
-        assert!(same(ok("1_000.5_0f64"), 1000.5));
-        assert!(same(ok("3u32"), 3.0));
-        assert!(same(ok("0.5f32"), 0.5));
+        assert_exact(&[
+            ("1.0f64", 1.0),
+            ("2f64", 2.0),
+            ("1_000", 1000.0),
+            ("1_000.5_0f64", 1000.5),
+            ("3u32", 3.0),
+            ("0.5f32", 0.5),
+        ]);
         assert_eq!(err("1.5u32").message, "invalid suffix `u32` on a number");
         assert_eq!(err("2x").offset, 1);
     }
 
     #[test]
     fn arithmetic() {
-        assert!(same(ok("-3/73"), -3.0 / 73.0));
-        assert!(same(ok("- 3 / 73"), -3.0 / 73.0));
-        assert!(same(ok("1 / 6"), 1.0 / 6.0));
-        assert!(same(ok("1/2 - sqrt(3)/6"), 0.5 - 3f64.sqrt() / 6.0));
-        assert!(same(ok("sqrt (6)"), 6f64.sqrt()));
-        assert!(same(ok("( 1 + 2 ) * 3"), 9.0));
-        assert!(same(ok("1 + 2 * 3"), 7.0));
-        assert!(same(ok("8 / 4 / 2"), 1.0));
-        assert!(same(ok("1 - 2 - 3"), -4.0));
-        assert!(same(ok("+4 - -2"), 6.0));
-        assert!(same(ok("(16 - sqrt(6)) / 36"), (16.0 - 6f64.sqrt()) / 36.0));
-        assert!(same(ok("\t1\n/\u{a0}4 "), 0.25));
+        assert_exact(&[
+            ("-3/73", -3.0 / 73.0),
+            ("- 3 / 73", -3.0 / 73.0),
+            ("1 / 6", 1.0 / 6.0),
+            ("1/2 - sqrt(3)/6", 0.5 - 3f64.sqrt() / 6.0),
+            ("sqrt (6)", 6f64.sqrt()),
+            ("( 1 + 2 ) * 3", 9.0),
+            ("1 + 2 * 3", 7.0),
+            ("8 / 4 / 2", 1.0),
+            ("1 - 2 - 3", -4.0),
+            ("+4 - -2", 6.0),
+            ("(16 - sqrt(6)) / 36", (16.0 - 6f64.sqrt()) / 36.0),
+            ("\t1\n/\u{a0}4 ", 0.25),
+        ]);
     }
 
     #[test]
     fn powers() {
-        assert!(same(ok("2^3"), 8.0));
-        assert!(same(ok("2 ** 3"), 8.0));
-        assert!(same(ok("2 * * 3"), 8.0));
-        assert!(same(ok("2^-2"), 0.25));
-        assert!(same(ok("-2^2"), -4.0));
-        assert!(same(ok("2^3^2"), 512.0));
-        assert!(same(ok("(1/2)^2 * 4"), 1.0));
-        assert_eq!(ok("2^(1/3)").to_bits(), 2f64.cbrt().to_bits());
-        assert_eq!(ok("cbrt(2)").to_bits(), 2f64.cbrt().to_bits());
-        assert_eq!(ok("2^0.5").to_bits(), 2f64.sqrt().to_bits());
-        assert_eq!(ok("4^(2/3)").to_bits(), 4f64.cbrt().powi(2).to_bits());
-        assert_eq!(ok("cbrt(-8)").to_bits(), (-2f64).to_bits());
-        assert!(same(ok("2^0.3"), 2f64.powf(0.3)));
-        assert!(same(ok("1/(2 - 2^(1/3))"), 1.0 / (2.0 - 2f64.cbrt())));
+        assert_exact(&[
+            ("2^3", 8.0),
+            ("2 ** 3", 8.0),
+            ("2 * * 3", 8.0),
+            ("2^-2", 0.25),
+            ("-2^2", -4.0),
+            ("2^3^2", 512.0),
+            ("(1/2)^2 * 4", 1.0),
+            ("2^(1/3)", 2f64.cbrt()),
+            ("cbrt(2)", 2f64.cbrt()),
+            ("2^0.5", 2f64.sqrt()),
+            ("4^(2/3)", 4f64.cbrt().powi(2)),
+            ("cbrt(-8)", -2.0),
+            ("2^0.3", 2f64.powf(0.3)),
+            ("1/(2 - 2^(1/3))", 1.0 / (2.0 - 2f64.cbrt())),
+        ]);
         let e = err("(-2)^(1/3)");
         assert_eq!(
             e.message,

@@ -141,13 +141,7 @@ impl Method {
     where
         P: Splittable + 'static,
     {
-        if let Some((data, index)) = splitting_entry(self) {
-            problem.families().admit_splitting(SplittingSource::Compiled(data))?;
-            if let Some(stepper) = generated_general_splitting::<P>(index, y0) {
-                return stepper;
-            }
-        }
-        self.compiled_stepper_for(problem, y0, implicit)
+        self.compiled_splitting_or_tableau(problem, y0, implicit, generated_general_splitting::<P>)
     }
 
     /// [`Method::compiled_stepper_for`] on a problem with a quadratic kinetic energy: every
@@ -162,9 +156,29 @@ impl Method {
     where
         P: QuadraticKinetic + 'static,
     {
+        self.compiled_splitting_or_tableau(problem, y0, implicit, |index, y0| {
+            Some(generated_splitting::<P>(index, y0))
+        })
+    }
+
+    /// A catalog splitting or composition the problem admits, run by `generated` (its
+    /// generated stepper for catalog entry `index`, `None` where there is none for `P`);
+    /// anything else as [`Method::compiled_stepper_for`].
+    fn compiled_splitting_or_tableau<P>(
+        &self,
+        problem: &P,
+        y0: &P::State,
+        implicit: &ImplicitOptions,
+        generated: fn(usize, &P::State) -> Option<StepperResult<P>>,
+    ) -> StepperResult<P>
+    where
+        P: Splittable + 'static,
+    {
         if let Some((data, index)) = splitting_entry(self) {
             problem.families().admit_splitting(SplittingSource::Compiled(data))?;
-            return generated_splitting::<P>(index, y0);
+            if let Some(stepper) = generated(index, y0) {
+                return stepper;
+            }
         }
         self.compiled_stepper_for(problem, y0, implicit)
     }

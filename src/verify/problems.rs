@@ -18,9 +18,7 @@
 //! McLachlan-Atela bug of docs/anchors.md, measured third order instead of fourth) is
 //! caught on Henon-Heiles: neither is visible on the harmonic oscillator.
 
-use crate::flows::{QuadraticKinetic, Splittable};
 use crate::hamiltonian::Hamiltonian;
-use crate::method::Families;
 use crate::models::{KeplerCoordinates, KeplerSplit, NBody};
 use crate::real::lit;
 use crate::{Problem, Real, SecondOrder};
@@ -342,6 +340,37 @@ impl<T: Real> Problem for TreeSystem<T> {
     }
 }
 
+/// A star and two planets in the plane (`G = 1`, masses 1, 0.01 and 0.005) split the
+/// Wisdom-Holman way ([`KeplerSplit`] in Jacobi coordinates), at any scalar type: the
+/// drift is the exact Kepler flow, so the symplecticity check measures `J^T S J = S`
+/// through the universal Kepler equation (on dual numbers, the exact Jacobian). Built by
+/// [`kepler_planets`], at the states [`KEPLER_PLANETS_STATES`].
+///
+/// ```
+/// use stormer::verify::problems::{kepler_planets, KeplerPlanets, KEPLER_PLANETS_STATES};
+/// use stormer::Problem;
+/// let planets: KeplerPlanets<f64> = kepler_planets();
+/// assert!(planets.energy(0.0, &KEPLER_PLANETS_STATES[0]).unwrap() < 0.0);
+/// ```
+pub type KeplerPlanets<T> = KeplerSplit<T, [T; 12]>;
+
+/// The star and two planets of [`KeplerPlanets`].
+pub fn kepler_planets<T: Real>() -> KeplerPlanets<T> {
+    let masses = [1.0, 0.01, 0.005].map(lit::<T>);
+    let bodies = NBody::new(T::one(), &masses, 2).expect("valid bodies");
+    KeplerSplit::new(bodies, KeplerCoordinates::Jacobi).expect("a dominant star")
+}
+
+/// Two states of [`KeplerPlanets`] in Jacobi coordinates (centre of mass, the planets'
+/// Jacobi positions, then the momenta): planets near radii 1 and 2, eccentric and inclined
+/// to each other in the plane's two directions of motion.
+pub const KEPLER_PLANETS_STATES: [[f64; 12]; 2] = [
+    [0.0, 0.0, 1.0, 0.1, -0.3, 2.0, 0.0, 0.0, 0.001, 0.0095, -0.0035, -0.0005],
+    [
+        0.01, -0.02, -0.8, 0.5, 1.5, -1.2, 0.001, 0.0, -0.005, -0.008, 0.002, 0.0025,
+    ],
+];
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -370,85 +399,3 @@ mod tests {
         gradient_matches(&QuarticKinetic::<f64>::new());
     }
 }
-
-/// A star and two planets in the plane (`G = 1`, masses 1, 0.01 and 0.005) split the
-/// Wisdom-Holman way ([`KeplerSplit`] in Jacobi coordinates), at any scalar type: the
-/// drift is the exact Kepler flow, so the symplecticity check measures `J^T S J = S`
-/// through the universal Kepler equation (on dual numbers, the exact Jacobian).
-///
-/// ```
-/// use stormer::verify::problems::KeplerPlanets;
-/// use stormer::Problem;
-/// let planets = KeplerPlanets::<f64>::default();
-/// assert!(planets.energy(0.0, &KeplerPlanets::<f64>::STATES[0]).unwrap() < 0.0);
-/// ```
-#[derive(Debug, Clone)]
-pub struct KeplerPlanets<T: Real>(KeplerSplit<T, [T; 12]>);
-
-impl<T: Real> KeplerPlanets<T> {
-    /// Two states in Jacobi coordinates (centre of mass, the planets' Jacobi positions,
-    /// then the momenta): planets near radii 1 and 2, eccentric and inclined to each other
-    /// in the plane's two directions of motion.
-    pub const STATES: [[f64; 12]; 2] = [
-        [0.0, 0.0, 1.0, 0.1, -0.3, 2.0, 0.0, 0.0, 0.001, 0.0095, -0.0035, -0.0005],
-        [
-            0.01, -0.02, -0.8, 0.5, 1.5, -1.2, 0.001, 0.0, -0.005, -0.008, 0.002, 0.0025,
-        ],
-    ];
-}
-
-impl<T: Real> Default for KeplerPlanets<T> {
-    fn default() -> Self {
-        let masses = [1.0, 0.01, 0.005].map(lit::<T>);
-        let bodies = NBody::new(T::one(), &masses, 2).expect("valid bodies");
-        KeplerPlanets(KeplerSplit::new(bodies, KeplerCoordinates::Jacobi).expect("a dominant star"))
-    }
-}
-
-impl<T: Real> Problem for KeplerPlanets<T> {
-    type Scalar = T;
-    type State = [T; 12];
-
-    fn rhs(&self, t: T, y: &[T; 12], dy: &mut [T; 12]) {
-        self.0.rhs(t, y, dy)
-    }
-
-    fn energy(&self, t: T, y: &[T; 12]) -> Option<T> {
-        self.0.energy(t, y)
-    }
-
-    fn families(&self) -> Families<Self>
-    where
-        Self: 'static,
-    {
-        Families::all_splittings()
-    }
-}
-
-impl<T: Real> Splittable for KeplerPlanets<T> {
-    type FlowCache = ();
-
-    fn drift(&self, t: T, tau: T, q: &mut [T], p: &mut [T], scratch: &mut [T], cache: &mut ()) {
-        self.0.drift(t, tau, q, p, scratch, cache)
-    }
-
-    fn drift_increment(
-        &self,
-        t: T,
-        tau: T,
-        q: &[T],
-        p: &[T],
-        dq: &mut [T],
-        dp: &mut [T],
-        scratch: &mut [T],
-        cache: &mut (),
-    ) {
-        self.0.drift_increment(t, tau, q, p, dq, dp, scratch, cache)
-    }
-
-    fn force(&self, t: T, q: &[T], f: &mut [T]) {
-        self.0.force(t, q, f)
-    }
-}
-
-impl<T: Real> QuadraticKinetic for KeplerPlanets<T> {}

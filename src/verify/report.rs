@@ -1,7 +1,7 @@
 //! The whole verification of one method on the test problems: what `stormer verify`
 //! prints and the crate's own tests assert.
 
-use super::problems::{HenonHeiles, KeplerPlanets, Pendulum, QuarticKinetic};
+use super::problems::{kepler_planets, HenonHeiles, Pendulum, QuarticKinetic, KEPLER_PLANETS_STATES};
 use super::{
     defect_bound, jacobian_dual, jacobian_fd, measure_global_order, measure_order, reversibility_defect, step_once,
     symplectic_defect, Canonical, GlobalOrderOptions, OrderMeasurement, OrderOptions, Precision,
@@ -107,8 +107,8 @@ const PLANAR_STATES: [[f64; 4]; 2] = [[0.1, -0.2, 0.3, 0.2], [-0.2, 0.25, 0.1, -
 /// that needs a quadratic kinetic energy), the stability interval, symplecticity
 /// (exact and central-difference Jacobians) and reversibility on [`Pendulum`],
 /// [`HenonHeiles`], (general methods) [`QuarticKinetic`] and (splittings and
-/// compositions) [`KeplerPlanets`], whose drift is the exact Kepler flow, at two states
-/// each and `h = 0.1, 0.4`.
+/// compositions) [`KeplerPlanets`](super::problems::KeplerPlanets), whose drift is the
+/// exact Kepler flow, at two states each and `h = 0.1, 0.4`.
 ///
 /// ```
 /// use stormer::Method;
@@ -120,39 +120,29 @@ const PLANAR_STATES: [[f64; 4]; 2] = [[0.1, -0.2, 0.3, 0.2], [-0.2, 0.25, 0.1, -
 pub fn report(method: &Method) -> Result<Report, Error> {
     let general = !method.requires_quadratic_kinetic();
     let mut cases: Vec<Outcome> = Vec::new();
+    let pendulum = (Pendulum::<f64>::new(), Pendulum::<Dual64>::new());
     for y in PENDULUM_STATES {
         for h in STEPS {
-            cases.push(case::<Pendulum<f64>, Pendulum<Dual64>, 2>(method, "pendulum", y, h)?);
+            cases.push(case(method, "pendulum", (&pendulum.0, &pendulum.1), y, h)?);
         }
     }
+    let henon_heiles = (HenonHeiles::<f64>::new(), HenonHeiles::<Dual64>::new());
+    let quartic_kinetic = (QuarticKinetic::<f64>::new(), QuarticKinetic::<Dual64>::new());
     for y in PLANAR_STATES {
         for h in STEPS {
-            cases.push(case::<HenonHeiles<f64>, HenonHeiles<Dual64>, 4>(
-                method,
-                "henon_heiles",
-                y,
-                h,
-            )?);
+            cases.push(case(method, "henon_heiles", (&henon_heiles.0, &henon_heiles.1), y, h)?);
             if general {
-                cases.push(case::<QuarticKinetic<f64>, QuarticKinetic<Dual64>, 4>(
-                    method,
-                    "quartic_kinetic",
-                    y,
-                    h,
-                )?);
+                let problems = (&quartic_kinetic.0, &quartic_kinetic.1);
+                cases.push(case(method, "quartic_kinetic", problems, y, h)?);
             }
         }
     }
     if method.splitting_source().is_some() {
         // through the exact Kepler drift (a splitting's drift is its sub-flow)
-        for y in KeplerPlanets::<f64>::STATES {
+        let planets = (kepler_planets::<f64>(), kepler_planets::<Dual64>());
+        for y in KEPLER_PLANETS_STATES {
             for h in STEPS {
-                cases.push(case::<KeplerPlanets<f64>, KeplerPlanets<Dual64>, 12>(
-                    method,
-                    "kepler_planets",
-                    y,
-                    h,
-                )?);
+                cases.push(case(method, "kepler_planets", (&planets.0, &planets.1), y, h)?);
             }
         }
     }
@@ -229,31 +219,37 @@ struct Outcome {
     reversibility_bound: f64,
 }
 
-/// The checks at one problem, state and step. Building the steppers can fail (an RKN
-/// method on a general problem is not asked for); a step that fails (non-finite state, an
-/// implicit solver that does not converge) makes that check fail with an infinite defect,
-/// so that an unstable user method still gets its report.
-fn case<P, D, const N: usize>(method: &Method, problem: &'static str, y: [f64; N], h: f64) -> Result<Outcome, Error>
+/// The checks at one problem (named `problem`; `p` in `f64`, `d` the same on dual numbers),
+/// state and step. Building the steppers can fail (an RKN method on a general problem is
+/// not asked for); a step that fails (non-finite state, an implicit solver that does not
+/// converge) makes that check fail with an infinite defect, so that an unstable user
+/// method still gets its report.
+fn case<P, D, const N: usize>(
+    method: &Method,
+    problem: &'static str,
+    (p, d): (&P, &D),
+    y: [f64; N],
+    h: f64,
+) -> Result<Outcome, Error>
 where
-    P: Problem<Scalar = f64, State = [f64; N]> + Default + 'static,
-    D: Problem<Scalar = Dual64, State = [Dual64; N]> + Default + 'static,
+    P: Problem<Scalar = f64, State = [f64; N]> + 'static,
+    D: Problem<Scalar = Dual64, State = [Dual64; N]> + 'static,
 {
-    let (p, d) = (P::default(), D::default());
     let yd: [Dual64; N] = y.map(lit);
     let newton = ImplicitOptions::newton();
-    let mut exact = method.stepper_for(&d, &yd, &newton)?;
-    let mut plain = method.stepper_for(&p, &y, &newton)?;
+    let mut exact = method.stepper_for(d, &yd, &newton)?;
+    let mut plain = method.stepper_for(p, &y, &newton)?;
     let mut y1 = y;
-    let stepped = step_once(&mut plain, &p, 0.0, h, &y, &mut y1).is_ok();
+    let stepped = step_once(&mut plain, p, 0.0, h, &y, &mut y1).is_ok();
     let failed = (f64::INFINITY, SYMPLECTIC_FACTOR * f64::EPSILON);
-    let (symplectic, symplectic_bound) = match jacobian_dual(&mut exact, &d, 0.0, h, &yd) {
+    let (symplectic, symplectic_bound) = match jacobian_dual(&mut exact, d, 0.0, h, &yd) {
         Ok(j) if stepped => (
             symplectic_defect(&j, &Canonical, y.as_slice(), y1.as_slice()),
             defect_bound(&j, SYMPLECTIC_FACTOR),
         ),
         _ => failed,
     };
-    let central = match jacobian_fd(&mut plain, &p, 0.0, h, &y) {
+    let central = match jacobian_fd(&mut plain, p, 0.0, h, &y) {
         Ok(j) if stepped => symplectic_defect(&j, &Canonical, y.as_slice(), y1.as_slice()),
         _ => f64::INFINITY,
     };
@@ -267,7 +263,7 @@ where
         symplectic,
         symplectic_bound,
         central,
-        reversibility: reversibility_defect(&mut plain, &p, 0.0, h, &y).unwrap_or(f64::INFINITY),
+        reversibility: reversibility_defect(&mut plain, p, 0.0, h, &y).unwrap_or(f64::INFINITY),
         reversibility_bound: REVERSIBLE_FACTOR * f64::EPSILON * scale,
     })
 }

@@ -182,3 +182,47 @@ fn every_catalog_splitting_matches_its_runtime_word_and_stage_count() {
         assert_eq!(runtime_evaluations, compiled.counters().evaluations, "{}", data.name);
     }
 }
+
+/// On a kinetic energy that is not quadratic, `compiled_stepper_for_splittable` runs every
+/// general catalog splitting and composition by its generated stepper, bitwise the
+/// run-time route's ([`stormer::Method::stepper_for`]); refuses the Runge-Kutta-Nystrom
+/// ones as that route does; and runs a tableau as `compiled_stepper_for` does.
+#[test]
+fn the_splittable_dispatch_runs_the_general_splittings_and_refuses_the_others() {
+    let y0 = [1.0, 0.3];
+    let options = Default::default();
+    let mut general = 0;
+    for data in stormer::catalog::SPLITTING {
+        let named = stormer::Method::named(data.name).unwrap();
+        let compiled = named.compiled_stepper_for_splittable(&Quartic, &y0, &options);
+        match (compiled, named.stepper_for(&Quartic, &y0, &options)) {
+            (Ok(mut compiled), Ok(mut runtime)) => {
+                assert!(!data.requires_quadratic_kinetic, "{} runs", data.name);
+                let a = Driver::fixed(0.05).run(&Quartic, &mut compiled, 0.0, &y0, 2.5).unwrap();
+                let b = Driver::fixed(0.05).run(&Quartic, &mut runtime, 0.0, &y0, 2.5).unwrap();
+                assert_eq!(a.y, b.y, "{}: compiled and run-time trajectories differ", data.name);
+                general += 1;
+            }
+            (Err(compiled), Err(runtime)) => {
+                assert!(data.requires_quadratic_kinetic, "{}: {compiled}", data.name);
+                assert_eq!(compiled.to_string(), runtime.to_string(), "{}", data.name);
+            }
+            (compiled, runtime) => panic!(
+                "{}: compiled {:?}, run-time {:?}",
+                data.name,
+                compiled.err(),
+                runtime.err()
+            ),
+        }
+    }
+    assert!(general > 10, "{general} general splittings");
+    let rk4 = stormer::Method::named("rk4").unwrap();
+    let step = |mut stepper: Box<dyn Stepper<Quartic>>| {
+        let mut y = [0.0; 2];
+        stepper.step(&Quartic, 0.0, 0.1, &y0, &mut y).unwrap();
+        y
+    };
+    let compiled = rk4.compiled_stepper_for_splittable(&Quartic, &y0, &options).unwrap();
+    let from_data = rk4.stepper_for(&Quartic, &y0, &options).unwrap();
+    assert_eq!(step(compiled), step(from_data));
+}

@@ -5,10 +5,11 @@
 use crate::support::users_magnetic_verlet;
 
 use std::marker::PhantomData;
+use stormer::driver::Solution;
 use stormer::magnetic::{Charged, Gyration, Lorentz};
 use stormer::real::{lit, to_f64};
 use stormer::stepper::{Boris, BorisRotation, EulerCromer};
-use stormer::{Driver, Method, Real, Stepper};
+use stormer::{Driver, Method, Real};
 use users_magnetic_verlet::users_magnetic_verlet;
 
 /// A uniform field along axis 3 (`omega = (0, 0, w)`), a uniform acceleration `e`, and
@@ -302,24 +303,31 @@ fn velocity_verlet_with_the_gyration_drift_is_the_users_magnetic_verlet() {
     );
 }
 
+/// The users' reference run (docs/scenes.md 5) at scalar type `T`: magnetic Verlet on the
+/// Coulomb centre in the field `w = 1`, q0 = (1, 1, 1), v0 = 0, h = 0.01, every tenth step
+/// recorded, to `t_end`.
+fn reference_run<T: Real>(t_end: T) -> Solution<T, [T; 6]> {
+    let p = Charged(particle::<T>(1.0, [0.0; 3], true));
+    let y0 = [1.0, 1.0, 1.0, 0.0, 0.0, 0.0].map(lit::<T>);
+    let mut verlet = Method::named("velocity_verlet_kdk")
+        .unwrap()
+        .stepper_for(&p, &y0, &Default::default())
+        .unwrap();
+    Driver::fixed(lit::<T>(0.01))
+        .every(10)
+        .run(&p, &mut verlet, T::zero(), &y0, t_end)
+        .unwrap()
+}
+
 /// The users' reference run (docs/scenes.md 5): q0 = (1, 1, 1), v0 = 0, w = 1, h = 0.01,
 /// T = 100: magnetic Verlet's max |dH| is about 3e-5 (docs/anchors.md), bounded by 1e-4
 /// here, with no drift: the worst error over [0, 1e4] stays below the same bound.
 #[test]
 fn magnetic_verlet_energy_error_on_coulomb_plus_field() {
-    let p = Charged(particle::<f64>(1.0, [0.0; 3], true));
-    let y0 = [1.0, 1.0, 1.0, 0.0, 0.0, 0.0];
     let e0 = -1.0 / 3f64.sqrt();
     let long = if cfg!(debug_assertions) { 1e3 } else { 1e4 };
     for t_end in [100.0, long] {
-        let mut verlet = Method::named("velocity_verlet_kdk")
-            .unwrap()
-            .stepper_for(&p, &y0, &Default::default())
-            .unwrap();
-        let sol = Driver::fixed(0.01)
-            .every(10)
-            .run(&p, &mut verlet, 0.0, &y0, t_end)
-            .unwrap();
+        let sol = reference_run::<f64>(t_end);
         assert!((sol.energy[0] - e0).abs() < 1e-15);
         let worst = sol.energy.iter().map(|e| (e - e0).abs()).fold(0.0, f64::max);
         // measured 1.07e-4 at T = 100 and no larger at T = 1e4 (the "about 1e-4")
@@ -391,20 +399,10 @@ fn euler_cromer_is_first_order_and_bounded() {
 /// The f32 magnetic Verlet keeps the energy within f32 bounds on the reference run.
 #[test]
 fn magnetic_verlet_in_f32() {
-    let p = Charged(particle::<f32>(1.0, [0.0; 3], true));
-    let y0 = [1.0f32, 1.0, 1.0, 0.0, 0.0, 0.0];
-    let mut verlet = Method::named("velocity_verlet_kdk")
-        .unwrap()
-        .stepper_for(&p, &y0, &Default::default())
-        .unwrap();
-    let sol = Driver::fixed(0.01f32)
-        .every(10)
-        .run(&p, &mut verlet, 0.0, &y0, 100.0)
-        .unwrap();
+    let sol = reference_run::<f32>(100.0);
     let e0 = sol.energy[0];
     let worst = sol.energy.iter().map(|e| to_f64(*e - e0).abs()).fold(0.0, f64::max);
     assert!(worst < 1e-4 + 1e4 * f64::from(f32::EPSILON), "{worst}");
-    let _ = Stepper::<Charged<Particle<f32>>>::counters(&verlet);
 }
 
 /// A non-uniform field is read at the positions at the start of the drift for every

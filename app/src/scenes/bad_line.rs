@@ -8,8 +8,14 @@ use stormer::Error;
 pub(super) fn error_with_line(good: &str, file: &str, line: usize, text: &str) -> String {
     let mut lines: Vec<&str> = good.lines().collect();
     lines[line - 1] = text;
+    scene_error(&lines.join("\n"), file)
+}
+
+/// The error message for the scene text `bad`, read from `file` (`NAME.toml`): a scene
+/// error that names the file, on one line.
+fn scene_error(bad: &str, file: &str) -> String {
     let name = file.trim_end_matches(".toml");
-    let err = parse(&lines.join("\n"), file, name).unwrap_err();
+    let err = parse(bad, file, name).unwrap_err();
     assert!(matches!(err, Error::Scene { .. }), "{err:?}");
     let message = err.to_string();
     assert!(message.starts_with(&format!("scene {file}: ")), "{message}");
@@ -23,5 +29,17 @@ pub(super) fn assert_bad_lines(good: &str, file: &str, cases: &[(usize, &str, &s
     for &(line, text, expected) in cases {
         let message = error_with_line(good, file, line, text);
         assert!(message.contains(expected), "{text}: {message}");
+    }
+}
+
+/// For every `(from, to, expected)` of `cases`: `good` holds `from`, and the scene `good`
+/// read from `file` with `from` replaced by `to` is refused with a message that names a
+/// line and contains `expected`.
+pub(super) fn assert_bad_replacements(good: &str, file: &str, cases: &[(&str, &str, &str)]) {
+    for &(from, to, expected) in cases {
+        assert!(good.contains(from), "{from}");
+        let message = scene_error(&good.replace(from, to), file);
+        assert!(message.contains(expected), "{to}: {message}");
+        assert!(message.contains("line "), "{to}: {message}");
     }
 }

@@ -9,14 +9,15 @@
 //! corrected state, in the scene's coordinates.
 
 use super::file::Source;
-use super::nbody_file::{BodyEntry, GravityParameters};
 use super::{AnyScene, Built, Scene, Setup};
 use nalgebra::DVector;
 use std::borrow::Cow;
 use stormer::corrector::{Corrected, CorrectorData};
 use stormer::models::{KeplerCoordinates, KeplerSplit, NBody};
 use stormer::{Error, Method};
-use toml::Spanned;
+
+/// The bodies of an n-body scene file, unsplit: the scene whose file the split ones read.
+type BodiesScene = NBody<f64, DVector<f64>>;
 
 /// The bodies of an n-body scene file, split.
 pub type SplitBodies = KeplerSplit<f64, DVector<f64>>;
@@ -25,14 +26,14 @@ impl Scene for SplitBodies {
     crate::compiled_in_release!(compiled_stepper_for_quadratic);
 
     /// An n-body scene file: the split is chosen by its `[run]` table (or `--split`).
-    const MODEL: &'static str = "n-body";
-    const INITIAL: &'static str = "list of [[bodies]]";
-    type Parameters = GravityParameters;
-    type Initial = Spanned<Vec<BodyEntry>>;
+    const MODEL: &'static str = BodiesScene::MODEL;
+    const INITIAL: &'static str = BodiesScene::INITIAL;
+    type Parameters = <BodiesScene as Scene>::Parameters;
+    type Initial = <BodiesScene as Scene>::Initial;
 
     /// The file's bodies in Jacobi coordinates ([`AnyScene::with_split`] chooses others).
     fn build(parameters: Option<Self::Parameters>, bodies: Self::Initial, src: &Source<'_>) -> Built<Self> {
-        let (bodies, y) = NBody::<f64, DVector<f64>>::build(parameters, bodies, src)?;
+        let (bodies, y) = BodiesScene::build(parameters, bodies, src)?;
         let split = KeplerSplit::new(bodies, KeplerCoordinates::Jacobi).map_err(|e| src.error(e.to_string()))?;
         let y0 = split.from_scene(&y);
         Ok((split, y0))
@@ -53,10 +54,11 @@ impl Scene for SplitBodies {
 pub type CorrectedBodies = Corrected<SplitBodies>;
 
 impl Scene for CorrectedBodies {
-    const MODEL: &'static str = "n-body";
-    const INITIAL: &'static str = "list of [[bodies]]";
-    type Parameters = GravityParameters;
-    type Initial = Spanned<Vec<BodyEntry>>;
+    /// An n-body scene file, split (the corrector is chosen by `--corrector`).
+    const MODEL: &'static str = SplitBodies::MODEL;
+    const INITIAL: &'static str = SplitBodies::INITIAL;
+    type Parameters = <SplitBodies as Scene>::Parameters;
+    type Initial = <SplitBodies as Scene>::Initial;
 
     /// The file's bodies in Jacobi coordinates, uncorrected ([`AnyScene::with_corrector`]
     /// adds the corrector, which needs the run's step).
@@ -203,11 +205,7 @@ impl AnyScene {
 }
 
 /// The setup of `setup`'s scene with the model `bodies` and the state `y`.
-fn rebuilt(
-    setup: Setup<SplitBodies>,
-    bodies: NBody<f64, DVector<f64>>,
-    y: DVector<f64>,
-) -> Setup<NBody<f64, DVector<f64>>> {
+fn rebuilt(setup: Setup<SplitBodies>, bodies: BodiesScene, y: DVector<f64>) -> Setup<BodiesScene> {
     Setup {
         name: setup.name,
         origin: setup.origin,

@@ -3,7 +3,6 @@
 use super::file::{Number, Source};
 use super::{Built, Scene};
 use serde::Deserialize;
-use stormer::SecondOrder;
 
 /// The exact period of the pendulum released at rest from `theta0 = pi/4`, in units of
 /// `sqrt(l/g)`: `4 K(sin^2(pi/8))` (K the complete elliptic integral of the first kind,
@@ -11,38 +10,24 @@ use stormer::SecondOrder;
 pub const PENDULUM_PERIOD_45_DEGREES: f64 = 6.534345229832591;
 
 /// The simple pendulum in the time unit `sqrt(l/g)`: `theta'' = -sin(theta)`, state
-/// `[theta, omega]`, energy `H = omega^2/2 - cos(theta)`.
+/// `[theta, omega]`, energy `H = omega^2/2 - cos(theta)`; the library's
+/// [`stormer::verify::problems::Pendulum`] in `f64`.
 ///
-/// A [`SecondOrder`] problem (`q = theta`, `p = omega`, unit mass), so every Runge-Kutta
-/// method runs on its first-order form and every splitting and composition on its drift
-/// and kick. There is no closed-form trajectory to compare with ([`Scene::exact`] is
-/// `None`); the checkable fact is the period, [`PENDULUM_PERIOD_45_DEGREES`] for
-/// `theta0 = pi/4`.
+/// A [`SecondOrder`](stormer::SecondOrder) problem (`q = theta`, `p = omega`, unit mass),
+/// so every Runge-Kutta method runs on its first-order form and every splitting and
+/// composition on its drift and kick. There is no closed-form trajectory to compare with
+/// ([`Scene::exact`] is `None`); the checkable fact is the period,
+/// [`PENDULUM_PERIOD_45_DEGREES`] for `theta0 = pi/4`.
 ///
 /// ```
 /// use stormer_app::scenes::Pendulum;
 /// use stormer::Problem;
 /// let mut dy = [0.0; 2];
-/// Pendulum.rhs(0.0, &[std::f64::consts::FRAC_PI_2, 0.0], &mut dy);
+/// Pendulum::new().rhs(0.0, &[std::f64::consts::FRAC_PI_2, 0.0], &mut dy);
 /// assert_eq!(dy, [0.0, -1.0]);
-/// assert_eq!(Pendulum.energy(0.0, &[0.0, 0.0]), Some(-1.0));
+/// assert_eq!(Pendulum::new().energy(0.0, &[0.0, 0.0]), Some(-1.0));
 /// ```
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub struct Pendulum;
-
-impl SecondOrder for Pendulum {
-    type Scalar = f64;
-    type State = [f64; 2];
-
-    #[inline]
-    fn acceleration(&self, _t: f64, q: &[f64], a: &mut [f64]) {
-        a[0] = -q[0].sin();
-    }
-
-    fn energy(&self, _t: f64, q: &[f64], omega: &[f64]) -> Option<f64> {
-        Some(0.5 * omega[0] * omega[0] - q[0].cos())
-    }
-}
+pub type Pendulum = stormer::verify::problems::Pendulum<f64>;
 
 /// An empty `[parameters]` table (the pendulum has none in its time unit); any key in it
 /// is an error.
@@ -72,7 +57,7 @@ impl Scene for Pendulum {
             src.finite("initial.theta", &initial.theta)?,
             src.finite("initial.omega", &initial.omega)?,
         ];
-        Ok((Pendulum, y0))
+        Ok((Pendulum::new(), y0))
     }
 
     fn components(&self, _y0: &Self::State) -> Vec<String> {
@@ -97,7 +82,7 @@ mod tests {
         let mut st = ExplicitRk::<M, [f64; 2]>::new(&y0);
         let sol = Driver::fixed(h)
             .stop_when(g)
-            .run(&Pendulum, &mut st, 0.0, &y0, 60.0)
+            .run(&Pendulum::new(), &mut st, 0.0, &y0, 60.0)
             .unwrap();
         sol.stopped.expect("the pendulum swings back").t
     }

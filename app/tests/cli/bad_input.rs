@@ -36,18 +36,12 @@ fn expected() -> HashMap<String, String> {
         .collect()
 }
 
-/// Every bad file: non-zero exit, one line on stderr with what EXPECTED.txt says it must
-/// get, no panic.
 /// Runs the binary with `args` in `dir` and checks the refusal every bad input gets (`what`
 /// names the case in a failure): exit code 1, no panic, one line starting `error: `, which
 /// it returns.
 fn refusal(dir: &Path, args: &[&str], what: &str) -> String {
-    let out = Command::new(env!("CARGO_BIN_EXE_stormer"))
-        .args(args)
-        .current_dir(dir)
-        .output()
-        .unwrap();
-    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
+    let out = binary::stormer(dir, args);
+    let stderr = binary::stderr(&out);
     assert_eq!(out.status.code(), Some(1), "{what}: exit code\n{stderr}");
     assert!(!stderr.contains("panicked"), "{what}: {stderr}");
     assert_eq!(stderr.trim().lines().count(), 1, "{what}: not one line:\n{stderr}");
@@ -55,14 +49,15 @@ fn refusal(dir: &Path, args: &[&str], what: &str) -> String {
     stderr
 }
 
+/// Every bad file: non-zero exit, one line on stderr with what EXPECTED.txt says it must
+/// get, no panic.
 #[test]
 fn the_binary_refuses_every_bad_file_without_panicking() {
     let files = corpus();
     let expected = expected();
     assert!(files.len() >= 30);
     assert_eq!(files.len(), expected.len(), "one line of EXPECTED.txt per file");
-    let dir = std::env::temp_dir().join(format!("stormer-bad-input-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = workdir("bad-input", "files");
     for file in files {
         let name = file.file_name().unwrap().to_string_lossy().to_string();
         let path = file.to_string_lossy().to_string();
@@ -80,15 +75,13 @@ fn the_binary_refuses_every_bad_file_without_panicking() {
         assert!(stderr.contains(must), "{name}: expected {must:?} in\n{stderr}");
         assert!(stderr.contains(&name), "{name}: the file is not named in\n{stderr}");
     }
-    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 /// Bad values of the output flags: one clear line each, exit 1 (2 for flags clap refuses
 /// together), no output created.
 #[test]
 fn the_binary_refuses_bad_output_flags_without_panicking() {
-    let dir = std::env::temp_dir().join(format!("stormer-bad-flags-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = workdir("bad-input", "output-flags");
     for (args, code, must) in [
         (
             &["run", "henon-heiles", "--section", "q = 0"][..],
@@ -111,12 +104,8 @@ fn the_binary_refuses_bad_output_flags_without_panicking() {
             "'--save-at <TIMES>' cannot be used with '--every <N>'",
         ),
     ] {
-        let out = Command::new(env!("CARGO_BIN_EXE_stormer"))
-            .args(args)
-            .current_dir(&dir)
-            .output()
-            .unwrap();
-        let stderr = String::from_utf8_lossy(&out.stderr);
+        let out = binary::stormer(&dir, args);
+        let stderr = binary::stderr(&out);
         assert_eq!(out.status.code(), Some(code), "{args:?}: exit code\n{stderr}");
         assert!(!stderr.contains("panicked"), "{args:?}: {stderr}");
         assert!(
@@ -128,15 +117,13 @@ fn the_binary_refuses_bad_output_flags_without_panicking() {
         }
     }
     assert!(!dir.join("out").exists(), "no output for a refused run");
-    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 /// Bad `--vary` values of `stormer ensemble` (issue 15): an unknown key, an empty range, a
 /// count of 0, and their kin: one clear line each, exit 1, no panic, nothing written.
 #[test]
 fn the_binary_refuses_bad_vary_flags_without_panicking() {
-    let dir = std::env::temp_dir().join(format!("stormer-bad-vary-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = workdir("bad-input", "vary");
     for (vary, must) in [
         (
             "alpah=10:50:41",
@@ -173,7 +160,6 @@ fn the_binary_refuses_bad_vary_flags_without_panicking() {
         assert!(stderr.contains(must), "{vary}: {stderr}");
     }
     assert!(!dir.join("out").exists(), "no output for a refused ensemble");
-    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 /// Newton on many particles (issue #30, defect 2): gauss_legendre4's dense Newton matrices
@@ -183,8 +169,7 @@ fn the_binary_refuses_bad_vary_flags_without_panicking() {
 /// the sizes, the limit and the fixed-point solver, exit 1, the initial record kept.
 #[test]
 fn newton_on_too_many_components_is_refused_before_allocating() {
-    let dir = std::env::temp_dir().join(format!("stormer-newton-size-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = workdir("bad-input", "newton-size");
     let scene = Path::new(env!("CARGO_MANIFEST_DIR")).join("../scenes/particles-bottle.toml");
     let scene = scene.to_string_lossy();
     let args = [
@@ -207,7 +192,6 @@ fn newton_on_too_many_components_is_refused_before_allocating() {
     ] {
         assert!(stderr.contains(must), "{must:?} not in {stderr}");
     }
-    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 /// A file the refused command must leave as it was: written, then read back after.

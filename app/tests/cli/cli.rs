@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 
 use crate::support::binary;
-use binary::{assert_error, assert_ok, stderr, stdout, stormer, stormer_ok};
+use binary::{assert_error, assert_ok, energy_drift, stderr, stdout, stormer, stormer_ok, summary_number};
 
 /// A fresh directory for one test.
 fn workdir(name: &str) -> PathBuf {
@@ -142,10 +142,12 @@ fn csv_round_trip_is_bitwise() {
     assert_eq!(header, ["t", "theta", "omega", "energy"]);
     let y0 = [std::f64::consts::FRAC_PI_4, 0.0];
     let dop853 = Method::named("dop853").unwrap();
-    let mut stepper = dop853.stepper_for(&Pendulum, &y0, &ImplicitOptions::default()).unwrap();
+    let mut stepper = dop853
+        .stepper_for(&Pendulum::new(), &y0, &ImplicitOptions::default())
+        .unwrap();
     let sol = Driver::fixed(0.03)
         .every(7)
-        .run(&Pendulum, &mut stepper, 0.0, &y0, 7.0)
+        .run(&Pendulum::new(), &mut stepper, 0.0, &y0, 7.0)
         .unwrap();
     assert_eq!(rows.len(), sol.t.len());
     for (i, row) in rows.iter().enumerate() {
@@ -704,20 +706,6 @@ fn verify_measures_tableaus_on_the_tree_system() {
     assert!(v["measured_embedded_order"].is_null(), "{v}");
 }
 
-/// The summary's number after `label` (e.g. `max |dE/E0| 1.2e-5`).
-fn summary_number(summary: &str, label: &str) -> f64 {
-    let rest = summary
-        .split(label)
-        .nth(1)
-        .unwrap_or_else(|| panic!("{label} in {summary}"));
-    rest.trim_start()
-        .split([',', ' '])
-        .next()
-        .unwrap()
-        .parse()
-        .unwrap_or_else(|e| panic!("{label} in {summary}: {e}"))
-}
-
 #[test]
 fn splittings_run_on_every_hamiltonian_scene() {
     let dir = workdir("splittings");
@@ -734,7 +722,7 @@ fn splittings_run_on_every_hamiltonian_scene() {
         let summary = run_summary(&dir, &["run", scene, "--method", method, "--t-end", t_end]);
         assert!(summary.contains("100 steps"), "{summary}");
         assert_eq!(summary_number(&summary, "steps,") as u64, evaluations, "{summary}");
-        assert!(summary_number(&summary, "max |dE/E0|") < 1e-3, "{summary}");
+        assert!(energy_drift(&summary) < 1e-3, "{summary}");
     }
     // The pendulum keeps its columns; Verlet's energy error stays small where explicit
     // Euler's drifts up by a third over the minute (docs/scenes.md 1).
@@ -745,14 +733,11 @@ fn splittings_run_on_every_hamiltonian_scene() {
     );
     assert_eq!(header, ["t", "theta", "omega", "energy"]);
     assert_eq!(rows.len(), 61);
-    let verlet = summary_number(&summary, "max |dE/E0|");
-    let euler = summary_number(
-        &stderr(&stormer(
-            &dir,
-            &["run", "pendulum", "--method", "euler", "--every", "100"],
-        )),
-        "max |dE/E0|",
-    );
+    let verlet = energy_drift(&summary);
+    let euler = energy_drift(&stderr(&stormer(
+        &dir,
+        &["run", "pendulum", "--method", "euler", "--every", "100"],
+    )));
     assert!(verlet < 1e-4 && euler > 0.1, "verlet {verlet}, euler {euler}");
 }
 
@@ -886,7 +871,7 @@ fn neptune_and_pluto_are_added_by_editing_the_scene_file() {
         &["run", "six-bodies.toml", "--method", "triple_jump4", "--t-end", "10000"],
         "out/six-bodies-triple_jump4.csv",
     );
-    assert!(summary_number(&summary, "max |dE/E0|") < 1e-7, "{summary}");
+    assert!(energy_drift(&summary) < 1e-7, "{summary}");
     assert_eq!(header.len(), 1 + 36 + 1);
     assert_eq!(&header[13..16], ["neptune_x", "neptune_y", "neptune_z"]);
     assert_eq!(header[36], "pluto_pz");
@@ -946,7 +931,7 @@ fn coulomb_magnetic_with_velocity_verlet_is_the_users_magnetic_verlet() {
     assert!((rows[0][7] - e0).abs() <= f64::EPSILON);
     let worst = rows.iter().map(|r| (r[7] - e0).abs()).fold(0.0, f64::max);
     assert!(worst > 5e-5 && worst < 2e-4, "max |dH| {worst:e}");
-    let relative = summary_number(&summary, "max |dE/E0|");
+    let relative = energy_drift(&summary);
     assert!((relative - worst / e0.abs()).abs() < 1e-3 * relative, "{summary}");
 }
 
@@ -968,7 +953,7 @@ fn charged_particle_methods_run_on_charged_particle_scenes_only() {
         args.extend_from_slice(extra);
         let summary = run_summary(&dir, &args);
         // (Euler-Cromer, first order, is at 4e-2)
-        assert!(summary_number(&summary, "max |dE/E0|") < 0.1, "{method}: {summary}");
+        assert!(energy_drift(&summary) < 0.1, "{method}: {summary}");
     }
     let (header, _) = read_csv(&dir.join("out/penning-trap-boris.csv"));
     assert_eq!(header.len(), 1 + 18 + 1);
@@ -1054,7 +1039,7 @@ fn the_cyclotron_follows_its_exact_helix() {
             summary_number(&summary, "max error vs exact") < 1e-12,
             "dt {dt}: {summary}"
         );
-        assert!(summary_number(&summary, "max |dE/E0|") < 1e-14, "dt {dt}: {summary}");
+        assert!(energy_drift(&summary) < 1e-14, "dt {dt}: {summary}");
     }
 }
 
@@ -1083,7 +1068,7 @@ fn arenstorf_closes_its_orbit_from_the_command_line() {
         let closure = summary_number(&summary, "max error vs exact");
         assert!(closure < 1e-6, "{summary}");
         assert!((closure / measured - 1.0).abs() < 0.05, "{summary}");
-        assert!(summary_number(&summary, "max |dE/E0|") < 1e-9, "{summary}");
+        assert!(energy_drift(&summary) < 1e-9, "{summary}");
         assert_eq!(header, ["t", "x", "y", "z", "vx", "vy", "vz", "energy"]);
         let last = rows.last().unwrap();
         assert_eq!(last[0], period);
@@ -1797,7 +1782,7 @@ fn a_close_encounter_at_a_fixed_step_reports_its_energy_error() {
     )
     .unwrap();
     let (summary, header, rows) = run_csv(&dir, &["run", "kepler-e099.toml", "--out", "e099.csv"], "e099.csv");
-    let drift = summary_number(&summary, "max |dE/E0|");
+    let drift = energy_drift(&summary);
     assert!(drift > 300.0, "{summary}");
     let error = summary_number(&summary, "max error vs exact");
     assert!(error > 1.0, "{summary}");

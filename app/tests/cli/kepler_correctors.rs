@@ -3,13 +3,7 @@
 //! mass ratio, the refusals are one clear line, and a collision with the star ends cleanly.
 
 use crate::support::binary;
-use binary::{assert_error, csv_rows, stderr, stormer, stormer_ok, workdir};
-
-/// `max |dE/E0| X` from a run's summary.
-fn energy_drift(summary: &str) -> f64 {
-    let after = summary.split("max |dE/E0| ").nth(1).expect(summary);
-    after.split(',').next().unwrap().parse().unwrap()
-}
+use binary::{assert_error, csv_rows, energy_drift, stderr, stormer, stormer_ok, workdir};
 
 /// Wisdom-Holman at 10 days over 10000 days, with and without the eleventh-order corrector:
 /// the same columns, the same first row (the corrector and its inverse compose to the

@@ -4,7 +4,7 @@
 //! cleanly.
 
 use crate::support::binary;
-use binary::{assert_error, csv_rows, stderr, stdout, stormer, stormer_ok, workdir};
+use binary::{assert_error, csv_rows, energy_drift, stderr, stdout, stormer, stormer_ok, workdir};
 use std::path::Path;
 use std::process::Output;
 
@@ -12,12 +12,6 @@ use std::process::Output;
 fn outer_solar_system(dir: &Path, more: &[&str]) -> Output {
     let run = ["run", "outer-solar-system", "--method", "wisdom_holman"];
     stormer_ok(dir, &[&run[..], more].concat())
-}
-
-/// `max |dE/E0| X` from a run's summary.
-fn energy_drift(summary: &str) -> f64 {
-    let after = summary.split("max |dE/E0| ").nth(1).expect(summary);
-    after.split(',').next().unwrap().parse().unwrap()
 }
 
 /// The same run with and without the split writes the same columns and the same first

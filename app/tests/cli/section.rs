@@ -2,7 +2,7 @@
 //! acceptance), its CSV, its picture and its refusals.
 
 use crate::support::binary;
-use binary::{stderr, stormer_ok, workdir};
+use binary::{energy_drift, stderr, stormer_ok, workdir};
 use std::path::Path;
 use std::process::Output;
 
@@ -47,13 +47,7 @@ fn a_henon_heiles_section_lies_on_the_section() {
         message.contains(&format!("section x = 0, px > 0: {} crossings", points.len())),
         "{message}"
     );
-    let drift: f64 = message
-        .split("max |dE/E0| ")
-        .nth(1)
-        .and_then(|s| s.split(',').next())
-        .unwrap()
-        .parse()
-        .unwrap();
+    let drift = energy_drift(&message);
     for p in &points {
         assert!(p[1].abs() <= 1e-12, "x = {} at t = {}", p[1], p[0]);
         assert!(p[3] > 0.0, "px = {} at t = {}", p[3], p[0]);

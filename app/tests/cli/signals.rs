@@ -9,7 +9,7 @@
 
 use std::os::unix::process::ExitStatusExt;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Stdio};
+use std::process::{Child, Command, Stdio};
 use std::time::{Duration, Instant};
 
 use crate::support::binary;
@@ -62,13 +62,35 @@ impl Moments {
     }
 }
 
+/// Starts the binary in `dir` with `args` (stderr piped) and waits, a minute at most, until
+/// it has written the header of `csv` (flushed when the file is created; a `csv` left by an
+/// earlier run is removed first). Returns the child and when it was started.
+fn start_writing(dir: &Path, args: &[&str], csv: &Path) -> (Child, Instant) {
+    let _ = std::fs::remove_file(csv);
+    let child = Command::new(env!("CARGO_BIN_EXE_stormer"))
+        .args(args)
+        .current_dir(dir)
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("the binary runs");
+    let start = Instant::now();
+    while std::fs::metadata(csv).map_or(true, |m| m.len() == 0) {
+        assert!(
+            start.elapsed() < Duration::from_secs(60),
+            "no CSV header after a minute"
+        );
+        std::thread::sleep(Duration::from_millis(5));
+    }
+    (child, start)
+}
+
 /// Starts a run that writes every step for far longer than the test lasts, waits until
 /// the CSV has its header, then a random moment, and sends `signal`.
 fn kill_a_run(dir: &Path, signal: &str, after_ms: u64) -> (std::process::ExitStatus, String, PathBuf) {
     let csv = dir.join("run.csv");
-    let _ = std::fs::remove_file(&csv);
-    let child = Command::new(env!("CARGO_BIN_EXE_stormer"))
-        .args([
+    let (child, start) = start_writing(
+        dir,
+        &[
             "run",
             "outer-solar-system",
             "--method",
@@ -77,21 +99,13 @@ fn kill_a_run(dir: &Path, signal: &str, after_ms: u64) -> (std::process::ExitSta
             "0.01",
             "--t-end",
             "1e6",
-        ])
-        .args(["--every", "1", "--out", "run.csv"])
-        .current_dir(dir)
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("the binary runs");
-    let start = Instant::now();
-    // the header is flushed when the file is created
-    while std::fs::metadata(&csv).map_or(true, |m| m.len() == 0) {
-        assert!(
-            start.elapsed() < Duration::from_secs(60),
-            "no CSV header after a minute"
-        );
-        std::thread::sleep(Duration::from_millis(5));
-    }
+            "--every",
+            "1",
+            "--out",
+            "run.csv",
+        ],
+        &csv,
+    );
     std::thread::sleep(Duration::from_millis(after_ms));
     let (status, err) = binary::signal(child, signal, start, Duration::from_secs(60));
     (status, err, csv)
@@ -166,21 +180,8 @@ fn a_stop_acts_within_a_second_on_slow_steps() {
     std::fs::write(dir.join("many.toml"), many_bodies(SLOW_BODIES)).unwrap();
     for method in ["velocity_verlet_kdk", "rk4"] {
         let csv = dir.join("slow.csv");
-        let _ = std::fs::remove_file(&csv);
-        let child = Command::new(env!("CARGO_BIN_EXE_stormer"))
-            .args(["run", "many.toml", "--method", method, "--out", "slow.csv"])
-            .current_dir(&dir)
-            .stderr(Stdio::piped())
-            .spawn()
-            .expect("the binary runs");
-        let start = Instant::now();
-        while std::fs::metadata(&csv).map_or(true, |m| m.len() == 0) {
-            assert!(
-                start.elapsed() < Duration::from_secs(60),
-                "no CSV header after a minute"
-            );
-            std::thread::sleep(Duration::from_millis(5));
-        }
+        let args = ["run", "many.toml", "--method", method, "--out", "slow.csv"];
+        let (child, start) = start_writing(&dir, &args, &csv);
         // well into the steps
         std::thread::sleep(Duration::from_millis(1500));
         let sent = Instant::now();

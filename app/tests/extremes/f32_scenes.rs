@@ -2,9 +2,11 @@
 //!
 //! The scenes are read into `f64` models (a [`Scene`] is a `Problem<Scalar = f64>`). Three
 //! models are generic over the scalar (central force, N-body, charged particles) and run
-//! in `f32` as they are; the other six (harmonic, damped oscillator, pendulum, restricted
-//! three-body, spinning ball, Henon-Heiles) are `f64`-only, so this file writes their equations once
-//! more, generic over [`Real`], and runs that twin in `f32`.
+//! in `f32` as they are; the pendulum is the library's generic one, run in `f32` as
+//! `stormer::verify::problems::Pendulum<f32>`, and so is Henon-Heiles' twin; the other four
+//! (harmonic, damped oscillator, restricted three-body, spinning ball) are `f64`-only, so
+//! this file writes their equations once more, generic over [`Real`], and runs that twin
+//! in `f32`.
 //!
 //! Each run is compared with the crate's own `f64` run of the same method at the same
 //! step: the difference is the `f32` round-off alone (truncation errors are the same in
@@ -20,6 +22,7 @@ use stormer::models::{CentralForce, KeplerSplit, NBody};
 use stormer::real::lit;
 use stormer::stepper::Tolerances;
 use stormer::stepper::PARTICLE_METHODS;
+use stormer::verify::problems::{HenonHeiles, Pendulum};
 use stormer::{catalog, Driver, Method, Problem, Real, SecondOrder, State, Stepper};
 use stormer_app::scenes::{self, AnyScene, Scene, Setup};
 
@@ -183,7 +186,8 @@ fn reference_scale(y: &[f64]) -> f64 {
 
 // ---------------------------------------------------------------------------------------
 // Twins of the f64-only models, generic over the scalar: the same formulas as
-// src/scenes/{harmonic,pendulum,damped,arenstorf,free_kick,henon_heiles}.rs. A wrong twin shows at once
+// src/scenes/{harmonic,damped,arenstorf,free_kick}.rs (the pendulum's and Henon-Heiles' twins
+// are the library's generic problems, stormer::verify::problems). A wrong twin shows at once
 // as a deviation far above round-off from the crate's f64 model.
 
 /// `x'' = -w0^2 x`.
@@ -198,36 +202,6 @@ impl<T: Real> SecondOrder for HarmonicTwin<T> {
     }
     fn energy(&self, _t: T, q: &[T], v: &[T]) -> Option<T> {
         Some(lit::<T>(0.5) * v[0] * v[0] + lit::<T>(0.5) * self.w0_squared * q[0] * q[0])
-    }
-}
-
-/// `theta'' = -sin(theta)`.
-struct PendulumTwin<T>(core::marker::PhantomData<T>);
-impl<T: Real> SecondOrder for PendulumTwin<T> {
-    type Scalar = T;
-    type State = [T; 2];
-    fn acceleration(&self, _t: T, q: &[T], a: &mut [T]) {
-        a[0] = -q[0].sin();
-    }
-    fn energy(&self, _t: T, q: &[T], v: &[T]) -> Option<T> {
-        Some(lit::<T>(0.5) * v[0] * v[0] - q[0].cos())
-    }
-}
-
-/// Henon-Heiles: `x'' = -x - 2 x y`, `y'' = -y - x^2 + y^2`.
-struct HenonHeilesTwin<T>(core::marker::PhantomData<T>);
-impl<T: Real> SecondOrder for HenonHeilesTwin<T> {
-    type Scalar = T;
-    type State = [T; 4];
-    fn acceleration(&self, _t: T, q: &[T], a: &mut [T]) {
-        let (x, y) = (q[0], q[1]);
-        a[0] = -x - lit::<T>(2.0) * x * y;
-        a[1] = -y - x * x + y * y;
-    }
-    fn energy(&self, _t: T, q: &[T], p: &[T]) -> Option<T> {
-        let (x, y) = (q[0], q[1]);
-        let half = lit::<T>(0.5);
-        Some(half * (p[0] * p[0] + p[1] * p[1]) + half * (x * x + y * y) + x * x * y - y * y * y / lit::<T>(3.0))
     }
 }
 
@@ -311,8 +285,8 @@ fn scene(name: &str) -> Measured {
             let w0_squared = (s.model.w0 * s.model.w0) as f32;
             measure(&s, &twin(HarmonicTwin { w0_squared }, to_f32(&s.y0)))
         }
-        AnyScene::Pendulum(s) => measure(&s, &twin(PendulumTwin(core::marker::PhantomData), to_f32(&s.y0))),
-        AnyScene::HenonHeiles(s) => measure(&s, &twin(HenonHeilesTwin(core::marker::PhantomData), to_f32(&s.y0))),
+        AnyScene::Pendulum(s) => measure(&s, &twin(Pendulum::<f32>::new(), to_f32(&s.y0))),
+        AnyScene::HenonHeiles(s) => measure(&s, &twin(HenonHeiles::<f32>::new(), to_f32(&s.y0))),
         AnyScene::DampedOscillator(s) => {
             let problem = DampedTwin {
                 w0_squared: (s.model.w0 * s.model.w0) as f32,

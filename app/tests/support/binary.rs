@@ -85,6 +85,25 @@ pub fn signal(mut child: Child, signal: &str, start: Instant, limit: Duration) -
     (status, err)
 }
 
+/// The number after `label` in a run's summary (e.g. `max |dE/E0| 1.2e-5,`).
+pub fn summary_number(summary: &str, label: &str) -> f64 {
+    let rest = summary
+        .split(label)
+        .nth(1)
+        .unwrap_or_else(|| panic!("{label} in {summary}"));
+    rest.trim_start()
+        .split([',', ' '])
+        .next()
+        .unwrap()
+        .parse()
+        .unwrap_or_else(|e| panic!("{label} in {summary}: {e}"))
+}
+
+/// The largest relative energy error, `max |dE/E0| X`, of a run's summary.
+pub fn energy_drift(summary: &str) -> f64 {
+    summary_number(summary, "max |dE/E0|")
+}
+
 /// The header and rows of a CSV the binary wrote, as numbers.
 pub fn csv_rows(text: &str) -> (String, Vec<Vec<f64>>) {
     let mut lines = text.lines();
