@@ -10,7 +10,7 @@ use stormer::magnetic::Charged;
 use stormer::models::{CentralForce, ChargedParticles, KeplerCoordinates, KeplerSplit, MagneticField, NBody};
 
 use crate::support::outer_solar_system as oss;
-use stormer::verify::problems::{HenonHeiles, KeplerPlanets, Pendulum};
+use stormer::verify::problems::{kepler_planets, HenonHeiles, Pendulum, KEPLER_PLANETS_STATES};
 use stormer::{Driver, Method, Problem, SecondOrder, State};
 
 /// `N` steps of `method` on `problem` (real scalar) from `y`.
@@ -119,8 +119,8 @@ fn every_methods_tangent_map_is_the_derivative_of_its_steps_on_the_pendulum() {
 
 #[test]
 fn the_tangent_map_is_the_derivative_of_the_steps_in_the_kepler_split() {
-    let (real, dual) = (KeplerPlanets::<f64>::default(), KeplerPlanets::<Dual64>::default());
-    let y0 = KeplerPlanets::<f64>::STATES[0];
+    let (real, dual) = (kepler_planets::<f64>(), kepler_planets::<Dual64>());
+    let y0 = KEPLER_PLANETS_STATES[0];
     for name in [
         "velocity_verlet_kdk",
         "triple_jump4",
