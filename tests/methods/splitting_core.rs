@@ -220,7 +220,7 @@ fn the_splittable_dispatch_runs_the_general_splittings_and_refuses_the_others() 
     let step = |mut stepper: Box<dyn Stepper<Quartic>>| {
         let mut y = [0.0; 2];
         stepper.step(&Quartic, 0.0, 0.1, &y0, &mut y).unwrap();
-        y
+        y.map(f64::to_bits) // bitwise
     };
     let compiled = rk4.compiled_stepper_for_splittable(&Quartic, &y0, &options).unwrap();
     let from_data = rk4.stepper_for(&Quartic, &y0, &options).unwrap();
