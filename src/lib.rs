@@ -75,6 +75,8 @@ pub mod guide {
     pub mod output_and_events {}
     #[doc = include_str!("../docs/kepler-split.md")]
     pub mod kepler_split {}
+    #[doc = include_str!("../docs/chaos.md")]
+    pub mod chaos {}
 }
 
 /// The everyday items in one import.
