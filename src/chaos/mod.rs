@@ -1,6 +1,7 @@
 //! Is this orbit chaotic? The tangent map of the numerical step, and the indicators built on
 //! it: MEGNO and its running mean, the maximal Lyapunov exponent, the fast Lyapunov
-//! indicator.
+//! indicator; and the derivative of a run's final state with respect to its initial state
+//! or a parameter ([`final_state_derivative`]), for fits.
 //!
 //! A variation `delta` of the state is carried through the *same discrete steps* as the
 //! orbit: the stepper runs on dual numbers `y + delta eps` (the scalar of the problem is a
@@ -31,7 +32,9 @@
 //! ```
 
 mod indicators;
+mod sensitivity;
 mod tangent;
 
 pub use indicators::Indicators;
+pub use sensitivity::final_state_derivative;
 pub use tangent::Tangent;

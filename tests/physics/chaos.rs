@@ -5,7 +5,7 @@
 
 use num_dual::Dual64;
 use stormer::catalog;
-use stormer::chaos::Tangent;
+use stormer::chaos::{final_state_derivative, Tangent};
 use stormer::magnetic::Charged;
 use stormer::models::{CentralForce, ChargedParticles, KeplerCoordinates, KeplerSplit, MagneticField, NBody};
 
@@ -348,4 +348,69 @@ fn henon_heiles_orbit(dual: &HenonHeiles<Dual64>, y: f64, t_end: f64) -> (f64, f
     let h = 0.05;
     tangent.steps(dual, &mut stepper, h, (t_end / h) as u64).unwrap();
     (tangent.indicators().mean_megno(), tangent.indicators().lyapunov())
+}
+
+/// The outer solar system with Jupiter's mass `m` (its dual part seeded 1 on dual numbers),
+/// the bodies at the scene's positions and velocities (so the momenta `m v` depend on it).
+fn with_jupiter_mass<T: stormer::Real>(m: T) -> (NBody<T, [T; 24]>, [T; 24]) {
+    let mut masses = oss::MASSES.map(stormer::real::lit::<T>);
+    masses[1] = m;
+    let bodies = NBody::<T, [T; 24]>::new(stormer::real::lit(oss::G), &masses, 3).unwrap();
+    let mut y = [T::zero(); 24];
+    bodies
+        .set_state(&oss::Q.map(stormer::real::lit), &oss::V.map(stormer::real::lit), &mut y)
+        .unwrap();
+    (bodies, y)
+}
+
+/// Jupiter's position after 100 steps of 10 days of velocity Verlet, and its derivative
+/// with respect to Jupiter's mass `m`.
+fn jupiter_after_1000_days(m: f64) -> ([f64; 3], [f64; 3]) {
+    let (bodies, y0) = with_jupiter_mass(Dual64::new(m, 1.0));
+    let verlet = Method::named("velocity_verlet_kdk").unwrap();
+    let mut stepper = verlet.stepper_for(&bodies, &y0, &Default::default()).unwrap();
+    let (y, dy) = final_state_derivative(&bodies, &mut stepper, 0.0, &y0, 10.0, 100).unwrap();
+    ([y[3], y[4], y[5]], [dy[3], dy[4], dy[5]])
+}
+
+#[test]
+fn the_derivative_with_respect_to_a_mass_agrees_with_differences_and_fits_the_mass() {
+    let m = oss::MASSES[1];
+    // sixth-order differences of the f64 runs in m (steps of m / 100)
+    let jupiter = |m: f64| {
+        let (bodies, y0) = with_jupiter_mass(m);
+        let y = steps(&bodies, &Method::named("velocity_verlet_kdk").unwrap(), &y0, 10.0, 100);
+        [y[3], y[4], y[5]]
+    };
+    let fourth_order = |e: f64| -> Vec<f64> {
+        let (m2, m1, p1, p2) = (
+            jupiter(m - 2.0 * e),
+            jupiter(m - e),
+            jupiter(m + e),
+            jupiter(m + 2.0 * e),
+        );
+        (0..3)
+            .map(|i| (m2[i] - 8.0 * m1[i] + 8.0 * p1[i] - p2[i]) / (12.0 * e))
+            .collect()
+    };
+    let (coarse, fine) = (fourth_order(m * 1e-2), fourth_order(m * 5e-3));
+    let (_, derivative) = jupiter_after_1000_days(m);
+    let scale = derivative.iter().fold(0.0_f64, |s, d| s.max(d.abs()));
+    for i in 0..3 {
+        let difference = (16.0 * fine[i] - coarse[i]) / 15.0;
+        assert!(
+            (derivative[i] - difference).abs() < 1e-6 * scale,
+            "d q_{i} / d m: {} against {difference}",
+            derivative[i]
+        );
+    }
+    // a Newton (Gauss-Newton) fit of the mass to the observed position, from 20% off
+    let observed = jupiter(m);
+    let mut guess = 1.2 * m;
+    for _ in 0..4 {
+        let (q, dq) = jupiter_after_1000_days(guess);
+        let residual: f64 = (0..3).map(|i| dq[i] * (q[i] - observed[i])).sum();
+        guess -= residual / dq.iter().map(|d| d * d).sum::<f64>();
+    }
+    assert!((guess - m).abs() < 1e-10 * m, "fitted {guess:e}, true {m:e}");
 }
