@@ -36,5 +36,5 @@ mod sensitivity;
 mod tangent;
 
 pub use indicators::Indicators;
-pub use sensitivity::final_state_derivative;
+pub use sensitivity::{final_state_derivative, FinalState};
 pub use tangent::Tangent;

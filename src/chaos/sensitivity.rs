@@ -10,6 +10,15 @@ use crate::{Error, Problem, State, Stepper};
 /// The real scalar under a dual one (`f64` under `Dual64`).
 type Re<P> = <<P as Problem>::Scalar as DualScalar>::Re;
 
+/// The end of a run on dual numbers: the state and its derivative.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FinalState<T> {
+    /// The final state (the real parts).
+    pub state: Vec<T>,
+    /// Its derivative with respect to what was seeded (the dual parts).
+    pub derivative: Vec<T>,
+}
+
 /// `n` steps of size `h` of `stepper` on `problem` from `(t0, y0)`, on dual numbers: the
 /// final state (the real parts) and its derivative (the dual parts) with respect to what
 /// was seeded, either a direction of the initial state (the dual parts of `y0`) or a
@@ -31,10 +40,10 @@ type Re<P> = <<P as Problem>::Scalar as DualScalar>::Re;
 /// let y0 = [1.0, 0.0, 0.0, 1.0].map(Dual64::from);
 /// let mut rk4 = Method::named("rk4")?.stepper_for(&orbit, &y0, &Default::default())?;
 /// let n = 1000;
-/// let (y, dy_dmu) = final_state_derivative(&orbit, &mut rk4, 0.0, &y0, 2.0 * std::f64::consts::PI / n as f64, n)?;
-/// assert!((y[0] - 1.0).abs() < 1e-9);
+/// let end = final_state_derivative(&orbit, &mut rk4, 0.0, &y0, 2.0 * std::f64::consts::PI / n as f64, n)?;
+/// assert!((end.state[0] - 1.0).abs() < 1e-9);
 /// // a stronger centre pulls the body inwards: x at the end of the period decreases
-/// assert!(dy_dmu[0] < 0.0);
+/// assert!(end.derivative[0] < 0.0);
 /// # Ok::<(), stormer::Error>(())
 /// ```
 pub fn final_state_derivative<P, St>(
@@ -44,7 +53,7 @@ pub fn final_state_derivative<P, St>(
     y0: &P::State,
     h: Re<P>,
     n: u64,
-) -> Result<(Vec<Re<P>>, Vec<Re<P>>), Error>
+) -> Result<FinalState<Re<P>>, Error>
 where
     P: Problem,
     P::Scalar: DualScalar,
@@ -63,5 +72,8 @@ where
         core::mem::swap(&mut y, &mut y_new);
     }
     let parts = |part: fn(P::Scalar) -> Re<P>| y.as_slice().iter().map(|&y| part(y)).collect();
-    Ok((parts(P::Scalar::real_part), parts(P::Scalar::dual_part)))
+    Ok(FinalState {
+        state: parts(P::Scalar::real_part),
+        derivative: parts(P::Scalar::dual_part),
+    })
 }
