@@ -26,6 +26,7 @@
 mod central_force;
 mod charged_particles;
 mod democratic_heliocentric;
+mod elements;
 mod external_fields;
 mod jacobi;
 mod kepler_split;
@@ -40,6 +41,7 @@ mod splitmix64;
 pub use central_force::CentralForce;
 pub use charged_particles::ChargedParticles;
 pub use democratic_heliocentric::DemocraticHeliocentric;
+pub use elements::{Anomaly, Elements};
 pub use external_fields::ExternalFields;
 pub use jacobi::Jacobi;
 pub use kepler_split::{KeplerCoordinates, KeplerSplit, MAX_MASS_RATIO};
