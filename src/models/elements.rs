@@ -64,6 +64,7 @@ impl Elements {
         if self.a == 0.0 {
             return bad("a = 0 is no orbit".into());
         }
+        #[allow(clippy::float_cmp)] // exactly a parabola; e = 1 - 1e-15 is a (very long) ellipse
         if self.e == 1.0 {
             return bad("e = 1 is a parabola, which has no semi-major axis; give e below or above 1".into());
         }
