@@ -41,12 +41,14 @@ impl Indicators {
         Self::default()
     }
 
-    /// One step of length `h` after which the variation's growth since the start is
-    /// `exp(log_growth)`.
-    pub fn record(&mut self, h: f64, log_growth: f64) {
+    /// One step, ending `elapsed` after the start (given, not summed from the steps, so
+    /// that no rounding accumulates), after which the variation's growth since the start
+    /// is `exp(log_growth)`.
+    pub fn record(&mut self, elapsed: f64, log_growth: f64) {
+        let h = elapsed - self.elapsed;
         let mid = self.elapsed + 0.5 * h;
         self.megno_integral += 2.0 * mid * (log_growth - self.log_growth);
-        self.elapsed += h;
+        self.elapsed = elapsed;
         self.megno_mean_integral += self.megno_integral / self.elapsed * h;
         self.log_growth = log_growth;
         self.max_log_growth = self.max_log_growth.max(log_growth);
@@ -110,8 +112,8 @@ mod tests {
         let mut exponential = Indicators::new();
         for k in 1..=n {
             let t = k as f64 * h;
-            linear.record(h, (1.0 + t).ln());
-            exponential.record(h, 0.3 * t);
+            linear.record(t, (1.0 + t).ln());
+            exponential.record(t, 0.3 * t);
         }
         assert!((linear.megno() - 2.0).abs() < 2e-3, "{}", linear.megno());
         assert!((linear.mean_megno() - 2.0).abs() < 2e-2, "{}", linear.mean_megno());
@@ -129,7 +131,8 @@ mod tests {
         let mut bounded = Indicators::new();
         let h = 0.01;
         for k in 1..=1_000_000 {
-            bounded.record(h, (k as f64 * h).sin().abs().ln_1p());
+            let t = k as f64 * h;
+            bounded.record(t, t.sin().abs().ln_1p());
         }
         assert!(bounded.mean_megno().abs() < 1e-3, "{}", bounded.mean_megno());
     }

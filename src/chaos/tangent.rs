@@ -27,6 +27,8 @@ pub struct Tangent<P: Problem>
 where
     P::Scalar: DualScalar,
 {
+    /// The start.
+    t0: Re<P>,
     /// The time after the last step.
     t: Re<P>,
     steps: u64,
@@ -60,6 +62,7 @@ where
         }
         let y_new = y.zeros_like();
         Ok(Tangent {
+            t0,
             t: t0,
             steps: 0,
             y,
@@ -98,7 +101,8 @@ where
             core::mem::swap(&mut self.y, &mut self.y_new);
             self.steps += 1;
             self.t = t_start + lit::<Re<P>>((i + 1) as f64) * h;
-            self.indicators.record(to_f64(h), self.log_scale + length.ln());
+            self.indicators
+                .record(to_f64(self.t - self.t0), self.log_scale + length.ln());
             if !(1.0 / LIMIT..=LIMIT).contains(&length) {
                 let inverse = lit::<Re<P>>(1.0 / length);
                 for y in self.y.as_mut_slice() {
