@@ -31,6 +31,9 @@ where
     t0: Re<P>,
     /// The time after the last step.
     t: Re<P>,
+    /// Where the steps of the current size began, how many were taken before, and that
+    /// size: step `k` starts at `origin + (k - origin_step) h`, with no sum of many `h`.
+    origin: (Re<P>, u64, Option<Re<P>>),
     steps: u64,
     y: P::State,
     y_new: P::State,
@@ -64,6 +67,7 @@ where
         Ok(Tangent {
             t0,
             t: t0,
+            origin: (t0, 0, None),
             steps: 0,
             y,
             y_new,
@@ -81,10 +85,12 @@ where
     {
         let zero = Re::<P>::zero();
         let h_dual = P::Scalar::seeded(h, zero);
-        // step `i` of this call starts at `t_start + i h` (no sum of many `h`)
-        let t_start = self.t;
-        for i in 0..n {
-            let t = t_start + lit::<Re<P>>(i as f64) * h;
+        if self.origin.2 != Some(h) {
+            self.origin = (self.t, self.steps, Some(h));
+        }
+        let (origin, origin_step, _) = self.origin;
+        for _ in 0..n {
+            let t = origin + lit::<Re<P>>((self.steps - origin_step) as f64) * h;
             let non_finite = Error::NonFinite {
                 t: to_f64(t),
                 step: self.steps,
@@ -100,7 +106,7 @@ where
             stepper.accept();
             core::mem::swap(&mut self.y, &mut self.y_new);
             self.steps += 1;
-            self.t = t_start + lit::<Re<P>>((i + 1) as f64) * h;
+            self.t = origin + lit::<Re<P>>((self.steps - origin_step) as f64) * h;
             self.indicators
                 .record(to_f64(self.t - self.t0), self.log_scale + length.ln());
             if !(1.0 / LIMIT..=LIMIT).contains(&length) {

@@ -301,6 +301,24 @@ where
 }
 
 #[test]
+#[allow(clippy::float_cmp)] // exact: the time is a product, not a sum of rounded steps
+fn the_time_after_many_calls_is_the_steps_times_the_step() {
+    let y0 = [1.0, 0.0].map(Dual64::from);
+    let mut stepper = Method::named("rk4")
+        .unwrap()
+        .stepper_for(&Harmonic, &y0, &Default::default())
+        .unwrap();
+    let mut tangent = Tangent::new(0.0, &y0, &[1.0, 0.0]).unwrap();
+    for _ in 0..12_500 {
+        tangent.steps(&Harmonic, &mut stepper, 0.01, 8).unwrap();
+    }
+    assert_eq!(tangent.t(), 1000.0, "no sum of 100000 steps of 0.01");
+    assert_eq!(tangent.indicators().elapsed(), 1000.0);
+    tangent.steps(&Harmonic, &mut stepper, 0.5, 2).unwrap();
+    assert_eq!(tangent.t(), 1001.0);
+}
+
+#[test]
 fn mean_megno_tends_to_zero_for_a_harmonic_oscillator_and_to_two_for_a_kepler_orbit() {
     let (harmonic, _) = mean_megno(&Harmonic, [1.0, 0.0].map(Dual64::from), std::f64::consts::PI, 1000);
     assert!(harmonic.abs() < 0.02, "harmonic oscillator: mean MEGNO {harmonic}");

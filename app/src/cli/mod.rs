@@ -3,6 +3,7 @@
 mod choice;
 mod finite_number;
 mod heat_map;
+mod indicator;
 mod interrupt;
 mod legend;
 mod methods;

@@ -79,6 +79,12 @@ pub struct RunArgs {
     /// splittings and compositions).
     #[arg(long)]
     pub compensated: bool,
+    /// A chaos indicator along the run (fixed steps): MEGNO and its mean, the Lyapunov
+    /// exponent's estimate or the FLI, from one variation carried through the same steps;
+    /// written to SCENE-METHOD-INDICATOR.csv beside the run's CSV and summarised
+    /// (docs/chaos.md).
+    #[arg(long, value_enum)]
+    pub indicator: Option<super::indicator::IndicatorArg>,
 }
 
 /// `--solver`.
@@ -234,11 +240,19 @@ impl SceneVisitor for Runner<'_> {
         if section.is_some() {
             outputs.extend([section_path.clone(), section_picture.clone()]);
         }
+        let indicator_path = args.indicator.map(|i| i.path(&stem));
+        outputs.extend(indicator_path.clone());
         outputs.extend(super::pictures::run_pictures(&header, &stem));
         for output in &outputs {
             super::output::refuse_overwriting(output, &inputs)?;
         }
         run.check_span().map_err(flag_hint)?;
+        // the indicators' run first: a scene or an option they cannot follow is refused
+        // before any file is written
+        let chaos = args
+            .indicator
+            .map(|_| super::indicator::follow(&setup, &method, &options, run.t_end()))
+            .transpose()?;
         let destination = if is_stdout(&path) {
             "stdout".into()
         } else {
@@ -338,6 +352,18 @@ impl SceneVisitor for Runner<'_> {
         );
         // The summary is information, not output: a closed stderr is not an error.
         let _ = writeln!(std::io::stderr(), "{summary}");
+        if let (Some(indicator), Some(samples), Some(path)) = (args.indicator, &chaos, &indicator_path) {
+            indicator.write(path, samples)?;
+            if let Some(last) = samples.last() {
+                let _ = writeln!(
+                    std::io::stderr(),
+                    "{}; {} samples in {}",
+                    indicator.sentence(last),
+                    samples.len(),
+                    path.display()
+                );
+            }
+        }
         if let Some((e, _)) = track.energy_drift().filter(|(e, _)| !e.is_finite()) {
             let _ = writeln!(
                 std::io::stderr(),

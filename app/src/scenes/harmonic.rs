@@ -92,6 +92,14 @@ impl Scene for Harmonic {
         vec!["x".into(), "v".into()]
     }
 
+    fn chaos(
+        &self,
+        y0: &Self::State,
+        run: &super::ChaosRun<'_>,
+    ) -> Option<Result<Vec<super::ChaosSample>, stormer::Error>> {
+        Some(super::chaos::harmonic(self, y0, run))
+    }
+
     fn exact(&self, t0: f64, y0: &[f64; 2], t: f64) -> Option<[f64; 2]> {
         let (s, c) = (self.w0 * (t - t0)).sin_cos();
         Some([y0[0] * c + y0[1] / self.w0 * s, y0[1] * c - self.w0 * y0[0] * s])

@@ -108,6 +108,14 @@ impl Scene for HenonHeiles {
     fn components(&self, _y0: &Self::State) -> Vec<String> {
         ["x", "y", "px", "py"].map(String::from).to_vec()
     }
+
+    fn chaos(
+        &self,
+        y0: &Self::State,
+        run: &super::ChaosRun<'_>,
+    ) -> Option<Result<Vec<super::ChaosSample>, stormer::Error>> {
+        Some(super::chaos::henon_heiles(self, y0, run))
+    }
 }
 
 #[cfg(test)]

@@ -46,6 +46,7 @@ mod arenstorf;
 mod bad_line;
 mod builtin;
 mod central_force_file;
+mod chaos;
 mod charged_file;
 mod damped;
 mod file;
@@ -61,6 +62,7 @@ mod relativistic_file;
 pub use arenstorf::{RestrictedThreeBody, ThreeBodyInitial, ThreeBodyParameters};
 pub use builtin::{builtin, load, parse, source, BuiltinScene, SceneSource, BUILTIN};
 pub use central_force_file::{CentralForceInitial, CentralForceParameters};
+pub use chaos::{ChaosRun, ChaosSample};
 pub use charged_file::{BottleTable, ChargedParameters, ChargedScene, DipoleTable, ParticleEntry};
 pub use damped::{DampedOscillator, DampedParameters};
 pub use file::{Number, RunSettings, Source, Units};
@@ -139,6 +141,13 @@ pub trait Scene: Problem<Scalar = f64> + Sized + 'static {
     /// tests', compile no catalog-wide dispatch (docs/build-shape.md).
     fn stepper(&self, method: &Method, y0: &Self::State, implicit: &ImplicitOptions) -> StepperResult<Self> {
         method.stepper_for(self, y0, implicit)
+    }
+
+    /// The chaos indicators along the fixed steps of `run` from `y0` (`run --indicator`):
+    /// the model on dual numbers carrying one variation ([`ChaosRun`], scenes/chaos.rs);
+    /// `None` for a model with no dual form yet.
+    fn chaos(&self, _y0: &Self::State, _run: &ChaosRun<'_>) -> Option<Result<Vec<ChaosSample>, Error>> {
+        None
     }
 }
 

@@ -63,6 +63,14 @@ impl Scene for Pendulum {
     fn components(&self, _y0: &Self::State) -> Vec<String> {
         vec!["theta".into(), "omega".into()]
     }
+
+    fn chaos(
+        &self,
+        y0: &Self::State,
+        run: &super::ChaosRun<'_>,
+    ) -> Option<Result<Vec<super::ChaosSample>, stormer::Error>> {
+        Some(super::chaos::pendulum(self, y0, run))
+    }
 }
 
 #[cfg(test)]

@@ -8,6 +8,7 @@ mod bad_input;
 mod cli;
 mod ensemble;
 mod hostile;
+mod indicator;
 mod kepler_correctors;
 mod kepler_split;
 mod save_at;

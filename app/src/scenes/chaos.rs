@@ -1,0 +1,132 @@
+//! The chaos indicators of a scene's run (`run --indicator`): the scene's model on dual
+//! numbers, carrying one variation through the same fixed steps as the run
+//! (`stormer::chaos`, docs/chaos.md).
+
+use nalgebra::DVector;
+use stormer::chaos::{Indicators, Tangent};
+use stormer::models::{CentralForce, NBody, SplitMix64};
+use stormer::stepper::ImplicitOptions;
+use stormer::verify::problems::HenonHeiles as HenonHeilesTwin;
+use stormer::verify::problems::Pendulum as PendulumTwin;
+use stormer::verify::Dual64;
+use stormer::{Error, Method, Problem, SecondOrder, State};
+
+use super::{Harmonic, HenonHeiles, Pendulum};
+
+/// The fixed steps the indicators follow.
+#[derive(Debug, Clone, Copy)]
+pub struct ChaosRun<'a> {
+    /// The method, as the run's.
+    pub method: &'a Method,
+    /// How an implicit method solves its stages.
+    pub implicit: &'a ImplicitOptions,
+    /// The start.
+    pub t0: f64,
+    /// The step.
+    pub h: f64,
+    /// The steps.
+    pub steps: u64,
+    /// A sample every this many steps (and after the last).
+    pub every: u64,
+}
+
+/// The indicators after the steps up to `t`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ChaosSample {
+    /// The time.
+    pub t: f64,
+    /// MEGNO, its mean, the Lyapunov estimate and the FLI at `t`.
+    pub indicators: Indicators,
+}
+
+/// A unit vector of `dim` components from a fixed seed: a variation in no special
+/// direction (REBOUND draws one at random), the same on every run.
+fn initial_variation(dim: usize) -> Vec<f64> {
+    SplitMix64::new(2026).take(dim).collect()
+}
+
+/// The indicators along `run` of the dual problem `dual` from `y0` (the dual form of the
+/// scene's initial state).
+pub fn follow<D>(dual: &D, y0: &D::State, run: &ChaosRun<'_>) -> Result<Vec<ChaosSample>, Error>
+where
+    D: Problem<Scalar = Dual64> + 'static,
+    D::State: 'static,
+{
+    let mut stepper = run.method.stepper_for(dual, y0, run.implicit)?;
+    let mut tangent = Tangent::new(run.t0, y0, &initial_variation(y0.dim()))?;
+    let mut samples = Vec::new();
+    let mut done = 0;
+    while done < run.steps {
+        let n = run.every.max(1).min(run.steps - done);
+        tangent.steps(dual, &mut stepper, run.h, n)?;
+        done += n;
+        samples.push(ChaosSample {
+            t: tangent.t(),
+            indicators: *tangent.indicators(),
+        });
+    }
+    Ok(samples)
+}
+
+/// A state of real numbers as dual numbers (zero dual parts).
+fn dual<const N: usize>(y: &[f64; N]) -> [Dual64; N] {
+    y.map(Dual64::from)
+}
+
+/// The same, for a dynamic state.
+fn dual_vector(y: &DVector<f64>) -> DVector<Dual64> {
+    y.map(Dual64::from)
+}
+
+/// The harmonic oscillator on dual numbers.
+struct Oscillator {
+    w0_squared: Dual64,
+}
+
+impl SecondOrder for Oscillator {
+    type Scalar = Dual64;
+    type State = [Dual64; 2];
+
+    fn acceleration(&self, _t: Dual64, q: &[Dual64], a: &mut [Dual64]) {
+        a[0] = -self.w0_squared * q[0];
+    }
+}
+
+/// The dual twins of the models that have one.
+pub(crate) fn harmonic(model: &Harmonic, y0: &[f64; 2], run: &ChaosRun<'_>) -> Result<Vec<ChaosSample>, Error> {
+    let twin = Oscillator {
+        w0_squared: Dual64::from(model.w0 * model.w0),
+    };
+    follow(&twin, &dual(y0), run)
+}
+
+/// The pendulum's twin.
+pub(crate) fn pendulum(_model: &Pendulum, y0: &[f64; 2], run: &ChaosRun<'_>) -> Result<Vec<ChaosSample>, Error> {
+    follow(&PendulumTwin::<Dual64>::new(), &dual(y0), run)
+}
+
+/// Henon-Heiles's twin.
+pub(crate) fn henon_heiles(_model: &HenonHeiles, y0: &[f64; 4], run: &ChaosRun<'_>) -> Result<Vec<ChaosSample>, Error> {
+    follow(&HenonHeilesTwin::<Dual64>::new(), &dual(y0), run)
+}
+
+/// A central force's twin.
+pub(crate) fn central_force(
+    model: &CentralForce<f64, DVector<f64>>,
+    y0: &DVector<f64>,
+    run: &ChaosRun<'_>,
+) -> Result<Vec<ChaosSample>, Error> {
+    let twin = CentralForce::<Dual64, DVector<Dual64>>::new(Dual64::from(model.mu));
+    follow(&twin, &dual_vector(y0), run)
+}
+
+/// Gravitating bodies' twin.
+pub(crate) fn n_body(
+    model: &NBody<f64, DVector<f64>>,
+    y0: &DVector<f64>,
+    run: &ChaosRun<'_>,
+) -> Result<Vec<ChaosSample>, Error> {
+    let masses: Vec<Dual64> = model.masses().iter().map(|&m| Dual64::from(m)).collect();
+    let twin = NBody::<Dual64, DVector<Dual64>>::new(Dual64::from(model.g()), &masses, model.dim())?;
+    follow(&twin, &dual_vector(y0), run)
+}

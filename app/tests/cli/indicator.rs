@@ -1,0 +1,136 @@
+//! `run --indicator`: MEGNO, the Lyapunov estimate and the FLI along a run, written beside
+//! the CSV and summarised, with their verdicts on orbits whose nature is known; and the
+//! refusals, before any file is written.
+
+use crate::support::binary::{assert_error, csv_rows, stderr, stormer, stormer_ok, summary_number, workdir};
+
+/// A Henon-Heiles scene at E = 1/6 from the section point (x, y, py) = (0, y, 0).
+fn henon_heiles(y: f64) -> String {
+    format!(
+        "model = \"henon-heiles\"\n[parameters]\nenergy = {:?}\n[initial]\ny = {y:?}\npy = 0.0\n\
+         [run]\nmethod = \"velocity_verlet_kdk\"\ndt = 0.05\nt_end = 2500.0\nevery = 100\n",
+        1.0 / 6.0
+    )
+}
+
+#[test]
+fn megno_tells_the_chaotic_sea_of_henon_heiles_from_an_island_and_a_kepler_orbit() {
+    let dir = workdir("indicator", "verdicts");
+    std::fs::write(dir.join("sea.toml"), henon_heiles(-0.2)).unwrap();
+    std::fs::write(dir.join("island.toml"), henon_heiles(0.2)).unwrap();
+    let sea = stderr(&stormer_ok(
+        &dir,
+        &["run", "sea.toml", "--indicator", "megno", "-o", "sea.csv"],
+    ));
+    assert!(
+        summary_number(&sea, "mean MEGNO") > 20.0 && sea.contains("chaotic: above 2.5"),
+        "{sea}"
+    );
+    let island = stderr(&stormer_ok(
+        &dir,
+        &["run", "island.toml", "--indicator", "megno", "-o", "island.csv"],
+    ));
+    let mean = summary_number(&island, "mean MEGNO");
+    assert!(
+        (mean - 2.0).abs() < 0.1 && island.contains("regular: below 2.5"),
+        "{island}"
+    );
+    // the samples beside the CSV: one every 100 steps of the 50000
+    let (header, rows) = csv_rows(&std::fs::read_to_string(dir.join("island-megno.csv")).unwrap());
+    assert_eq!(header, "t,megno,mean_megno");
+    assert_eq!(rows.len(), 500);
+    assert!((rows[499][0] - 2500.0).abs() < 1e-9 && (rows[499][2] - mean).abs() < 1e-4 * mean);
+    // the two-body scene (n-body model, e = 0.373): regular, mean MEGNO near 2
+    let kepler = stderr(&stormer_ok(
+        &dir,
+        &[
+            "run",
+            "kepler",
+            "--t-end",
+            "1000",
+            "--indicator",
+            "megno",
+            "-o",
+            "kepler.csv",
+        ],
+    ));
+    assert!((summary_number(&kepler, "mean MEGNO") - 2.0).abs() < 0.1, "{kepler}");
+    // the harmonic oscillator: stable periodic, mean MEGNO near 0
+    let harmonic = stderr(&stormer_ok(
+        &dir,
+        &[
+            "run",
+            "harmonic",
+            "--t-end",
+            "100",
+            "--indicator",
+            "megno",
+            "-o",
+            "harmonic.csv",
+        ],
+    ));
+    assert!(summary_number(&harmonic, "mean MEGNO").abs() < 0.05, "{harmonic}");
+}
+
+#[test]
+fn the_lyapunov_estimate_and_the_fli_grow_on_the_chaotic_sea_only() {
+    let dir = workdir("indicator", "lyapunov");
+    std::fs::write(dir.join("sea.toml"), henon_heiles(-0.2)).unwrap();
+    std::fs::write(dir.join("island.toml"), henon_heiles(0.2)).unwrap();
+    let number = |scene: &str, indicator: &str, label: &str| {
+        let out = stormer_ok(
+            &dir,
+            &[
+                "run",
+                scene,
+                "--indicator",
+                indicator,
+                "-o",
+                &format!("{indicator}.csv"),
+            ],
+        );
+        summary_number(&stderr(&out), label)
+    };
+    assert!(number("sea.toml", "lyapunov", "Lyapunov exponent estimate") > 0.05);
+    assert!(number("island.toml", "lyapunov", "Lyapunov exponent estimate") < 5e-3);
+    // FLI: log10 of the growth; exponential on the sea (lambda t / ln 10 ~ 100), a few
+    // decades at most on the island
+    assert!(number("sea.toml", "fli", "fast Lyapunov indicator") > 50.0);
+    assert!(number("island.toml", "fli", "fast Lyapunov indicator") < 6.0);
+}
+
+#[test]
+fn an_indicator_the_run_cannot_follow_is_refused_before_any_file() {
+    let dir = workdir("indicator", "refusals");
+    let cases: [(&[&str], &str); 3] = [
+        (
+            &["run", "harmonic", "--indicator", "megno", "--rtol", "1e-8"],
+            "fixed steps",
+        ),
+        (
+            &["run", "free-kick", "--indicator", "lyapunov"],
+            "no form on dual numbers",
+        ),
+        (
+            &["run", "harmonic", "--indicator", "fli", "--save-at", "0:1:10"],
+            "drop --save-at",
+        ),
+    ];
+    for (args, says) in cases {
+        let mut args = args.to_vec();
+        args.extend(["-o", "refused.csv"]);
+        assert_error(&stormer(&dir, &args), says);
+        assert!(!dir.join("refused.csv").exists(), "{args:?} left a CSV");
+        assert!(
+            std::fs::read_dir(&dir).unwrap().next().is_none(),
+            "{args:?} left a file"
+        );
+    }
+    let unknown = stormer(&dir, &["run", "harmonic", "--indicator", "chaos"]);
+    assert_eq!(unknown.status.code(), Some(2));
+    assert!(
+        stderr(&unknown).contains("possible values: megno, lyapunov, fli"),
+        "{}",
+        stderr(&unknown)
+    );
+}
