@@ -78,13 +78,7 @@ impl Scene for CentralForce<f64, DVector<f64>> {
         q.chain(p).collect()
     }
 
-    fn chaos(
-        &self,
-        y0: &Self::State,
-        run: &super::ChaosRun<'_>,
-    ) -> Option<Result<Vec<super::ChaosSample>, stormer::Error>> {
-        Some(super::chaos::central_force(self, y0, run))
-    }
+    super::chaos::chaos_twin!(central_force);
 
     fn exact(&self, t0: f64, y0: &DVector<f64>, t: f64) -> Option<DVector<f64>> {
         let (q0, p0) = stormer::hamiltonian::halves(y0.as_slice());

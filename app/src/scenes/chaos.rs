@@ -68,6 +68,21 @@ where
     Ok(samples)
 }
 
+/// [`Scene::chaos`](super::Scene::chaos) for a model whose dual twin is the function
+/// `$twin` of this module.
+macro_rules! chaos_twin {
+    ($twin:ident) => {
+        fn chaos(
+            &self,
+            y0: &Self::State,
+            run: &super::ChaosRun<'_>,
+        ) -> Option<Result<Vec<super::ChaosSample>, stormer::Error>> {
+            Some(super::chaos::$twin(self, y0, run))
+        }
+    };
+}
+pub(crate) use chaos_twin;
+
 /// A state of real numbers as dual numbers (zero dual parts).
 fn dual<const N: usize>(y: &[f64; N]) -> [Dual64; N] {
     y.map(Dual64::from)

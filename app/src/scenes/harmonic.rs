@@ -92,13 +92,7 @@ impl Scene for Harmonic {
         vec!["x".into(), "v".into()]
     }
 
-    fn chaos(
-        &self,
-        y0: &Self::State,
-        run: &super::ChaosRun<'_>,
-    ) -> Option<Result<Vec<super::ChaosSample>, stormer::Error>> {
-        Some(super::chaos::harmonic(self, y0, run))
-    }
+    super::chaos::chaos_twin!(harmonic);
 
     fn exact(&self, t0: f64, y0: &[f64; 2], t: f64) -> Option<[f64; 2]> {
         let (s, c) = (self.w0 * (t - t0)).sin_cos();

@@ -109,13 +109,7 @@ impl Scene for HenonHeiles {
         ["x", "y", "px", "py"].map(String::from).to_vec()
     }
 
-    fn chaos(
-        &self,
-        y0: &Self::State,
-        run: &super::ChaosRun<'_>,
-    ) -> Option<Result<Vec<super::ChaosSample>, stormer::Error>> {
-        Some(super::chaos::henon_heiles(self, y0, run))
-    }
+    super::chaos::chaos_twin!(henon_heiles);
 }
 
 #[cfg(test)]

@@ -206,13 +206,7 @@ impl Scene for NBody<f64, DVector<f64>> {
         q.chain(p).collect()
     }
 
-    fn chaos(
-        &self,
-        y0: &Self::State,
-        run: &super::ChaosRun<'_>,
-    ) -> Option<Result<Vec<super::ChaosSample>, stormer::Error>> {
-        Some(super::chaos::n_body(self, y0, run))
-    }
+    super::chaos::chaos_twin!(n_body);
 
     /// Known for two bodies on a bound orbit (the `kepler` scene).
     fn exact(&self, t0: f64, y0: &DVector<f64>, t: f64) -> Option<DVector<f64>> {

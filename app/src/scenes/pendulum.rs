@@ -64,13 +64,7 @@ impl Scene for Pendulum {
         vec!["theta".into(), "omega".into()]
     }
 
-    fn chaos(
-        &self,
-        y0: &Self::State,
-        run: &super::ChaosRun<'_>,
-    ) -> Option<Result<Vec<super::ChaosSample>, stormer::Error>> {
-        Some(super::chaos::pendulum(self, y0, run))
-    }
+    super::chaos::chaos_twin!(pendulum);
 }
 
 #[cfg(test)]
