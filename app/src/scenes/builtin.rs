@@ -85,6 +85,10 @@ pub const BUILTIN: &[BuiltinScene] = &[
         name: "henon-heiles",
         text: include_str!("../../../scenes/henon-heiles.toml"),
     },
+    BuiltinScene {
+        name: "two-planets",
+        text: include_str!("../../../scenes/two-planets.toml"),
+    },
 ];
 
 /// The built-in scene called `name` (`-` and `_` both accepted).
@@ -227,6 +231,7 @@ mod tests {
             ("arenstorf", "restricted-3-body"),
             ("free-kick", "spinning-ball"),
             ("henon-heiles", "henon-heiles"),
+            ("two-planets", "n-body"),
         ];
         assert_eq!(BUILTIN.len(), models.len());
         for (s, (name, model)) in BUILTIN.iter().zip(models) {

@@ -4,7 +4,7 @@
 
 use nalgebra::DVector;
 use stormer::chaos::{Indicators, Tangent};
-use stormer::models::{CentralForce, NBody, SplitMix64};
+use stormer::models::{CentralForce, KeplerSplit, NBody, SplitMix64};
 use stormer::stepper::ImplicitOptions;
 use stormer::verify::problems::HenonHeiles as HenonHeilesTwin;
 use stormer::verify::problems::Pendulum as PendulumTwin;
@@ -135,13 +135,28 @@ pub(crate) fn central_force(
     follow(&twin, &dual_vector(y0), run)
 }
 
+/// The same bodies on dual numbers (the same pulling ones).
+fn bodies_twin(model: &NBody<f64, DVector<f64>>) -> Result<NBody<Dual64, DVector<Dual64>>, Error> {
+    let masses: Vec<Dual64> = model.masses().iter().map(|&m| Dual64::from(m)).collect();
+    NBody::new(Dual64::from(model.g()), &masses, model.dim())?.with_active(model.active())
+}
+
 /// Gravitating bodies' twin.
 pub(crate) fn n_body(
     model: &NBody<f64, DVector<f64>>,
     y0: &DVector<f64>,
     run: &ChaosRun<'_>,
 ) -> Result<Vec<ChaosSample>, Error> {
-    let masses: Vec<Dual64> = model.masses().iter().map(|&m| Dual64::from(m)).collect();
-    let twin = NBody::<Dual64, DVector<Dual64>>::new(Dual64::from(model.g()), &masses, model.dim())?;
+    follow(&bodies_twin(model)?, &dual_vector(y0), run)
+}
+
+/// The Wisdom-Holman split's twin: the same bodies split the same way (the state is
+/// already in the split's coordinates).
+pub(crate) fn kepler_split(
+    model: &KeplerSplit<f64, DVector<f64>>,
+    y0: &DVector<f64>,
+    run: &ChaosRun<'_>,
+) -> Result<Vec<ChaosSample>, Error> {
+    let twin = KeplerSplit::new(bodies_twin(model.bodies())?, model.coordinates())?;
     follow(&twin, &dual_vector(y0), run)
 }

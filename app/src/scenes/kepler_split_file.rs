@@ -47,6 +47,8 @@ impl Scene for SplitBodies {
     fn scene_state<'a>(&self, y: &'a DVector<f64>) -> Cow<'a, DVector<f64>> {
         Cow::Owned(self.to_scene(y))
     }
+
+    super::chaos::chaos_twin!(kepler_split);
 }
 
 /// The bodies of an n-body scene file, split, run by the Wisdom-Holman kernel in the

@@ -55,6 +55,7 @@ mod harmonic;
 mod henon_heiles;
 mod kepler_split_file;
 mod nbody_file;
+mod orbit_entry;
 mod particle_list;
 mod pendulum;
 mod relativistic_file;
@@ -71,6 +72,7 @@ pub use harmonic::{Harmonic, HarmonicParameters, OscillatorInitial};
 pub use henon_heiles::{HenonHeiles, HenonHeilesInitial, HenonHeilesParameters, DEFAULT_ENERGY};
 pub use kepler_split_file::{CorrectedBodies, SplitBodies};
 pub use nbody_file::{BodyEntry, GravityParameters};
+pub use orbit_entry::{ElementsFrame, OrbitEntry};
 pub use pendulum::{NoParameters, Pendulum, PendulumInitial, PENDULUM_PERIOD_45_DEGREES};
 pub use relativistic_file::{RelativisticParameters, RelativisticScene};
 

@@ -19,6 +19,7 @@
 
 use super::central_force_file::{coordinates, AXES};
 use super::file::{Number, Source};
+use super::orbit_entry::{place, ElementsFrame, OrbitEntry, Placed};
 use super::{Built, Scene};
 use nalgebra::DVector;
 use serde::Deserialize;
@@ -37,6 +38,9 @@ pub struct GravityParameters {
     /// How many bodies pull, the first ones in the file (default: all); the others are test
     /// particles.
     pub active: Option<Spanned<u64>>,
+    /// What the `orbit` of a body is about: `"jacobi"`, the centre of mass of the bodies
+    /// before it (the default, as REBOUND's), or `"heliocentric"`, the first body.
+    pub elements: Option<Spanned<String>>,
 }
 
 /// One `[[bodies]]` entry.
@@ -48,9 +52,11 @@ pub struct BodyEntry {
     /// Its mass (`> 0`).
     pub mass: Number,
     /// Its position: 1, 2 or 3 coordinates, the same number for every body.
-    pub position: Spanned<Vec<Number>>,
+    pub position: Option<Spanned<Vec<Number>>>,
     /// Its velocity (the state holds the momentum `p = m v`).
-    pub velocity: Spanned<Vec<Number>>,
+    pub velocity: Option<Spanned<Vec<Number>>>,
+    /// Its orbit instead of a position and a velocity (not for the first body).
+    pub orbit: Option<Spanned<OrbitEntry>>,
 }
 
 /// The CSV column prefix of a body (or particle): its name in lower case, spaces as `_`.
@@ -131,16 +137,44 @@ impl Scene for NBody<f64, DVector<f64>> {
         let (mut positions, mut velocities) = (Vec::new(), Vec::new());
         let mut taken = Taken::default();
         let mut dim = None;
+        let frame = ElementsFrame::read(src, parameters.elements.as_ref())?;
         for (k, body) in bodies.get_ref().iter().enumerate() {
             let name = taken.name(src, "bodies", k, &body.name)?;
-            masses.push(src.positive(&format!("bodies[{k}].mass ({name})"), &body.mass)?);
-            let q = coordinates(src, &format!("bodies[{k}].position ({name})"), &body.position)?;
-            let v = coordinates(src, &format!("bodies[{k}].velocity ({name})"), &body.velocity)?;
+            let mass = src.positive(&format!("bodies[{k}].mass ({name})"), &body.mass)?;
+            let field = format!("bodies[{k}] ({name})");
+            // each with the span an error about it points at
+            let (q, v, spans) = match (&body.position, &body.velocity, &body.orbit, dim) {
+                (Some(position), Some(velocity), None, _) => (
+                    coordinates(src, &format!("bodies[{k}].position ({name})"), position)?,
+                    coordinates(src, &format!("bodies[{k}].velocity ({name})"), velocity)?,
+                    [position.span(), velocity.span()],
+                ),
+                (None, None, Some(orbit), Some(d)) => {
+                    let placed = Placed {
+                        masses: &masses,
+                        positions: &positions,
+                        velocities: &velocities,
+                        dim: d,
+                    };
+                    let (q, v) = place(src, &field, orbit, mass, g, frame, &placed)?;
+                    (q, v, [orbit.span(), orbit.span()])
+                }
+                (None, None, Some(orbit), None) => {
+                    return Err(src.error_at(
+                        orbit.span(),
+                        format!("{field} is the first body: give its position and velocity, the orbits of the others are about it"),
+                    ))
+                }
+                _ => {
+                    return Err(src.error_at(
+                        body.name.span(),
+                        format!("{field} needs a position and a velocity, or an orbit: one of the two"),
+                    ))
+                }
+            };
+            masses.push(mass);
             let d = *dim.get_or_insert(q.len());
-            for (what, x, span) in [
-                ("position", &q, body.position.span()),
-                ("velocity", &v, body.velocity.span()),
-            ] {
+            for ((what, x), span) in [("position", &q), ("velocity", &v)].into_iter().zip(spans.clone()) {
                 if x.len() != d {
                     return Err(src.error_at(
                         span,
@@ -153,7 +187,7 @@ impl Scene for NBody<f64, DVector<f64>> {
             }
             if let Some(other) = taken.position(&q, k) {
                 return Err(src.error_at(
-                    body.position.span(),
+                    spans[0].clone(),
                     format!(
                         "bodies[{k}].position ({name}) is the position of bodies[{other}] ({}): two bodies cannot \
                          be at the same place, the force between them would be infinite",
