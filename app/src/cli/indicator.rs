@@ -57,6 +57,17 @@ impl IndicatorArg {
         }
     }
 
+    /// The number an ensemble keeps of a run: the mean MEGNO, the Lyapunov estimate or the
+    /// FLI at the sample.
+    pub fn value(self, sample: &ChaosSample) -> f64 {
+        let i = &sample.indicators;
+        match self {
+            IndicatorArg::Megno => i.mean_megno(),
+            IndicatorArg::Lyapunov => i.lyapunov(),
+            IndicatorArg::Fli => i.fli(),
+        }
+    }
+
     /// The summary's sentence about the last sample.
     pub fn sentence(self, last: &ChaosSample) -> String {
         let i = &last.indicators;

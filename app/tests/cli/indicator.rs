@@ -2,7 +2,7 @@
 //! the CSV and summarised, with their verdicts on orbits whose nature is known; and the
 //! refusals, before any file is written.
 
-use crate::support::binary::{assert_error, csv_rows, stderr, stormer, stormer_ok, summary_number, workdir};
+use crate::support::binary::{assert_error, csv_rows, stderr, stdout, stormer, stormer_ok, summary_number, workdir};
 
 /// A Henon-Heiles scene at E = 1/6 from the section point (x, y, py) = (0, y, 0).
 fn henon_heiles(y: f64) -> String {
@@ -121,16 +121,51 @@ fn an_indicator_the_run_cannot_follow_is_refused_before_any_file() {
         args.extend(["-o", "refused.csv"]);
         assert_error(&stormer(&dir, &args), says);
         assert!(!dir.join("refused.csv").exists(), "{args:?} left a CSV");
-        assert!(
-            std::fs::read_dir(&dir).unwrap().next().is_none(),
-            "{args:?} left a file"
-        );
+        let left = std::fs::read_dir(&dir).unwrap().count();
+        assert_eq!(left, 0, "{args:?} left a file");
     }
     let unknown = stormer(&dir, &["run", "harmonic", "--indicator", "chaos"]);
-    assert_eq!(unknown.status.code(), Some(2));
-    assert!(
-        stderr(&unknown).contains("possible values: megno, lyapunov, fli"),
-        "{}",
-        stderr(&unknown)
+    let said = stderr(&unknown);
+    assert_eq!(unknown.status.code(), Some(2), "{said}");
+    assert!(said.contains("possible values: megno, lyapunov, fli"), "{said}");
+}
+
+#[test]
+fn an_ensemble_measures_the_indicator_on_every_member_the_stability_map() {
+    let dir = workdir("indicator", "ensemble");
+    let map = "ensemble two-planets --vary bodies.2.orbit.a=7.2:8.5:2 --vary bodies.2.orbit.e=0.05:0.4:2 \
+               --indicator megno --out map";
+    let out = stormer_ok(&dir, &map.split_whitespace().collect::<Vec<_>>());
+    let said = format!("{}{}", stdout(&out), stderr(&out));
+    assert!(said.contains("megno: min"), "{said}");
+    let text = std::fs::read_to_string(dir.join("map/ensemble-two-planets-a+e.csv")).unwrap();
+    let header: Vec<&str> = text.lines().next().unwrap().split(',').collect();
+    let column = header.iter().position(|c| *c == "megno").expect("a megno column");
+    let megno = |a: &str, e: &str| -> f64 {
+        let row = text
+            .lines()
+            .find(|l| l.split(',').nth(1) == Some(a) && l.split(',').nth(2) == Some(e))
+            .unwrap_or_else(|| panic!("member ({a}, {e}) in {text}"));
+        row.split(',').nth(column).unwrap().parse().unwrap()
+    };
+    // REBOUND's verdicts at these points (docs/scenes.md 10): regular, chaotic
+    assert!(megno("8.5", "0.05") < 2.5, "{text}");
+    assert!(megno("7.2", "0.4") > 2.5, "{text}");
+    assert!(dir.join("map/ensemble-two-planets-a+e.svg").exists());
+    // a scene the indicator cannot follow: refused, nothing written
+    let refused = stormer(
+        &dir,
+        &[
+            "ensemble",
+            "free-kick",
+            "--vary",
+            "alpha=10:20:2",
+            "--indicator",
+            "megno",
+            "--out",
+            "none",
+        ],
     );
+    assert_error(&refused, "no form on dual numbers");
+    assert!(!dir.join("none").exists());
 }

@@ -11,6 +11,7 @@ use super::ensemble_part::{self, EnsembleId, EnsemblePart, Member};
 use super::job::{self, SceneText};
 use super::scene_numbers::{self, Numbers};
 use super::vary::{self, Axis, Vary};
+use crate::cli::indicator::IndicatorArg;
 use crate::cli::output::one_line;
 use crate::cli::pipeline::{Options, SceneRun, Steps};
 use crate::cli::scene_overrides::SceneOverrides;
@@ -40,8 +41,13 @@ pub struct EnsembleArgs {
     pub vary: Vec<String>,
     #[command(flatten)]
     pub overrides: SceneOverrides,
-    /// The column drawn: t, a component of the state, energy_error, steps or evaluations
-    /// [default: the state's first component].
+    /// A chaos indicator measured on every member (fixed steps; docs/chaos.md): its value
+    /// at the end (the mean MEGNO for megno) becomes a column, and the one drawn unless
+    /// --show says otherwise: with two --vary, a stability map.
+    #[arg(long, value_enum)]
+    pub indicator: Option<crate::cli::indicator::IndicatorArg>,
+    /// The column drawn: t, a component of the state, energy_error, the indicator, steps or
+    /// evaluations [default: the indicator, else the state's first component].
     #[arg(long, value_name = "COLUMN")]
     pub show: Option<String>,
     /// Directory of the table and the picture.
@@ -65,6 +71,7 @@ struct Members<'a> {
     method: &'a Method,
     dt: Option<f64>,
     t_end: Option<f64>,
+    indicator: Option<IndicatorArg>,
 }
 
 impl Members<'_> {
@@ -90,6 +97,7 @@ impl Members<'_> {
                 method: self.method,
                 dt: self.dt,
                 t_end: self.t_end,
+                indicator: self.indicator,
                 member: m,
                 values: values.clone(),
             })
@@ -102,6 +110,7 @@ struct Flight<'a> {
     method: &'a Method,
     dt: Option<f64>,
     t_end: Option<f64>,
+    indicator: Option<IndicatorArg>,
     member: usize,
     values: Vec<f64>,
 }
@@ -117,6 +126,17 @@ impl SceneVisitor for Flight<'_> {
         };
         let mut run = SceneRun::new(&setup, self.method, &options)?;
         run.check_span()?;
+        // the indicator first: a scene it cannot follow refuses the ensemble (member 0 is
+        // refused with the reason) before any file is written
+        // (a run the indicator cannot finish, an orbit thrown out, is this member's failure)
+        let indicator = match self.indicator {
+            Some(i) => match crate::cli::indicator::follow(&setup, self.method, &options, run.t_end()) {
+                Ok(samples) => Some((i, Ok(samples))),
+                Err(e @ Error::InvalidArgument { .. }) => return Err(e),
+                Err(e) => Some((i, Err(e))),
+            },
+            None => None,
+        };
         let outcome = run.measure();
         let mut member = Member {
             member: self.member,
@@ -125,6 +145,7 @@ impl SceneVisitor for Flight<'_> {
             state: Vec::new(),
             stopped: outcome.stopped.is_some(),
             energy_error: None,
+            indicator: None,
             steps: outcome.stats.steps,
             evaluations: outcome.stats.evaluations,
             failure: outcome.error.as_ref().map(|e| one_line(&e.to_string())),
@@ -146,6 +167,13 @@ impl SceneVisitor for Flight<'_> {
             .energy_drift()
             .map(|(drift, _)| drift)
             .filter(|d| d.is_finite());
+        match indicator {
+            Some((i, Ok(samples))) => {
+                member.indicator = samples.last().map(|last| i.value(last)).filter(|x| x.is_finite())
+            }
+            Some((i, Err(e))) => member.failure = Some(format!("the {} run: {}", i.name(), one_line(&e.to_string()))),
+            None => {}
+        }
         Ok(member)
     }
 }
@@ -207,6 +235,7 @@ pub fn ensemble(args: &EnsembleArgs) -> anyhow::Result<()> {
         components: plan.components.clone(),
         stop: plan.stop.map(String::from),
         energy: plan.energy,
+        indicator: args.indicator.map(|i| i.name().to_string()),
         show: String::new(),
         show_label: String::new(),
     };
@@ -220,7 +249,10 @@ pub fn ensemble(args: &EnsembleArgs) -> anyhow::Result<()> {
                 columns.join(", ")
             )
         )),
-        None => plan.components.first().cloned().unwrap_or_else(|| "t".into()),
+        None => match &id.indicator {
+            Some(indicator) => indicator.clone(),
+            None => plan.components.first().cloned().unwrap_or_else(|| "t".into()),
+        },
     };
     id.show_label = column_label(&id.show, &plan.units);
     let shard = args.shard.unwrap_or((1, 1));
@@ -240,6 +272,7 @@ pub fn ensemble(args: &EnsembleArgs) -> anyhow::Result<()> {
         method,
         dt: id.dt,
         t_end: id.t_end,
+        indicator: args.indicator,
     };
     let mine = super::shard_jobs(size, shard);
     let work = || -> (Vec<Result<Member, Error>>, usize) {

@@ -31,6 +31,10 @@ pub struct EnsembleId {
     pub stop: Option<String>,
     /// Whether the scene has an energy.
     pub energy: bool,
+    /// The chaos indicator each member also measures (`megno`: the mean MEGNO at the end,
+    /// `lyapunov`, `fli`), if any.
+    #[serde(default)]
+    pub indicator: Option<String>,
     /// The column drawn against the varied numbers.
     pub show: String,
     /// Its axis label, with the unit the scene file names.
@@ -49,13 +53,15 @@ impl EnsembleId {
     }
 
     /// The numeric columns a member has, in the table's order after the varied numbers:
-    /// `t`, the components, `energy_error` (scenes with an energy), `steps`, `evaluations`.
+    /// `t`, the components, `energy_error` (scenes with an energy), the indicator (with
+    /// `--indicator`), `steps`, `evaluations`.
     pub fn columns(&self) -> Vec<String> {
         let mut columns = vec!["t".to_string()];
         columns.extend(self.components.iter().cloned());
         if self.energy {
             columns.push("energy_error".into());
         }
+        columns.extend(self.indicator.iter().cloned());
         columns.extend(["steps".into(), "evaluations".into()]);
         columns
     }
@@ -77,6 +83,9 @@ pub struct Member {
     /// max |E - E0|/|E0| (|E - E0| when E0 = 0) over the records, for scenes with an
     /// energy; `None` also when it is not finite.
     pub energy_error: Option<f64>,
+    /// The indicator at the end of the run (with `--indicator`).
+    #[serde(default)]
+    pub indicator: Option<f64>,
     /// Accepted steps.
     pub steps: u64,
     /// Right-hand-side (force) evaluations.
@@ -94,6 +103,7 @@ impl Member {
         match name {
             "t" => self.t,
             "energy_error" => self.energy_error,
+            _ if id.indicator.as_deref() == Some(name) => self.indicator,
             "steps" => Some(self.steps as f64),
             "evaluations" => Some(self.evaluations as f64),
             _ => {
@@ -220,6 +230,9 @@ pub fn check(part: &EnsemblePart) -> Result<(), String> {
         }
         if let Some(e) = row.energy_error.filter(|e| !(e.is_finite() && *e >= 0.0)) {
             return Err(format!("{field}.energy_error: must be a finite number >= 0, got {e}"));
+        }
+        if let Some(x) = row.indicator.filter(|x| !x.is_finite()) {
+            return Err(format!("{field}.indicator: must be a finite number, got {x}"));
         }
     }
     Ok(())

@@ -36,7 +36,7 @@ fn csv_text(s: &str) -> String {
 }
 
 /// The table: `member`, the varied keys, `t`, the components, the stop event (`landing`:
-/// whether it ended the run), `energy_error`, `steps`, `evaluations`, `failure`. Numbers
+/// whether it ended the run), `energy_error`, the indicator, `steps`, `evaluations`, `failure`. Numbers
 /// are written in Rust's shortest form that reads back to the same `f64`.
 pub fn csv(part: &EnsemblePart) -> String {
     let id = &part.ensemble;
@@ -48,6 +48,7 @@ pub fn csv(part: &EnsemblePart) -> String {
     if id.energy {
         header.push("energy_error".into());
     }
+    header.extend(id.indicator.iter().cloned());
     header.extend(["steps".into(), "evaluations".into(), "failure".into()]);
     let mut out = header.join(",") + "\n";
     for row in &part.rows {
@@ -60,6 +61,9 @@ pub fn csv(part: &EnsemblePart) -> String {
         }
         if id.energy {
             cells.push(raw(row.energy_error));
+        }
+        if id.indicator.is_some() {
+            cells.push(raw(row.indicator));
         }
         cells.extend([
             row.steps.to_string(),
