@@ -2,7 +2,10 @@
 # years) timed with REBOUND on 2 processes and compared, point by point, with the table of
 #   stormer ensemble two-planets --vary bodies.2.orbit.a=7:10:80 --vary bodies.2.orbit.e=0:0.5:80 --indicator megno
 # Run: target/peers/venv/bin/python benches/peers/megno_map.py out/ensemble-two-planets-a+e.csv
-import rebound, math, time, sys, csv
+import csv, math, os, sys, time
+# this folder's rebound.py (the other comparison) would shadow the package
+sys.path = [p for p in sys.path if os.path.abspath(p or ".") != os.path.dirname(os.path.abspath(__file__))]
+import rebound
 from multiprocessing import Pool
 N = 80
 def val(lo, hi, k): return (lo * (N - 1 - k) + hi * k) / (N - 1)

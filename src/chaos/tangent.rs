@@ -39,8 +39,16 @@ where
     y_new: P::State,
     /// The natural log of the factors the variation was divided by so far.
     log_scale: f64,
+    /// How the indicators measure the variation (`None`: the Euclidean length of the dual
+    /// parts), and the log of its measure at the start (taken at the first step).
+    measure: Option<Measure<P>>,
+    log_measure0: Option<f64>,
     indicators: Indicators,
 }
+
+/// A measure of the variation held in the dual parts of a state of `P` (a norm of them:
+/// linear in them up to sign, e.g. their length after a linear change of coordinates).
+pub type Measure<P> = fn(&P, &<P as Problem>::State) -> f64;
 
 impl<P: Problem> Tangent<P>
 where
@@ -72,8 +80,20 @@ where
             y,
             y_new,
             log_scale: 0.0,
+            measure: None,
+            log_measure0: None,
             indicators: Indicators::new(),
         })
+    }
+
+    /// The indicators measure the variation by `measure` instead of the Euclidean length of
+    /// the state's dual parts: for instance in the coordinates and units another code uses
+    /// (REBOUND measures positions and velocities about the centre of mass, where a state
+    /// may hold Jacobi coordinates and momenta). The growth, hence the indicators' limits,
+    /// is the same for any norm; their values at a finite time are not.
+    pub fn measured_by(mut self, measure: Measure<P>) -> Self {
+        self.measure = Some(measure);
+        self
     }
 
     /// `n` steps of size `h` with `stepper` (built for `problem`, on the same dual scalar),
@@ -89,6 +109,9 @@ where
             self.origin = (self.t, self.steps, Some(h));
         }
         let (origin, origin_step, _) = self.origin;
+        if let (Some(measure), None) = (self.measure, self.log_measure0) {
+            self.log_measure0 = Some(measure(problem, &self.y).ln());
+        }
         for _ in 0..n {
             let t = origin + lit::<Re<P>>((self.steps - origin_step) as f64) * h;
             let non_finite = Error::NonFinite {
@@ -107,8 +130,12 @@ where
             core::mem::swap(&mut self.y, &mut self.y_new);
             self.steps += 1;
             self.t = origin + lit::<Re<P>>((self.steps - origin_step) as f64) * h;
+            let log_length = match (self.measure, self.log_measure0) {
+                (Some(measure), Some(log0)) => measure(problem, &self.y).ln() - log0,
+                _ => length.ln(),
+            };
             self.indicators
-                .record(to_f64(self.t - self.t0), self.log_scale + length.ln());
+                .record(to_f64(self.t - self.t0), self.log_scale + log_length);
             if !(1.0 / LIMIT..=LIMIT).contains(&length) {
                 let inverse = lit::<Re<P>>(1.0 / length);
                 for y in self.y.as_mut_slice() {

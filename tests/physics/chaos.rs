@@ -433,3 +433,41 @@ fn the_derivative_with_respect_to_a_mass_agrees_with_differences_and_fits_the_ma
     }
     assert!((guess - m).abs() < 1e-10 * m, "fitted {guess:e}, true {m:e}");
 }
+
+/// `3 |delta|`: the same growth as the default measure.
+fn three_lengths(_: &CentralForce<Dual64, [Dual64; 4]>, y: &[Dual64; 4]) -> f64 {
+    3.0 * y.iter().map(|x| x.eps * x.eps).sum::<f64>().sqrt()
+}
+
+/// `|(dq, 10 dp)|`: another norm.
+fn weighted(_: &CentralForce<Dual64, [Dual64; 4]>, y: &[Dual64; 4]) -> f64 {
+    let (q, p) = y.split_at(2);
+    let dq = q.iter().map(|x| x.eps * x.eps);
+    let dp = p.iter().map(|x| 100.0 * x.eps * x.eps);
+    dq.chain(dp).sum::<f64>().sqrt()
+}
+
+#[test]
+fn a_measure_of_the_variation_changes_the_indicators_transient_not_their_limit() {
+    let kepler = CentralForce::<Dual64, [Dual64; 4]>::new(Dual64::from(1.0));
+    let y0 = [0.5, 0.0, 0.0, 3.0f64.sqrt()].map(Dual64::from);
+    let method = Method::named("velocity_verlet_kdk").unwrap();
+    let run = |measure: Option<stormer::chaos::Measure<CentralForce<Dual64, [Dual64; 4]>>>| {
+        let mut stepper = method.stepper_for(&kepler, &y0, &Default::default()).unwrap();
+        let mut tangent = Tangent::new(0.0, &y0, &[1.0, 0.3, 0.3, 0.3]).unwrap();
+        if let Some(measure) = measure {
+            tangent = tangent.measured_by(measure);
+        }
+        tangent
+            .steps(&kepler, &mut stepper, 2.0 * std::f64::consts::PI / 1000.0, 1_000_000)
+            .unwrap();
+        *tangent.indicators()
+    };
+    let (euclid, three, other) = (run(None), run(Some(three_lengths)), run(Some(weighted)));
+    assert!(
+        (euclid.mean_megno() - three.mean_megno()).abs() < 1e-9,
+        "{euclid:?} {three:?}"
+    );
+    assert!((other.mean_megno() - 2.0).abs() < 0.05, "{other:?}");
+    assert!((euclid.mean_megno() - 2.0).abs() < 0.02, "{euclid:?}");
+}

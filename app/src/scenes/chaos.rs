@@ -3,7 +3,7 @@
 //! (`stormer::chaos`, docs/chaos.md).
 
 use nalgebra::DVector;
-use stormer::chaos::{Indicators, Tangent};
+use stormer::chaos::{Indicators, Measure, Tangent};
 use stormer::models::{CentralForce, KeplerSplit, NBody, SplitMix64};
 use stormer::stepper::ImplicitOptions;
 use stormer::verify::problems::HenonHeiles as HenonHeilesTwin;
@@ -46,14 +46,24 @@ fn initial_variation(dim: usize) -> Vec<f64> {
 }
 
 /// The indicators along `run` of the dual problem `dual` from `y0` (the dual form of the
-/// scene's initial state).
-pub fn follow<D>(dual: &D, y0: &D::State, run: &ChaosRun<'_>) -> Result<Vec<ChaosSample>, Error>
+/// scene's initial state), the variation starting along `delta0` (by default
+/// [`initial_variation`]) and measured by `measure` (by default its Euclidean length).
+pub fn follow<D>(
+    dual: &D,
+    y0: &D::State,
+    run: &ChaosRun<'_>,
+    (delta0, measure): (Option<Vec<f64>>, Option<Measure<D>>),
+) -> Result<Vec<ChaosSample>, Error>
 where
     D: Problem<Scalar = Dual64> + 'static,
     D::State: 'static,
 {
     let mut stepper = run.method.stepper_for(dual, y0, run.implicit)?;
-    let mut tangent = Tangent::new(run.t0, y0, &initial_variation(y0.dim()))?;
+    let delta0 = delta0.unwrap_or_else(|| initial_variation(y0.dim()));
+    let mut tangent = Tangent::new(run.t0, y0, &delta0)?;
+    if let Some(measure) = measure {
+        tangent = tangent.measured_by(measure);
+    }
     let mut samples = Vec::new();
     let mut done = 0;
     while done < run.steps {
@@ -112,17 +122,17 @@ pub(crate) fn harmonic(model: &Harmonic, y0: &[f64; 2], run: &ChaosRun<'_>) -> R
     let twin = Oscillator {
         w0_squared: Dual64::from(model.w0 * model.w0),
     };
-    follow(&twin, &dual(y0), run)
+    follow(&twin, &dual(y0), run, (None, None))
 }
 
 /// The pendulum's twin.
 pub(crate) fn pendulum(_model: &Pendulum, y0: &[f64; 2], run: &ChaosRun<'_>) -> Result<Vec<ChaosSample>, Error> {
-    follow(&PendulumTwin::<Dual64>::new(), &dual(y0), run)
+    follow(&PendulumTwin::<Dual64>::new(), &dual(y0), run, (None, None))
 }
 
 /// Henon-Heiles's twin.
 pub(crate) fn henon_heiles(_model: &HenonHeiles, y0: &[f64; 4], run: &ChaosRun<'_>) -> Result<Vec<ChaosSample>, Error> {
-    follow(&HenonHeilesTwin::<Dual64>::new(), &dual(y0), run)
+    follow(&HenonHeilesTwin::<Dual64>::new(), &dual(y0), run, (None, None))
 }
 
 /// A central force's twin.
@@ -132,7 +142,7 @@ pub(crate) fn central_force(
     run: &ChaosRun<'_>,
 ) -> Result<Vec<ChaosSample>, Error> {
     let twin = CentralForce::<Dual64, DVector<Dual64>>::new(Dual64::from(model.mu));
-    follow(&twin, &dual_vector(y0), run)
+    follow(&twin, &dual_vector(y0), run, (None, None))
 }
 
 /// The same bodies on dual numbers (the same pulling ones).
@@ -141,22 +151,61 @@ fn bodies_twin(model: &NBody<f64, DVector<f64>>) -> Result<NBody<Dual64, DVector
     NBody::new(Dual64::from(model.g()), &masses, model.dim())?.with_active(model.active())
 }
 
+/// The variation of gravitating bodies the way REBOUND takes it: drawn in positions and
+/// velocities in the scene's coordinates (here from a fixed seed), measured there.
+fn bodies_variation(masses: &[f64], dim: usize) -> Vec<f64> {
+    let n = masses.len() * dim;
+    let mut delta = initial_variation(2 * n);
+    for (k, dp) in delta[n..].iter_mut().enumerate() {
+        *dp *= masses[k / dim]; // a velocity variation as a momentum one
+    }
+    delta
+}
+
+/// `|(dq, dp / m)|` of the dual parts of a scene state of bodies of `masses`.
+fn scene_measure(masses: &[Dual64], dim: usize, y: &DVector<Dual64>) -> f64 {
+    let n = masses.len() * dim;
+    let (q, p) = y.as_slice().split_at(n);
+    let dq = q.iter().map(|x| x.eps * x.eps);
+    let dv = p.iter().enumerate().map(|(k, x)| {
+        let v = x.eps / masses[k / dim].re;
+        v * v
+    });
+    dq.chain(dv).sum::<f64>().sqrt()
+}
+
 /// Gravitating bodies' twin.
 pub(crate) fn n_body(
     model: &NBody<f64, DVector<f64>>,
     y0: &DVector<f64>,
     run: &ChaosRun<'_>,
 ) -> Result<Vec<ChaosSample>, Error> {
-    follow(&bodies_twin(model)?, &dual_vector(y0), run)
+    let measure: Measure<NBody<Dual64, DVector<Dual64>>> = |twin, y| scene_measure(twin.masses(), twin.dim(), y);
+    let delta0 = bodies_variation(model.masses(), model.dim());
+    follow(
+        &bodies_twin(model)?,
+        &dual_vector(y0),
+        run,
+        (Some(delta0), Some(measure)),
+    )
 }
 
 /// The Wisdom-Holman split's twin: the same bodies split the same way (the state is
-/// already in the split's coordinates).
+/// already in the split's coordinates); the variation drawn and measured in the scene's
+/// coordinates, as for the unsplit bodies.
 pub(crate) fn kepler_split(
     model: &KeplerSplit<f64, DVector<f64>>,
     y0: &DVector<f64>,
     run: &ChaosRun<'_>,
 ) -> Result<Vec<ChaosSample>, Error> {
     let twin = KeplerSplit::new(bodies_twin(model.bodies())?, model.coordinates())?;
-    follow(&twin, &dual_vector(y0), run)
+    let bodies = model.bodies();
+    // the scene's variation in the split's coordinates (the change of coordinates is linear)
+    let scene = model.to_scene(y0);
+    let delta = bodies_variation(bodies.masses(), bodies.dim());
+    let seeded = DVector::from_iterator(scene.len(), scene.iter().zip(&delta).map(|(&y, &d)| Dual64::new(y, d)));
+    let delta0: Vec<f64> = twin.from_scene(&seeded).iter().map(|x| x.eps).collect();
+    let measure: Measure<KeplerSplit<Dual64, DVector<Dual64>>> =
+        |twin, y| scene_measure(twin.bodies().masses(), twin.bodies().dim(), &twin.to_scene(y));
+    follow(&twin, &dual_vector(y0), run, (Some(delta0), Some(measure)))
 }
