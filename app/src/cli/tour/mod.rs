@@ -6,6 +6,7 @@
 //! [`EXPERIMENTS`]. The shared parts: `sim` runs a scene into a `trace` (in memory),
 //! `picture` draws, `verdict` words the findings.
 
+mod chaos;
 mod coulomb_magnetic;
 mod exb_drift;
 mod free_kick;
@@ -44,6 +45,7 @@ const EXPERIMENTS: &[(&str, Experiment)] = &[
     ("E x B schemes", exb_drift::run),
     ("free kick", free_kick::run),
     ("Henon-Heiles", henon_heiles::run),
+    ("regular or chaotic", chaos::run),
     ("work-precision", work_precision::run),
 ];
 
