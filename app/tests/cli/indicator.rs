@@ -127,6 +127,16 @@ fn an_indicator_the_run_cannot_follow_is_refused_before_any_file() {
     let unknown = stormer(&dir, &["run", "harmonic", "--indicator", "chaos"]);
     let said = stderr(&unknown);
     assert_eq!(unknown.status.code(), Some(2), "{said}");
+    // the indicator's CSV never replaces the run's input (a scene file named like it)
+    std::fs::write(dir.join("x-megno.csv"), henon_heiles(0.2)).unwrap();
+    assert_error(
+        &stormer(&dir, &["run", "x-megno.csv", "--indicator", "megno", "-o", "x.csv"]),
+        "would destroy the input",
+    );
+    assert_eq!(
+        std::fs::read_to_string(dir.join("x-megno.csv")).unwrap(),
+        henon_heiles(0.2)
+    );
     assert!(said.contains("possible values: megno, lyapunov, fli"), "{said}");
 }
 
