@@ -55,6 +55,19 @@ impl Indicators {
         self.steps += 1;
     }
 
+    /// [`Indicators::record`] with MEGNO summed as REBOUND sums it: `2 h t rate` for a step
+    /// of length `h` ending at `t = elapsed`, `rate` the variation's growth rate
+    /// `(delta . delta') / |delta|^2` there.
+    pub fn record_with_rate(&mut self, elapsed: f64, log_growth: f64, rate: f64) {
+        let h = elapsed - self.elapsed;
+        self.megno_integral += 2.0 * h * elapsed * rate;
+        self.elapsed = elapsed;
+        self.megno_mean_integral += self.megno_integral / self.elapsed * h;
+        self.log_growth = log_growth;
+        self.max_log_growth = self.max_log_growth.max(log_growth);
+        self.steps += 1;
+    }
+
     /// `Y(t)`, MEGNO at the last step (0 before the first).
     pub fn megno(&self) -> f64 {
         self.per_time(self.megno_integral)

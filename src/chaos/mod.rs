@@ -37,4 +37,4 @@ mod tangent;
 
 pub use indicators::Indicators;
 pub use sensitivity::{final_state_derivative, FinalState};
-pub use tangent::{Measure, Tangent};
+pub use tangent::{Measure, Rate, Tangent};

@@ -43,8 +43,15 @@ where
     /// parts), and the log of its measure at the start (taken at the first step).
     measure: Option<Measure<P>>,
     log_measure0: Option<f64>,
+    /// REBOUND's discrete MEGNO instead of ours, when set.
+    rate: Option<Rate<P>>,
     indicators: Indicators,
 }
+
+/// The growth rate `(delta . delta') / |delta|^2` of the variation in the dual parts of a
+/// state `y` of `P`, given the dual parts of `f(t, y)` (`delta' = J delta`) in the state `dy`,
+/// in the norm of a [`Measure`].
+pub type Rate<P> = fn(&P, &<P as Problem>::State, &<P as Problem>::State) -> f64;
 
 /// A measure of the variation held in the dual parts of a state of `P` (a norm of them:
 /// linear in them up to sign, e.g. their length after a linear change of coordinates).
@@ -82,6 +89,7 @@ where
             log_scale: 0.0,
             measure: None,
             log_measure0: None,
+            rate: None,
             indicators: Indicators::new(),
         })
     }
@@ -93,6 +101,17 @@ where
     /// is the same for any norm; their values at a finite time are not.
     pub fn measured_by(mut self, measure: Measure<P>) -> Self {
         self.measure = Some(measure);
+        self
+    }
+
+    /// MEGNO summed the way REBOUND sums it: `2 h t (delta . delta') / |delta|^2` after each
+    /// step, with `delta'` from the variational equations at the step's end (one more
+    /// evaluation of the right-hand side per step), `rate` giving the quotient in the norm
+    /// of [`Tangent::measured_by`]. The mean MEGNO then matches REBOUND's at a finite step;
+    /// the default sum, `2 t_mid` times the change of `ln |delta|` over the step, is the
+    /// derivative of the numerical map itself. The Lyapunov estimate and the FLI do not change.
+    pub fn megno_as_rebound(mut self, rate: Rate<P>) -> Self {
+        self.rate = Some(rate);
         self
     }
 
@@ -134,8 +153,17 @@ where
                 (Some(measure), Some(log0)) => measure(problem, &self.y).ln() - log0,
                 _ => length.ln(),
             };
-            self.indicators
-                .record(to_f64(self.t - self.t0), self.log_scale + log_length);
+            let elapsed = to_f64(self.t - self.t0);
+            match self.rate {
+                Some(rate) => {
+                    // y_new is free until the next step: the right-hand side's scratch
+                    problem.rhs(P::Scalar::seeded(self.t, zero), &self.y, &mut self.y_new);
+                    let rate = rate(problem, &self.y, &self.y_new);
+                    self.indicators
+                        .record_with_rate(elapsed, self.log_scale + log_length, rate);
+                }
+                None => self.indicators.record(elapsed, self.log_scale + log_length),
+            }
             if !(1.0 / LIMIT..=LIMIT).contains(&length) {
                 let inverse = lit::<Re<P>>(1.0 / length);
                 for y in self.y.as_mut_slice() {
