@@ -149,7 +149,8 @@ pub fn follow<S: Scene>(
         Some(samples) => samples,
         None => refuse(format!(
             "the {} model has no form on dual numbers yet, which the indicators need (they run on the harmonic, \
-             pendulum, henon-heiles, central-force and n-body models, the last split or not, without a corrector)",
+             pendulum, henon-heiles, central-force, charged-particles and n-body models, the last split or not, \
+             without a corrector)",
             S::MODEL
         )),
     }

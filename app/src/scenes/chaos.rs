@@ -11,7 +11,8 @@ use stormer::verify::problems::Pendulum as PendulumTwin;
 use stormer::verify::Dual64;
 use stormer::{Error, Method, Problem, SecondOrder, State};
 
-use super::{Harmonic, HenonHeiles, Pendulum};
+use super::{ChargedScene, Harmonic, HenonHeiles, Pendulum};
+use stormer::magnetic::Charged;
 
 /// The fixed steps the indicators follow.
 #[derive(Debug, Clone, Copy)]
@@ -142,6 +143,12 @@ pub(crate) fn central_force(
     run: &ChaosRun<'_>,
 ) -> Result<Vec<ChaosSample>, Error> {
     let twin = CentralForce::<Dual64, DVector<Dual64>>::new(Dual64::from(model.mu));
+    follow(&twin, &dual_vector(y0), run, (None, None))
+}
+
+/// Charged particles' twin: the same particles and fields on dual numbers.
+pub(crate) fn charged(model: &ChargedScene, y0: &DVector<f64>, run: &ChaosRun<'_>) -> Result<Vec<ChaosSample>, Error> {
+    let twin = Charged(model.0.converted::<Dual64, DVector<Dual64>>());
     follow(&twin, &dual_vector(y0), run, (None, None))
 }
 

@@ -313,6 +313,8 @@ impl Scene for ChargedScene {
         particle_columns(self.0.names(), "v")
     }
 
+    super::chaos::chaos_twin!(charged);
+
     /// Known for independent particles in uniform fields ([`ChargedParticles::exact_state`]).
     fn exact(&self, t0: f64, y0: &DVector<f64>, t: f64) -> Option<DVector<f64>> {
         self.0.exact_state(y0, t - t0)
