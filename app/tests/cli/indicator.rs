@@ -57,10 +57,8 @@ fn megno_tells_the_chaotic_sea_of_henon_heiles_from_an_island_and_a_kepler_orbit
     assert!((summary_number(&kepler, "mean MEGNO") - 2.0).abs() < 0.1, "{kepler}");
     // a charged particle in the magnetic bottle, Boris's steps: bouncing between the mirrors,
     // regular
-    let bottle = stderr(&stormer_ok(
-        &dir,
-        &["run", "magnetic-bottle", "--method", "boris", "--indicator", "megno", "-o", "bottle.csv"],
-    ));
+    let bottle = "run magnetic-bottle --method boris --indicator megno -o bottle.csv";
+    let bottle = stderr(&stormer_ok(&dir, &bottle.split_whitespace().collect::<Vec<_>>()));
     assert!(bottle.contains("regular: below 2.5"), "{bottle}");
     // the harmonic oscillator: stable periodic, mean MEGNO near 0
     let harmonic = stderr(&stormer_ok(
