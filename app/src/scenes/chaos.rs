@@ -4,6 +4,7 @@
 
 use nalgebra::DVector;
 use stormer::chaos::{Indicators, Measure, Tangent};
+use stormer::magnetic::Charged;
 use stormer::models::{CentralForce, KeplerSplit, NBody, SplitMix64};
 use stormer::stepper::ImplicitOptions;
 use stormer::verify::problems::HenonHeiles as HenonHeilesTwin;
@@ -12,7 +13,6 @@ use stormer::verify::Dual64;
 use stormer::{Error, Method, Problem, SecondOrder, State};
 
 use super::{ChargedScene, Harmonic, HenonHeiles, Pendulum};
-use stormer::magnetic::Charged;
 
 /// The fixed steps the indicators follow.
 #[derive(Debug, Clone, Copy)]
@@ -40,8 +40,8 @@ pub struct ChaosSample {
     pub indicators: Indicators,
 }
 
-/// A unit vector of `dim` components from a fixed seed: a variation in no special
-/// direction (REBOUND draws one at random), the same on every run.
+/// A variation of `dim` components in `[-1, 1)` from a fixed seed (the tangent normalises
+/// it): in no special direction (REBOUND draws one at random), the same on every run.
 fn initial_variation(dim: usize) -> Vec<f64> {
     SplitMix64::new(2026).take(dim).collect()
 }
