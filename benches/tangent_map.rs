@@ -90,40 +90,32 @@ fn outer_start() -> [f64; 24] {
     kepler_split::<f64>().from_scene(&oss::outer_solar_system(1.0).1)
 }
 
-fn bench(c: &mut Criterion) {
-    let (split, split_dual) = (kepler_split::<f64>(), kepler_split::<Dual64>());
-    let (charged, charged_dual) = (coulomb_magnetic::<f64>(), coulomb_magnetic::<Dual64>());
-    let (y_outer, y_charged) = (outer_start(), [1.0, 1.0, 1.0, 0.0, 0.0, 0.0]);
-    let mut group = c.benchmark_group("tangent_map_1000_steps");
-    group.bench_function("kepler_split_plain", |b| {
-        b.iter(|| plain(&split, "velocity_verlet_kdk", STEPS, black_box(10.0), y_outer))
+/// Criterion's estimates of `name`'s plain steps and its steps with one variation.
+fn plain_and_variation<R, D, const N: usize>(
+    c: &mut Criterion,
+    name: &str,
+    (real, dual): (&R, &D),
+    h: f64,
+    y0: [f64; N],
+) where
+    R: Problem<Scalar = f64, State = [f64; N]> + 'static,
+    D: Problem<Scalar = Dual64, State = [Dual64; N]> + 'static,
+{
+    let mut group = c.benchmark_group(format!("tangent_map_1000_steps/{name}"));
+    group.bench_function("plain", |b| {
+        b.iter(|| plain(real, "velocity_verlet_kdk", STEPS, black_box(h), y0))
     });
-    group.bench_function("kepler_split_variation", |b| {
-        b.iter(|| {
-            with_variation(
-                &split_dual,
-                "velocity_verlet_kdk",
-                STEPS,
-                black_box(10.0),
-                y_outer.map(Dual64::from),
-            )
-        })
-    });
-    group.bench_function("magnetic_verlet_plain", |b| {
-        b.iter(|| plain(&charged, "velocity_verlet_kdk", STEPS, black_box(0.01), y_charged))
-    });
-    group.bench_function("magnetic_verlet_variation", |b| {
-        b.iter(|| {
-            with_variation(
-                &charged_dual,
-                "velocity_verlet_kdk",
-                STEPS,
-                black_box(0.01),
-                y_charged.map(Dual64::from),
-            )
-        })
+    group.bench_function("variation", |b| {
+        b.iter(|| with_variation(dual, "velocity_verlet_kdk", STEPS, black_box(h), y0.map(Dual64::from)))
     });
     group.finish();
+}
+
+fn bench(c: &mut Criterion) {
+    let split = (&kepler_split::<f64>(), &kepler_split::<Dual64>());
+    plain_and_variation(c, "kepler_split", split, 10.0, outer_start());
+    let charged = (&coulomb_magnetic::<f64>(), &coulomb_magnetic::<Dual64>());
+    plain_and_variation(c, "magnetic_verlet", charged, 0.01, [1.0, 1.0, 1.0, 0.0, 0.0, 0.0]);
 }
 
 /// Interleaved: each variation's ns per step and its ratio to the plain step.

@@ -144,6 +144,7 @@ pub fn follow<S: Scene>(
         h,
         steps: steps as u64,
         every: options.every.unwrap_or(setup.run.every),
+        cancel: options.cancel,
     };
     match setup.model.chaos(&setup.y0, &run) {
         Some(samples) => samples,

@@ -3,6 +3,7 @@
 //! (`stormer::chaos`, docs/chaos.md).
 
 use nalgebra::DVector;
+use std::sync::atomic::{AtomicBool, Ordering};
 use stormer::chaos::{Indicators, Measure, Tangent};
 use stormer::magnetic::Charged;
 use stormer::models::{CentralForce, KeplerSplit, NBody, SplitMix64};
@@ -29,6 +30,9 @@ pub struct ChaosRun<'a> {
     pub steps: u64,
     /// A sample every this many steps (and after the last).
     pub every: u64,
+    /// The run stops with [`Error::Cancelled`] once this flag is set (read every 1024
+    /// steps at most, as the driver's).
+    pub cancel: Option<&'a AtomicBool>,
 }
 
 /// The indicators after the steps up to `t`.
@@ -66,15 +70,25 @@ where
         tangent = tangent.measured_by(measure);
     }
     let mut samples = Vec::new();
+    let every = run.every.max(1);
     let mut done = 0;
     while done < run.steps {
-        let n = run.every.max(1).min(run.steps - done);
+        if run.cancel.is_some_and(|c| c.load(Ordering::Relaxed)) {
+            return Err(Error::Cancelled {
+                t: tangent.t(),
+                step: done,
+            });
+        }
+        // up to the next sample, in runs of at most 1024 steps between reads of the flag
+        let n = (every - done % every).min(1024).min(run.steps - done);
         tangent.steps(dual, &mut stepper, run.h, n)?;
         done += n;
-        samples.push(ChaosSample {
-            t: tangent.t(),
-            indicators: *tangent.indicators(),
-        });
+        if done % every == 0 || done == run.steps {
+            samples.push(ChaosSample {
+                t: tangent.t(),
+                indicators: *tangent.indicators(),
+            });
+        }
     }
     Ok(samples)
 }

@@ -231,6 +231,25 @@ mod tests {
         );
         let message = parse(&first, "planets.toml", "planets").unwrap_err().to_string();
         assert!(message.contains("is the first body"), "{message}");
+        // the boundaries: a parabola, and the scene's dimension
+        let parabola = scene("", "orbit = { a = 9.5, e = 1.0 }");
+        let message = parse(&parabola, "planets.toml", "planets").unwrap_err().to_string();
+        assert!(message.contains("parabola"), "{message}");
+        let plane = |orbit: &str| {
+            format!(
+                "model = \"n-body\"\n[parameters]\nG = 1.0\n[[bodies]]\nname = \"star\"\nmass = 1.0\n\
+                 position = [0.0, 0.0]\nvelocity = [0.0, 0.0]\n[[bodies]]\nname = \"p\"\nmass = 0.001\n{orbit}\n\
+                 [run]\nmethod = \"rk4\"\ndt = 1.0\nt_end = 10.0\n"
+            )
+        };
+        let message = parse(&plane("orbit = { a = 1.0, e = 0.1, i = 0.2 }"), "p.toml", "p")
+            .unwrap_err()
+            .to_string();
+        assert!(message.contains("no inclined orbit (i = 0 only)"), "{message}");
+        assert!(parse(&plane("orbit = { a = 1.0, e = 0.1 }"), "p.toml", "p").is_ok());
+        let line = plane("orbit = { a = 1.0, e = 0.1 }").replace("[0.0, 0.0]", "[0.0]");
+        let message = parse(&line, "p.toml", "p").unwrap_err().to_string();
+        assert!(message.contains("holds no orbit"), "{message}");
         let bad_frame = scene("elements = \"barycentric\"\n", "orbit = { a = 9.5, e = 0.1 }");
         let message = parse(&bad_frame, "planets.toml", "planets").unwrap_err().to_string();
         assert!(message.contains("\"jacobi\" or \"heliocentric\""), "{message}");

@@ -2,7 +2,9 @@
 //! the CSV and summarised, with their verdicts on orbits whose nature is known; and the
 //! refusals, before any file is written.
 
-use crate::support::binary::{assert_error, csv_rows, stderr, stdout, stormer, stormer_ok, summary_number, workdir};
+use crate::support::binary::{
+    assert_error, csv_rows, signal, stderr, stdout, stormer, stormer_ok, summary_number, workdir,
+};
 
 /// A Henon-Heiles scene at E = 1/6 from the section point (x, y, py) = (0, y, 0).
 fn henon_heiles(y: f64) -> String {
@@ -183,4 +185,32 @@ fn an_ensemble_measures_the_indicator_on_every_member_the_stability_map() {
     );
     assert_error(&refused, "no form on dual numbers");
     assert!(!dir.join("none").exists());
+}
+
+/// A stop signal during the indicator's run (before the run writes anything) stops it
+/// within a second, with a nonzero exit and no file.
+#[test]
+fn a_signal_during_the_indicators_run_stops_it() {
+    let dir = workdir("indicator", "signal");
+    let child = std::process::Command::new(env!("CARGO_BIN_EXE_stormer"))
+        .args([
+            "run",
+            "two-planets",
+            "--t-end",
+            "4e8",
+            "--indicator",
+            "megno",
+            "-o",
+            "long.csv",
+        ])
+        .current_dir(&dir)
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    std::thread::sleep(std::time::Duration::from_millis(1500));
+    let start = std::time::Instant::now();
+    let (status, said) = signal(child, "-TERM", start, std::time::Duration::from_secs(1));
+    assert!(!status.success(), "{said}");
+    assert!(said.contains("cancelled"), "{said}");
+    assert!(!dir.join("long.csv").exists() && !dir.join("long-megno.csv").exists());
 }
