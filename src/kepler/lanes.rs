@@ -6,8 +6,9 @@
 //! (two evaluations of the Stumpff series, divisions, a square root, branches), so one
 //! planet leaves most of the processor idle. Here ([`KeplerLanes`]) every quantity is four
 //! values, one lane per problem, every lane runs the same fixed sequence, one evaluation
-//! of the series and two Newton corrections, and a lane that sequence does not solve to
-//! round-off is solved again by the scalar solve, from its own input.
+//! of the series and two Newton corrections; a lane that sequence does not solve to
+//! round-off goes through a longer one (two Halley steps), and one that does not either
+//! is solved again by the scalar solve, from its own input.
 
 use super::LagrangeCoefficients;
 
@@ -27,6 +28,10 @@ const SHORT_SHIFT: f64 = 3e-5;
 /// The second Newton correction must be below this fraction of the root: it is then
 /// applied to first order, with an error of `3 (ds / s)^2 < 3e-18` relative.
 const CONVERGED: f64 = 1e-9;
+
+/// The largest `|z|` the long sequence ([`LONG`]) sums the series at: nine terms, as the
+/// scalar solve sums them below its quarterings (`|z| <= 1`: a radian of eccentric anomaly).
+const LONG_ARGUMENT: f64 = 1.0;
 
 /// Taylor coefficients of `c2(z) = sum_j (-z)^j / (2j + 2)!` and `c3(z) = sum_j (-z)^j /
 /// (2j + 3)!`, `j = 0..7` (the signs included): the first seven of the scalar Stumpff
@@ -172,18 +177,38 @@ fn series<V: Lane>(c: &[f64; 7], z: V, z2: V, z4: V) -> V {
     low + z4 * high
 }
 
-/// The Stiefel functions `G0..G3` at `s` (`G_k = s^k c_k(beta s^2)`), and `z = beta s^2`.
+/// The Stiefel functions `G0..G3` at `s` (`G_k = s^k c_k(beta s^2)`), and `z = beta s^2`,
+/// with `c2` and `c3` summed by the short series (`LONG = false`, `|z| <= 1/4`) or the
+/// nine-term one (`|z| <= 1`).
 #[inline(always)]
-fn stiefel<V: Lane>(beta: V, s: V) -> ([V; 4], V) {
+fn stiefel<V: Lane, const LONG_SERIES: bool>(beta: V, s: V) -> ([V; 4], V) {
     let s2 = s * s;
     let z = beta * s2;
     let z2 = z * z;
     let z4 = z2 * z2;
-    let (c2, c3) = (series(&C2, z, z2, z4), series(&C3, z, z2, z4));
-    // c0 = 1 - z c2 and c1 = 1 - z c3: |z c_k| <= 1/8, no cancellation
+    let (c2, c3) = if LONG_SERIES {
+        let z8 = z4 * z4;
+        let stumpff = |c| series_long(c, z, z2, z4, z8);
+        (
+            stumpff(&crate::magnetic::STUMPFF_C2),
+            stumpff(&crate::magnetic::STUMPFF_C3),
+        )
+    } else {
+        (series(&C2, z, z2, z4), series(&C3, z, z2, z4))
+    };
+    // c0 = 1 - z c2 and c1 = 1 - z c3: |z c_k| <= 1/2 for |z| <= 1, no cancellation
     let one = z.splat(1.0);
     let (c0, c1) = (one - z * c2, one - z * c3);
     ([c0, s * c1, s2 * c2, s2 * s * c3], z)
+}
+
+/// The nine-term series by Estrin's scheme, given `z^2`, `z^4` and `z^8`.
+#[inline(always)]
+fn series_long<V: Lane>(c: &[f64; 9], z: V, z2: V, z4: V, z8: V) -> V {
+    let pair = |i: usize| z.times(c[i + 1]).plus(c[i]);
+    let low = pair(0) + z2 * pair(2);
+    let high = pair(4) + z2 * pair(6);
+    low + z4 * high + z8.times(c[8])
 }
 
 /// The Stiefel functions at `s + d` from those at `s`, by their Taylor series to third
@@ -213,10 +238,27 @@ fn residual<V: Lane>([r0, eta0, zeta0]: [V; 3], g: &[V; 4], s: V, tau: V) -> [V;
     ]
 }
 
-/// The lanes' sequence ([`KeplerLanes`]): the increments `(dq, dp)` of the positions and
-/// momenta, and which lanes it solved.
+/// The short sequence (one evaluation of the series, one Newton step carried by Taylor
+/// series, a first-order correction), for steps of up to about a twelfth of a period.
+const SHORT: bool = false;
+/// The long sequence (two Halley steps and a first-order correction, three evaluations of
+/// the nine-term series), for steps of up to about a radian of eccentric anomaly: run on the
+/// lanes the short one left unsolved.
+const LONG: bool = true;
+
+/// What a lanes' sequence gives: the increments `(dq, dp)` of the positions and momenta,
+/// which lanes it solved, and in each the last iterate `s` of the universal anomaly (one
+/// Newton correction from the root: where a solve on dual numbers takes its derivative).
+struct Solved<V> {
+    dq: [V; 3],
+    dp: [V; 3],
+    solved: [bool; LANES],
+    iterate: [f64; LANES],
+}
+
+/// The lanes' sequence ([`KeplerLanes`]), short or [`LONG`].
 #[inline(always)]
-fn solve<V: Lane>(mu: V, mass: V, tau: f64, q: &[V; 3], p: &[V; 3]) -> ([V; 3], [V; 3], [bool; LANES]) {
+fn solve<V: Lane, const L: bool>(mu: V, mass: V, tau: f64, q: &[V; 3], p: &[V; 3]) -> Solved<V> {
     let tau_l = mu.splat(tau);
     let one = mu.splat(1.0);
     let v = [p[0] / mass, p[1] / mass, p[2] / mass];
@@ -232,13 +274,35 @@ fn solve<V: Lane>(mu: V, mass: V, tau: f64, q: &[V; 3], p: &[V; 3]) -> ([V; 3], 
     let a = eta0 * inv_r0;
     let cubic = (a * a).times(0.5) - (zeta0 * inv_r0).times(1.0 / 6.0);
     let s0 = u * (one - u * (a.times(0.5) - u * cubic));
-    // Newton's step from the guess, carried out on the Taylor series of the G_k
-    let (g, z0) = stiefel(beta, s0);
-    let [f, r, _] = residual(orbit, &g, s0, tau_l);
-    let d = (one.splat(0.0) - f) / r;
-    let s1 = s0 + d;
-    let g = shifted(&g, beta, d);
-    // the second correction, applied to first order, and 1/r at the root to first order
+    let (s1, g, within) = if L {
+        // two Halley steps, s - 2 f r / (2 r^2 - f r'), each from a fresh evaluation
+        let (mut s, mut largest) = (s0, [0.0f64; LANES]);
+        for _ in 0..2 {
+            let (g, z) = stiefel::<V, LONG>(beta, s);
+            let [f, r, r_prime] = residual(orbit, &g, s, tau_l);
+            s = s - (f * r).times(2.0) / ((r * r).times(2.0) - f * r_prime);
+            largest = wider(largest, z.array());
+        }
+        let (g, z) = stiefel::<V, LONG>(beta, s);
+        let largest = wider(largest, z.array());
+        let mut within = [false; LANES];
+        for k in 0..LANES {
+            within[k] = largest[k] <= LONG_ARGUMENT;
+        }
+        (s, g, within)
+    } else {
+        // Newton's step from the guess, carried out on the Taylor series of the G_k
+        let (g, z0) = stiefel::<V, SHORT>(beta, s0);
+        let [f, r, _] = residual(orbit, &g, s0, tau_l);
+        let d = (one.splat(0.0) - f) / r;
+        let (z0, d_, s0_) = (z0.array(), d.array(), s0.array());
+        let mut within = [false; LANES];
+        for k in 0..LANES {
+            within[k] = z0[k].abs() <= MAX_ARGUMENT && d_[k].abs() <= SHORT_SHIFT * s0_[k].abs();
+        }
+        (s0 + d, shifted(&g, beta, d), within)
+    };
+    // the last correction, applied to first order, and 1/r at the root to first order
     let [f, r, r_prime] = residual(orbit, &g, s1, tau_l);
     let inv_r1 = one / r;
     let ds = f * inv_r1;
@@ -251,19 +315,35 @@ fn solve<V: Lane>(mu: V, mass: V, tau: f64, q: &[V; 3], p: &[V; 3]) -> ([V; 3], 
     let dq = |c: usize| f_minus_one * q[c] + g_coef * v[c];
     let dp = |c: usize| mass * (f_dot * q[c] + g_dot_minus_one * v[c]);
     let (dq, dp) = ([dq(0), dq(1), dq(2)], [dp(0), dp(1), dp(2)]);
-    let (size, z0, d, s0) = ((r0_2 + v2 + eta0 + mu).array(), z0.array(), d.array(), s0.array());
-    let (ds, s1) = (ds.array(), s1.array());
+    let size = (r0_2 + v2 + eta0 + mu).array();
+    let (ds, iterate) = (ds.array(), s1.array());
     // explicit loops, not array::from_fn or map: the calls would not be inlined into the
     // AVX2 function
     let mut solved = [false; LANES];
     for k in 0..LANES {
-        // r0 = 0 makes d NaN; a non-finite input, the size
-        solved[k] = (size[k] + tau).is_finite()
-            && z0[k].abs() <= MAX_ARGUMENT
-            && d[k].abs() <= SHORT_SHIFT * s0[k].abs()
-            && ds[k].abs() <= CONVERGED * s1[k].abs();
+        // r0 = 0 makes the steps NaN; a non-finite input, the size
+        solved[k] = (size[k] + tau).is_finite() && within[k] && ds[k].abs() <= CONVERGED * iterate[k].abs();
     }
-    (dq, dp, solved)
+    Solved {
+        dq,
+        dp,
+        solved,
+        iterate,
+    }
+}
+
+/// The larger `|z|` lane by lane (NaN stays: it compares false).
+#[inline(always)]
+fn wider(a: [f64; LANES], z: [f64; LANES]) -> [f64; LANES] {
+    let mut out = a;
+    for k in 0..LANES {
+        out[k] = if z[k].abs() > a[k] || z[k].is_nan() {
+            z[k].abs()
+        } else {
+            a[k]
+        };
+    }
+    out
 }
 
 /// Work on lanes of one kind ([`Portable`] or [`Avx2`]), given how to make a lane from
@@ -303,40 +383,47 @@ impl<W: LaneTask> pulp::NullaryFnOnce for Avx2Task<W> {
     }
 }
 
-/// [`solve`] from states read by `load(c, j)` (component `c` of lane `j`), into flows.
-struct Solve<'a, F> {
+/// [`solve`] from states read by `load(c, j)` (component `c` of lane `j`), into the lanes
+/// of `out` it is to `take` and solves; gives which it solved and their last iterates.
+struct Solve<'a, F, const L: bool> {
     constants: &'a KeplerLanes,
     tau: f64,
     load: &'a F,
+    take: [bool; LANES],
     out: &'a mut LaneFlows,
 }
 
-impl<F: Fn(usize, usize) -> (f64, f64)> LaneTask for Solve<'_, F> {
-    type Output = [bool; LANES];
+impl<F: Fn(usize, usize) -> (f64, f64), const L: bool> LaneTask for Solve<'_, F, L> {
+    type Output = ([bool; LANES], [f64; LANES]);
 
     #[inline(always)]
-    fn run<V: Lane>(self, lane: impl Fn([f64; LANES]) -> V) -> [bool; LANES] {
+    fn run<V: Lane>(self, lane: impl Fn([f64; LANES]) -> V) -> Self::Output {
         // the states are read here, with AVX2 enabled, straight into registers
         let (q, p) = gathered(self.load, &lane);
         let k = self.constants;
-        let (dq, dp, solved) = solve(lane(k.mu), lane(k.mass), self.tau, &q, &p);
-        for c in 0..3 {
-            self.out.dq[c] = dq[c].array();
-            self.out.dp[c] = dp[c].array();
+        let solved = solve::<V, L>(lane(k.mu), lane(k.mass), self.tau, &q, &p);
+        let (dq, dp) = (solved.dq.map(V::array), solved.dp.map(V::array));
+        for j in 0..LANES {
+            if self.take[j] && solved.solved[j] {
+                for c in 0..3 {
+                    (self.out.dq[c][j], self.out.dp[c][j]) = (dq[c][j], dp[c][j]);
+                }
+            }
         }
-        solved
+        (solved.solved, solved.iterate)
     }
 }
 
-/// [`solve`] on states read and written in place through [`LaneStates`]: the lanes it
-/// solved are written, `q + dq` and `p + dp`.
-struct Advance<'a, L> {
+/// [`solve`] on states read and written in place through [`LaneStates`]: the lanes it is
+/// to `take` and solves are written, `q + dq` and `p + dp`.
+struct Advance<'a, S, const L: bool> {
     constants: &'a KeplerLanes,
     tau: f64,
-    states: &'a mut L,
+    take: [bool; LANES],
+    states: &'a mut S,
 }
 
-impl<L: LaneStates> LaneTask for Advance<'_, L> {
+impl<S: LaneStates, const L: bool> LaneTask for Advance<'_, S, L> {
     type Output = [bool; LANES];
 
     #[inline(always)]
@@ -344,11 +431,11 @@ impl<L: LaneStates> LaneTask for Advance<'_, L> {
         let states = self.states;
         let (q, p) = gathered(&|c, j| states.load(c, j), &lane);
         let k = self.constants;
-        let (dq, dp, solved) = solve(lane(k.mu), lane(k.mass), self.tau, &q, &p);
+        let Solved { dq, dp, solved, .. } = solve::<V, L>(lane(k.mu), lane(k.mass), self.tau, &q, &p);
         let new_q = [(q[0] + dq[0]).array(), (q[1] + dq[1]).array(), (q[2] + dq[2]).array()];
         let new_p = [(p[0] + dp[0]).array(), (p[1] + dp[1]).array(), (p[2] + dp[2]).array()];
         for j in 0..LANES {
-            if solved[j] {
+            if self.take[j] && solved[j] {
                 for c in 0..3 {
                     states.store(c, j, new_q[c][j], new_p[c][j]);
                 }
@@ -386,10 +473,14 @@ fn gathered<V: Lane>(load: &impl Fn(usize, usize) -> (f64, f64), lane: impl Fn([
 /// to `s1` by their Taylor series to third order, and a second Newton correction from the
 /// residual at `s1`, applied to first order. A lane is solved when `|beta s0^2| <= 1/4`,
 /// `|d| <= 3e-5 |s0|`, the second correction is at most `1e-9 |s1|` (both series then
-/// exact to round-off) and the input is finite; every other lane (a step longer than
-/// about a twelfth of the period, an eccentric orbit near pericentre with a long step,
-/// `q = 0`, NaN) is solved again by [`LagrangeCoefficients::new`] from its own input. So a
-/// lane's result depends on its own problem only, never on the other lanes.
+/// exact to round-off) and the input is finite. The lanes it leaves (a step longer than
+/// about a twelfth of the period, as a Wisdom-Holman map of fifteen steps per orbit takes)
+/// go through the long sequence, in lanes again: two Halley steps from the same guess and
+/// the first-order correction, each from a fresh evaluation of the nine-term series, solved
+/// when every `|beta s^2| <= 1` (a radian of eccentric anomaly) and the correction is at most
+/// `1e-9 |s|`. Every other lane (a longer step, an eccentric orbit near pericentre with a
+/// long step, `q = 0`, NaN) is solved again by [`LagrangeCoefficients::new`] from its own
+/// input. So a lane's result depends on its own problem only, never on the other lanes.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct KeplerLanes {
     /// The gravitational parameters.
@@ -453,7 +544,7 @@ impl KeplerLanes {
     /// needs it, wherever the states are).
     #[inline(always)]
     pub fn solve_with(&self, tau: f64, count: usize, load: impl Fn(usize, usize) -> (f64, f64), flows: &mut LaneFlows) {
-        let solved = self.solve_unchecked(tau, &load, flows);
+        let (solved, _) = self.in_lanes(tau, count, &load, flows);
         for k in 0..count.min(LANES) {
             if !solved[k] {
                 let q: [f64; 3] = core::array::from_fn(|c| load(c, k).0);
@@ -463,34 +554,85 @@ impl KeplerLanes {
         }
     }
 
-    /// The sequence in every lane, in AVX2 registers when the CPU has them.
+    /// The last iterate of the universal anomaly in each of the first `count` lanes the
+    /// sequences solve (`None` in the others): one Newton correction from the root, where
+    /// [`LagrangeCoefficients::near_root`] takes the derivative of the flow on dual numbers.
     #[inline(always)]
-    fn solve_unchecked<F: Fn(usize, usize) -> (f64, f64)>(
+    pub fn iterates(&self, tau: f64, count: usize, load: impl Fn(usize, usize) -> (f64, f64)) -> [Option<f64>; LANES] {
+        let mut flows = LaneFlows {
+            dq: [[0.0; LANES]; 3],
+            dp: [[0.0; LANES]; 3],
+        };
+        let (solved, iterate) = self.in_lanes(tau, count, &load, &mut flows);
+        let mut out = [None; LANES];
+        for k in 0..count.min(LANES) {
+            out[k] = solved[k].then_some(iterate[k]);
+        }
+        out
+    }
+
+    /// The short sequence in every lane, then the long one in those of the first `count`
+    /// it left unsolved, in AVX2 registers when the CPU has them: which lanes are solved,
+    /// their flows in `out` and their last iterates.
+    #[inline(always)]
+    fn in_lanes<F: Fn(usize, usize) -> (f64, f64)>(
         &self,
         tau: f64,
+        count: usize,
         load: &F,
         out: &mut LaneFlows,
-    ) -> [bool; LANES] {
-        dispatch(Solve {
+    ) -> ([bool; LANES], [f64; LANES]) {
+        let (mut solved, mut iterate) = dispatch(Solve::<F, SHORT> {
             constants: self,
             tau,
             load,
+            take: [true; LANES],
+            out: &mut *out,
+        });
+        if (0..count.min(LANES)).all(|k| solved[k]) {
+            return (solved, iterate);
+        }
+        let take = solved.map(|s| !s);
+        let (long, long_iterate) = dispatch(Solve::<F, LONG> {
+            constants: self,
+            tau,
+            load,
+            take,
             out,
-        })
+        });
+        for k in 0..LANES {
+            if take[k] && long[k] {
+                (solved[k], iterate[k]) = (true, long_iterate[k]);
+            }
+        }
+        (solved, iterate)
     }
 
     /// The first `count` problems moved along their orbits for time `tau`, in place: `q +
     /// dq` and `p + dp` with the flows of [`KeplerLanes::solve`] (the same bits), the
     /// states read and written through `states`. Every lane is read and, when the lanes'
-    /// sequence solves it, written ([`LaneStates::store`] ignores the unused ones); a lane
-    /// of the first `count` it does not solve is solved again by the scalar solve.
+    /// sequences solve it, written ([`LaneStates::store`] ignores the unused ones); a lane
+    /// of the first `count` they do not solve is solved again by the scalar solve.
     #[inline(always)]
     pub fn advance(&self, tau: f64, count: usize, states: &mut impl LaneStates) {
-        let solved = dispatch(Advance {
+        let mut solved = dispatch(Advance::<_, SHORT> {
             constants: self,
             tau,
+            take: [true; LANES],
             states: &mut *states,
         });
+        if !(0..count.min(LANES)).all(|k| solved[k]) {
+            let take = solved.map(|s| !s);
+            let long = dispatch(Advance::<_, LONG> {
+                constants: self,
+                tau,
+                take,
+                states: &mut *states,
+            });
+            for k in 0..LANES {
+                solved[k] |= take[k] && long[k];
+            }
+        }
         for k in 0..count.min(LANES) {
             if !solved[k] {
                 self.advance_alone(tau, states, k);
@@ -568,36 +710,61 @@ mod tests {
         )
     }
 
+    /// The flows of sequence `L` in `out` and the lanes it solves: in portable code when
+    /// `portable`, else in the CPU's lanes.
+    fn by<const L: bool>((lanes, q, p): &Planets, tau: f64, portable: bool, out: &mut LaneFlows) -> [bool; LANES] {
+        let task = Solve::<_, L> {
+            constants: lanes,
+            tau,
+            load: &|c: usize, j: usize| (q[c][j], p[c][j]),
+            take: [true; LANES],
+            out,
+        };
+        if portable {
+            task.run(Portable).0
+        } else {
+            dispatch(task).0
+        }
+    }
+
     #[test]
     fn the_steps_of_a_wisdom_holman_integration_are_solved_in_the_lanes() {
-        let (lanes, q, p) = planets();
+        let planets = planets();
+        let solved = |tau, long| match long {
+            false => by::<SHORT>(&planets, tau, false, &mut empty()),
+            true => by::<LONG>(&planets, tau, false, &mut empty()),
+        };
         for tau in [1.0, 10.0, 100.0, -100.0] {
-            assert_eq!(
-                lanes.solve_unchecked(tau, &|c, j| (q[c][j], p[c][j]), &mut empty())[..3],
-                [true; 3],
-                "tau = {tau}"
-            );
+            assert_eq!(solved(tau, false)[..3], [true; 3], "tau = {tau}");
         }
-        assert!(lanes.solve_unchecked(core::f64::consts::PI / 10.0, &|c, j| (q[c][j], p[c][j]), &mut empty())[3]);
-        // a third of a period: the scalar solve's
-        assert!(!lanes.solve_unchecked(2.0, &|c, j| (q[c][j], p[c][j]), &mut empty())[3]);
+        // the unit circle in lane 3: a twentieth of its period in the short sequence, 0.8 rad
+        // in the long one only, 2 rad (a third of a period) in neither: the scalar solve's
+        assert!(solved(core::f64::consts::PI / 10.0, false)[3]);
+        assert!(!solved(0.8, false)[3] && solved(0.8, true)[3]);
+        assert!(!solved(2.0, true)[3]);
     }
 
     #[test]
     fn portable_and_avx2_lanes_give_the_same_bits() {
-        let (lanes, q, p) = planets();
+        let planets = planets();
         let bits = |x: [[f64; LANES]; 3]| x.map(|c| c.map(f64::to_bits));
-        for tau in [10.0, -3.0, 100.0, 2.0] {
-            let (mut portable, mut here) = (empty(), empty());
-            let portable_solved = Solve {
-                constants: &lanes,
-                tau,
-                load: &|c: usize, j: usize| (q[c][j], p[c][j]),
-                out: &mut portable,
+        for tau in [10.0, -3.0, 100.0, 2.0, 0.8] {
+            let (mut portable, mut here) = ([empty(), empty()], [empty(), empty()]);
+            let portable_solved = [
+                by::<SHORT>(&planets, tau, true, &mut portable[0]),
+                by::<LONG>(&planets, tau, true, &mut portable[1]),
+            ];
+            let here_solved = [
+                by::<SHORT>(&planets, tau, false, &mut here[0]),
+                by::<LONG>(&planets, tau, false, &mut here[1]),
+            ];
+            for k in 0..2 {
+                assert_eq!(
+                    (bits(portable[k].dq), bits(portable[k].dp)),
+                    (bits(here[k].dq), bits(here[k].dp)),
+                    "tau {tau}"
+                );
             }
-            .run(Portable);
-            let here_solved = lanes.solve_unchecked(tau, &|c, j| (q[c][j], p[c][j]), &mut here);
-            assert_eq!((bits(portable.dq), bits(portable.dp)), (bits(here.dq), bits(here.dp)));
             assert_eq!(portable_solved, here_solved);
         }
     }

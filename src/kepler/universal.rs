@@ -22,6 +22,7 @@
 use crate::real::ops::*;
 use crate::real::{lit, to_f64};
 use crate::Real;
+use num_dual::Dual64;
 
 use super::{dot, stumpff, LagrangeCoefficients};
 
@@ -102,7 +103,38 @@ impl<T: Real> LagrangeCoefficients<T> {
     /// No input panics, allocates or loops without bound.
     #[inline]
     pub fn new(mu: T, tau: T, q: &[T], v: &[T]) -> Self {
-        let (r0, v2, eta0) = (dot(q, q).sqrt(), dot(v, v), dot(q, v));
+        let (r0_2, v2, eta0) = (dot(q, q), dot(v, v), dot(q, v));
+        if let Some(dual) = on_dual_numbers(mu, tau, r0_2, v2, eta0) {
+            return dual;
+        }
+        Self::from_invariants(mu, tau, r0_2, v2, eta0, |orbit, tau, bracket| {
+            solve(orbit, tau, bracket).1
+        })
+    }
+
+    /// [`LagrangeCoefficients::new`] from `s`, an iterate of the universal anomaly one
+    /// Newton correction from the root ([`super::KeplerLanes::iterates`] gives them for a
+    /// step of up to a radian of eccentric anomaly): the correction is made here, so on
+    /// dual numbers the coefficients carry the derivative of the flow with no iteration on
+    /// dual numbers at all.
+    #[inline]
+    pub fn near_root(mu: T, tau: T, q: &[T], v: &[T], s: f64) -> Self {
+        let (r0_2, v2, eta0) = (dot(q, q), dot(v, v), dot(q, v));
+        Self::from_invariants(mu, tau, r0_2, v2, eta0, |orbit, tau, _| corrected(orbit, tau, lit(s)))
+    }
+
+    /// The coefficients from `|q|^2`, `|v|^2` and `q.v`, the root of the reduced equation
+    /// found by `root` (given the orbit, the reduced `tau` and the bracket).
+    #[inline(always)]
+    fn from_invariants(
+        mu: T,
+        tau: T,
+        r0_2: T,
+        v2: T,
+        eta0: T,
+        root: impl FnOnce(&Orbit<T>, T, (T, T)) -> Stiefel<T>,
+    ) -> Self {
+        let r0 = r0_2.sqrt();
         let defined = r0 > T::zero() && (r0 + v2 + eta0 + mu + tau).is_finite();
         if !defined {
             return Self::nan();
@@ -115,7 +147,7 @@ impl<T: Real> LagrangeCoefficients<T> {
             beta,
         };
         let (tau, bracket) = reduced(&orbit, mu, tau);
-        let [_, g1, g2, g3] = solve(&orbit, tau, bracket).g;
+        let [_, g1, g2, g3] = root(&orbit, tau, bracket).g;
         let r = orbit.r0 + orbit.eta0 * g1 + orbit.zeta0 * g2;
         LagrangeCoefficients {
             f_minus_one: -mu * g2 / r0,
@@ -124,6 +156,44 @@ impl<T: Real> LagrangeCoefficients<T> {
             g_dot_minus_one: -mu * g2 / r,
         }
     }
+}
+
+/// [`LagrangeCoefficients::new`] on dual numbers ([`Dual64`]; `None` for every other
+/// scalar, decided when the code is compiled): the root is found on the values alone, in
+/// `f64`, and one Newton correction in dual numbers from it gives the derivative of the
+/// root (that of the implicit function) together with the same values as the `f64` solve,
+/// bit for bit. Solving in dual numbers throughout would carry derivatives through every
+/// iteration only to discard them: this costs about a third as much.
+#[inline(always)]
+fn on_dual_numbers<T: Real>(mu: T, tau: T, r0_2: T, v2: T, eta0: T) -> Option<LagrangeCoefficients<T>> {
+    use core::any::Any;
+    let dual = |x: &T| (x as &dyn Any).downcast_ref::<Dual64>().copied();
+    let back = |x: Dual64| (&x as &dyn Any).downcast_ref::<T>().copied();
+    let (mu, tau, r0_2, v2, eta0) = (dual(&mu)?, dual(&tau)?, dual(&r0_2)?, dual(&v2)?, dual(&eta0)?);
+    let c = LagrangeCoefficients::from_invariants(mu, tau, r0_2, v2, eta0, |orbit, tau, (lo, hi)| {
+        let values = Orbit {
+            r0: orbit.r0.re,
+            eta0: orbit.eta0.re,
+            zeta0: orbit.zeta0.re,
+            beta: orbit.beta.re,
+        };
+        let (s, _) = solve(&values, tau.re, (lo.re, hi.re));
+        corrected(orbit, tau, Dual64::from(s))
+    });
+    Some(LagrangeCoefficients {
+        f_minus_one: back(c.f_minus_one)?,
+        g: back(c.g)?,
+        f_dot: back(c.f_dot)?,
+        g_dot_minus_one: back(c.g_dot_minus_one)?,
+    })
+}
+
+/// The Stiefel functions one Newton correction from `s` (the last step of [`solve`]).
+#[inline(always)]
+fn corrected<T: Real>(orbit: &Orbit<T>, tau: T, s: T) -> Stiefel<T> {
+    let st = Stiefel::at(orbit.beta, s);
+    let [residual, r, ..] = orbit.residual(&st, s, tau);
+    st.shifted(orbit.beta, -residual / r)
 }
 
 /// `tau` reduced to `|tau| <= P/2` on a bound orbit (period `P = 2 pi mu / beta^(3/2)`), and
@@ -154,9 +224,10 @@ fn reduced<T: Real>(orbit: &Orbit<T>, mu: T, tau: T) -> (T, (T, T)) {
     (tau, bracket)
 }
 
-/// The Stiefel functions at the root `s` of `t(s) = tau` in `bracket`.
+/// The Stiefel functions at the root `s` of `t(s) = tau` in `bracket`, and the last iterate
+/// (from which the last Newton correction carried them to the root).
 #[inline(always)]
-fn solve<T: Real>(orbit: &Orbit<T>, tau: T, (mut lo, mut hi): (T, T)) -> Stiefel<T> {
+fn solve<T: Real>(orbit: &Orbit<T>, tau: T, (mut lo, mut hi): (T, T)) -> (T, Stiefel<T>) {
     let eps = T::default_epsilon();
     let mut s = clamped(guess(orbit, tau), lo, hi, tau / orbit.r0);
     // the last step and the one before (none yet: infinite)
@@ -180,7 +251,7 @@ fn solve<T: Real>(orbit: &Orbit<T>, tau: T, (mut lo, mut hi): (T, T)) -> Stiefel
         let at_round_off = residual.abs() <= lit::<T>(4.0) * eps * size;
         let collapsed = hi - lo <= lit::<T>(4.0) * eps * s.abs();
         if (at_round_off || collapsed || newton.abs() <= lit::<T>(2.0) * eps * s.abs()) && newton.is_finite() {
-            return st.shifted(orbit.beta, newton);
+            return (s, st.shifted(orbit.beta, newton));
         }
         let order = lit::<T>(LAGUERRE_ORDER);
         let root = (lit::<T>((LAGUERRE_ORDER - 1.0) * (LAGUERRE_ORDER - 1.0)) * r * r
@@ -201,7 +272,7 @@ fn solve<T: Real>(orbit: &Orbit<T>, tau: T, (mut lo, mut hi): (T, T)) -> Stiefel
         last = moved - s;
         s = moved;
     }
-    Stiefel::at(orbit.beta, s)
+    (s, Stiefel::at(orbit.beta, s))
 }
 
 /// The third-order Taylor inverse of `t(s)` about `s = 0`:

@@ -320,6 +320,13 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> KeplerSplit<T, S, K> {
             }
             return out;
         }
+        // on dual numbers, the roots found on the values in the lanes (`near_root`)
+        let iterates = if core::any::TypeId::of::<T>() == core::any::TypeId::of::<num_dual::Dual64>() {
+            let load = |c: usize, j: usize| lane_state(q, p, first, count, d, c, j);
+            self.lanes[(first - 1) / LANES].iterates(to_f64(tau), count, load)
+        } else {
+            [None; LANES]
+        };
         let mut out = [[[T::zero(); LANES]; 3]; 2];
         for j in 0..count {
             let (k, (mu, mass)) = (first + j, self.kepler[first + j]);
@@ -328,7 +335,10 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> KeplerSplit<T, S, K> {
             for (v, &p) in v.iter_mut().zip(pk) {
                 *v = p / mass;
             }
-            let c = LagrangeCoefficients::new(mu, tau, qk, &v[..d]);
+            let c = match iterates[j] {
+                Some(s) => LagrangeCoefficients::near_root(mu, tau, qk, &v[..d], s),
+                None => LagrangeCoefficients::new(mu, tau, qk, &v[..d]),
+            };
             for i in 0..d {
                 out[0][i][j] = c.f_minus_one * qk[i] + c.g * v[i];
                 out[1][i][j] = mass * (c.f_dot * qk[i] + c.g_dot_minus_one * v[i]);

@@ -191,7 +191,8 @@ fn the_drift_in_lanes_agrees_with_the_scalar_drift_to_round_off() {
     // measured: at most 0.47 eps times the condition of the map
     let kepler = KeplerDrift::new(1.0);
     for (q0, v0, scale) in states() {
-        for tau in [1e-5, 1e-3, -0.01, 0.03] {
+        // the last two: the lanes' long sequence
+        for tau in [1e-5, 1e-3, -0.01, 0.03, 0.08, -0.12] {
             let tau = tau * scale;
             let (mut q, mut v) = (q0, v0);
             kepler.apply(tau, &mut q, &mut v);
@@ -199,6 +200,49 @@ fn the_drift_in_lanes_agrees_with_the_scalar_drift_to_round_off() {
             let c = condition(&jacobian(1.0, tau, q0, v0), &q0, &v0, &q, &v);
             let err = relative(&ql, &vl, &q, &v) / (EPS * c);
             assert!(err <= 8.0, "{q0:?} {v0:?} tau {tau}: {err:.1} eps c");
+        }
+    }
+}
+
+#[test]
+fn steps_of_up_to_a_radian_are_solved_in_the_lanes_and_give_dual_numbers_the_same_derivative() {
+    let lanes = KeplerLanes {
+        mu: [1.0; LANES],
+        mass: [1.0; LANES],
+    };
+    // a circular orbit of radius 1 in lane 0 (eccentric anomaly = tau) and an eccentric
+    // one in lane 1; the unused lanes a unit circle
+    let states = [([1.0, 0.0, 0.0], [0.0, 1.0, 0.0]), ([0.5, 0.1, 0.0], [0.2, 1.6, 0.1])];
+    let load = |c: usize, j: usize| match states.get(j) {
+        Some((q, v)) => (q[c], v[c]),
+        None => ((c == 0) as u8 as f64, (c == 1) as u8 as f64),
+    };
+    for (tau, solved) in [(0.01, true), (0.4, true), (-0.8, true), (1.5, false)] {
+        let iterates = lanes.iterates(tau, 2, load);
+        assert_eq!(iterates[0].is_some(), solved, "tau {tau}: {iterates:?}");
+        let Some(s) = iterates[0] else { continue };
+        // seeded along a direction of the initial state and the parameter together
+        let seed = |x: f64, d: f64| Dual64::new(x, d);
+        let (q, v) = states[0];
+        let q: Vec<Dual64> = q.iter().zip([0.3, -0.2, 0.1]).map(|(&x, d)| seed(x, d)).collect();
+        let v: Vec<Dual64> = v.iter().zip([0.1, 0.4, -0.5]).map(|(&x, d)| seed(x, d)).collect();
+        let mu = seed(1.0, 0.7);
+        let at_root = LagrangeCoefficients::near_root(mu, Dual64::from(tau), &q, &v, s);
+        let solved = LagrangeCoefficients::new(mu, Dual64::from(tau), &q, &v);
+        for (a, b) in [
+            (at_root.f_minus_one, solved.f_minus_one),
+            (at_root.g, solved.g),
+            (at_root.f_dot, solved.f_dot),
+            (at_root.g_dot_minus_one, solved.g_dot_minus_one),
+        ] {
+            assert!(
+                (a.re - b.re).abs() <= 4.0 * EPS * b.re.abs().max(1.0),
+                "tau {tau}: {a} vs {b}"
+            );
+            assert!(
+                (a.eps - b.eps).abs() <= 1e-13 * b.eps.abs().max(1.0),
+                "tau {tau}: {a} vs {b}"
+            );
         }
     }
 }
