@@ -22,6 +22,7 @@ mod registry;
 mod state;
 pub mod stepper;
 pub mod text;
+pub mod time_transform;
 pub mod verify;
 
 // The front door: what the README's first examples name. Everything else lives in its
