@@ -78,6 +78,8 @@ pub mod guide {
     pub mod kepler_split {}
     #[doc = include_str!("../docs/chaos.md")]
     pub mod chaos {}
+    #[doc = include_str!("../docs/close-approaches.md")]
+    pub mod close_approaches {}
 }
 
 /// The everyday items in one import.

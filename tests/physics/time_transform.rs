@@ -19,6 +19,7 @@ use stormer::verify::{defect_bound, jacobian_dual, measure_order, symplectic_def
 use stormer::{Driver, Stepper};
 
 type Kepler = CentralForce<f64, [f64; 4]>;
+type Perturbed = PerturbedCentralForce<f64, [f64; 4]>;
 
 /// The apocentre state of the orbit `a = 1`, eccentricity `e`, `mu = 1`.
 fn apocentre(e: f64) -> [f64; 4] {
@@ -120,7 +121,7 @@ fn the_plain_leapfrog_at_the_same_steps_does_not_keep_the_orbit() {
 
 /// The perturbed orbit: e = 0.99, a = 1, and `epsilon = 1e-7` (0.1% of the Kepler
 /// potential at pericentre), from pericentre.
-fn perturbed() -> (LogH<PerturbedCentralForce<f64, [f64; 4]>, [f64; 6]>, [f64; 6]) {
+fn perturbed() -> (LogH<Perturbed, [f64; 6]>, [f64; 6]) {
     let logh = LogH::new(PerturbedCentralForce::new(1.0, 1e-7)).unwrap();
     let e: f64 = 0.99;
     let y0 = logh
@@ -401,7 +402,7 @@ fn refusals_say_why() {
         .unwrap_err()
         .to_string();
     assert!(e.contains("repels") && e.contains("U = -V must be positive"), "{e}");
-    let e = Ttl::<PerturbedCentralForce<f64, [f64; 4]>, [f64; 6]>::new(PerturbedCentralForce::new(1.0, -1e-4))
+    let e = Ttl::<Perturbed, [f64; 6]>::new(PerturbedCentralForce::new(1.0, -1e-4))
         .unwrap_err()
         .to_string();
     assert!(e.contains("epsilon = -0.0001") && e.contains("within r = 0.01"), "{e}");
