@@ -430,3 +430,30 @@ fn refusals_say_why() {
         .to_string();
     assert!(e.contains("even length"), "{e}");
 }
+
+#[test]
+fn catalog_methods_by_name_step_the_transformed_problems() {
+    let logh = LogH::<Kepler, [f64; 6]>::new(Kepler::new(1.0)).unwrap();
+    let y0 = logh.extend(0.0, &apocentre(0.99)).unwrap();
+    let by_name = stormer::Method::named("triple_jump4").unwrap();
+    let mut named = by_name.stepper_for(&logh, &y0, &Default::default()).unwrap();
+    let mut compiled = SplittingStepper::<TripleJump4, [f64; 6]>::new(&y0).unwrap();
+    let a = Driver::fixed(0.1).run(&logh, &mut named, 0.0, &y0, 10.0).unwrap();
+    let b = Driver::fixed(0.1).run(&logh, &mut compiled, 0.0, &y0, 10.0).unwrap();
+    assert_eq!(a.y.last(), b.y.last());
+    // a Runge-Kutta-Nystrom method needs a quadratic kinetic energy, which ln(T + p_t) is not
+    let rkn = stormer::Method::named("mclachlan_atela4").unwrap();
+    let e = rkn
+        .stepper_for(&logh, &y0, &Default::default())
+        .err()
+        .unwrap()
+        .to_string();
+    assert!(e.contains("kinetic energy is quadratic"), "{e}");
+    // TTL by name too
+    let (bodies, y) = pythagorean();
+    let ttl = Ttl::<_, [f64; 14]>::new(bodies).unwrap();
+    let x0 = ttl.extend(0.0, &y).unwrap();
+    let mut named = by_name.stepper_for(&ttl, &x0, &Default::default()).unwrap();
+    let run = Driver::fixed(1e-3).run(&ttl, &mut named, 0.0, &x0, 1.0).unwrap();
+    assert!(ttl.time(run.y.last().unwrap()) > 0.0);
+}
