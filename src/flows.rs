@@ -23,6 +23,13 @@ pub trait Splittable: Problem {
     /// `()` for most problems. Each stepper owns one, created with `Default`.
     type FlowCache: Default + Clone + core::fmt::Debug;
 
+    /// Why this problem cannot be stepped with compensated summation, or `None` (every
+    /// problem whose kick adds a term that does not depend on `p`, as
+    /// [`Splittable::kick`] asks). A problem whose kick reads `p` (the time-transformed
+    /// leapfrog's auxiliary variable, [`crate::time_transform::Ttl`]) says why here, and a
+    /// splitting stepper refuses [`crate::Stepper::set_compensated`] on it with that reason.
+    const COMPENSATION_REFUSED: Option<&'static str> = None;
+
     /// The exact flow of the first part for time `tau` (possibly negative), starting at
     /// time `t`, in place on the halves `q` and `p` (each of length `n`). `scratch` is `n`
     /// values of workspace, with no meaning before or after the call; `cache` is the

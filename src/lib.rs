@@ -22,6 +22,7 @@ mod registry;
 mod state;
 pub mod stepper;
 pub mod text;
+pub mod time_transform;
 pub mod verify;
 
 // The front door: what the README's first examples name. Everything else lives in its
@@ -77,6 +78,8 @@ pub mod guide {
     pub mod kepler_split {}
     #[doc = include_str!("../docs/chaos.md")]
     pub mod chaos {}
+    #[doc = include_str!("../docs/close-approaches.md")]
+    pub mod close_approaches {}
 }
 
 /// The everyday items in one import.

@@ -71,3 +71,37 @@ impl<T: Real, S: State<Scalar = T>> SecondOrder for CentralForce<T, S> {
         Some(norm_squared(p) * crate::real::lit(0.5) - self.mu / norm_squared(q).sqrt())
     }
 }
+
+impl<T: Real, S: State<Scalar = T>> crate::time_transform::TimeTransformable for CentralForce<T, S> {
+    fn kinetic_energy(&self, p: &[T]) -> T {
+        norm_squared(p) * crate::real::lit(0.5)
+    }
+
+    /// `mu / |q|`.
+    fn potential_depth(&self, q: &[T]) -> T {
+        self.mu / norm_squared(q).sqrt()
+    }
+
+    fn depth_positive(&self) -> Result<(), String> {
+        attracting(self.mu)
+    }
+}
+
+impl<T: Real, S: State<Scalar = T>> crate::time_transform::DiagonalMass for CentralForce<T, S> {
+    /// Unit mass.
+    fn inverse_mass(&self, _k: usize) -> T {
+        T::one()
+    }
+}
+
+/// `Ok` for a centre that pulls (`mu > 0`), else the reason a time transformation refuses it.
+pub(super) fn attracting<T: Real>(mu: T) -> Result<(), String> {
+    if mu > T::zero() {
+        Ok(())
+    } else {
+        Err(format!(
+            "the centre repels or does not pull (mu = {} <= 0)",
+            crate::real::to_f64(mu)
+        ))
+    }
+}

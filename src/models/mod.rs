@@ -1,6 +1,6 @@
 //! Generic problems that many simulations share, in any scalar and state type: gravitating
 //! bodies ([`NBody`], with [`Orbit`] for the two-body solution), one body around a fixed
-//! centre ([`CentralForce`]) and charged particles in electric and magnetic fields
+//! centre ([`CentralForce`], and with an inverse-cube term [`PerturbedCentralForce`]) and charged particles in electric and magnetic fields
 //! ([`ChargedParticles`], run through [`crate::magnetic::Charged`]; at speeds close to
 //! light, [`RelativisticParticles`]); and a planetary system split the Wisdom-Holman way
 //! ([`KeplerSplit`], in [`Jacobi`] or [`DemocraticHeliocentric`] coordinates); and
@@ -35,6 +35,7 @@ mod nbody;
 mod nbody_shape;
 mod nbody_tiles;
 mod orbit;
+mod perturbed_central_force;
 mod relativistic_particles;
 mod splitmix64;
 
@@ -49,6 +50,7 @@ pub use magnetic_field::MagneticField;
 pub use nbody::NBody;
 pub use nbody_shape::{AnyShape, Bodies, Shape};
 pub use orbit::{eccentric_anomaly, Orbit};
+pub use perturbed_central_force::PerturbedCentralForce;
 pub use relativistic_particles::RelativisticParticles;
 pub use splitmix64::SplitMix64;
 

@@ -530,25 +530,7 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> Hamiltonian for NBody<T, S, K> {
     }
 
     fn energy(&self, _t: T, q: &[T], p: &[T]) -> Option<T> {
-        let (n, d) = (self.masses.len(), self.dim);
-        let half = lit::<T>(0.5);
-        let mut kinetic = T::zero();
-        for (k, pk) in p.chunks_exact(d).enumerate() {
-            // (p / m) p, not p^2 / m: p^2 leaves f32's range for masses beyond ~1e19 or
-            // below ~1e-19 while the velocity p / m stays of the orbit's size
-            let w = self.inverse_mass[k * d];
-            kinetic += pk.iter().fold(T::zero(), |s, &x| s + x * w * x) * half;
-        }
-        // the pairs with an active body: a test particle's share of the energy, as if its
-        // pull did not move the active bodies (conserved only as its mass tends to zero)
-        let mut potential = T::zero();
-        for k in 0..self.active {
-            for l in k + 1..n {
-                let r2 = (0..d).fold(T::zero(), |s, c| s + (q[k * d + c] - q[l * d + c]).powi(2));
-                potential -= self.gm[k] * self.masses[l] / r2.sqrt();
-            }
-        }
-        Some(kinetic + potential)
+        Some(self.kinetic(p) - self.depth(q))
     }
 
     /// Every splitting and composition: the kinetic energy `sum |p_k|^2 / (2 m_k)` is quadratic.
@@ -561,6 +543,72 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> Hamiltonian for NBody<T, S, K> {
 }
 
 impl<T: Real, S: State<Scalar = T>, K: Shape> QuadraticKinetic for NBody<T, S, K> {}
+
+impl<T: Real, S, K> NBody<T, S, K> {
+    /// The kinetic energy `sum |p_k|^2 / (2 m_k)`.
+    fn kinetic(&self, p: &[T]) -> T {
+        let d = self.dim;
+        let half = lit::<T>(0.5);
+        let mut kinetic = T::zero();
+        for (k, pk) in p.chunks_exact(d).enumerate() {
+            // (p / m) p, not p^2 / m: p^2 leaves f32's range for masses beyond ~1e19 or
+            // below ~1e-19 while the velocity p / m stays of the orbit's size
+            let w = self.inverse_mass[k * d];
+            kinetic += pk.iter().fold(T::zero(), |s, &x| s + x * w * x) * half;
+        }
+        kinetic
+    }
+
+    /// The depth of the potential `-V = sum G m_k m_l / r_kl` over the pairs with an active
+    /// body: a test particle's share of the energy, as if its pull did not move the active
+    /// bodies (conserved only as its mass tends to zero).
+    fn depth(&self, q: &[T]) -> T {
+        let (n, d) = (self.masses.len(), self.dim);
+        let mut depth = T::zero();
+        for k in 0..self.active {
+            for l in k + 1..n {
+                let r2 = (0..d).fold(T::zero(), |s, c| s + (q[k * d + c] - q[l * d + c]).powi(2));
+                depth += self.gm[k] * self.masses[l] / r2.sqrt();
+            }
+        }
+        depth
+    }
+}
+
+/// `U = G sum m_k m_l / r_kl > 0`: gravity only pulls. For the time-transformed leapfrog
+/// this `U` is its `Omega` ([`crate::time_transform::Ttl`]).
+impl<T: Real, S: State<Scalar = T>, K: Shape> crate::time_transform::TimeTransformable for NBody<T, S, K> {
+    fn kinetic_energy(&self, p: &[T]) -> T {
+        self.kinetic(p)
+    }
+
+    fn potential_depth(&self, q: &[T]) -> T {
+        self.depth(q)
+    }
+
+    /// Refused with test particles: their forces on the active bodies are left out, so the
+    /// forces are not the gradient of one potential.
+    fn depth_positive(&self) -> Result<(), String> {
+        if self.active < self.masses.len() {
+            return Err(format!(
+                "{} of the {} bodies are test particles, whose pull is left out: the forces are not the gradient \
+                 of one potential",
+                self.masses.len() - self.active,
+                self.masses.len()
+            ));
+        }
+        if self.masses.len() < 2 {
+            return Err("one body alone has no potential energy (U = 0)".into());
+        }
+        Ok(())
+    }
+}
+
+impl<T: Real, S: State<Scalar = T>, K: Shape> crate::time_transform::DiagonalMass for NBody<T, S, K> {
+    fn inverse_mass(&self, k: usize) -> T {
+        self.inverse_mass[k]
+    }
+}
 
 impl<S: State<Scalar = f64>, K: Shape> NBody<f64, S, K> {
     /// The relative orbit of body 1 about body 0 when there are exactly two bodies and it

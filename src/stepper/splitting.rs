@@ -384,6 +384,12 @@ where
     }
 
     fn set_compensated(&mut self, on: bool) -> Result<(), Error> {
+        if let (true, Some(reason)) = (on, P::COMPENSATION_REFUSED) {
+            return Err(Error::Unsupported {
+                name: self.word.info().name,
+                reason: format!("compensated summation is refused on this problem: {reason}"),
+            });
+        }
         // the compensated form evaluates every force of the word: no cached one is reused
         self.cached = false;
         self.fresh = false;
