@@ -77,6 +77,8 @@ pub mod guide {
     pub mod kepler_split {}
     #[doc = include_str!("../docs/chaos.md")]
     pub mod chaos {}
+    #[doc = include_str!("../docs/reversible-steps.md")]
+    pub mod reversible_steps {}
 }
 
 /// The everyday items in one import.

@@ -2,9 +2,9 @@
 //! `s(t, y) > 0` that sets the step, `h ~ eps s(t, y)`, and its rate of change along the
 //! solution.
 
+use crate::real::lit;
 #[allow(unused_imports)]
 use crate::real::ops::*;
-use crate::real::lit;
 use crate::{Real, State};
 
 /// The step size function `s(t, y) > 0` of the reversible step control: steps are about

@@ -60,7 +60,11 @@ impl<'a, T: Real, S> Reversible<'a, T, S> {
     /// an error saying what was wrong when `s` is not finite and > 0 or its rate not finite.
     fn control(&self, t: T, y: &S, slope: Option<&S>, step: u64) -> Result<(T, T), Error> {
         let (s, rate) = self.density.at(t, y, slope);
-        let fail = |what: String| Error::StepDensity { t: to_f64(t), step, what };
+        let fail = |what: String| Error::StepDensity {
+            t: to_f64(t),
+            step,
+            what,
+        };
         if !(s.is_finite() && s > T::zero()) {
             return Err(fail(format!(
                 "the density s(t, y) = {}; it must be finite and > 0",
@@ -101,8 +105,8 @@ where
             return Err(Error::Unsupported {
                 name: info.name,
                 reason: "reversible adaptive steps need a symmetric method (Phi_-h = Phi_h^-1: the \
-                         Stormer-Verlet splittings, the symmetric compositions, Gauss and Lobatto IIIA-B \
-                         methods); use one, or fixed or embedded adaptive steps"
+                         symmetric splittings and compositions, implicit midpoint, Gauss-Legendre, Lobatto \
+                         IIIA and IIIB); use one, or fixed or embedded adaptive steps"
                     .into(),
             });
         }

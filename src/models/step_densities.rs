@@ -7,9 +7,9 @@ use super::nbody::NBody;
 use super::nbody_shape::Shape;
 use crate::driver::StepDensity;
 use crate::hamiltonian::halves;
+use crate::real::lit;
 #[allow(unused_imports)]
 use crate::real::ops::*;
-use crate::real::lit;
 use crate::{Real, State};
 
 /// `s = |q|^power` on a state `(q, p)` moving with `q' = p`, with `ds/dt = power s (q . p) /
