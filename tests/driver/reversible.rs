@@ -136,39 +136,36 @@ impl Recorder<f64, [f64; 4]> for EnergyWatch {
     }
 }
 
-/// `periods` of the e = 0.99 Kepler orbit by `name` under the reversible control at `eps`
-/// (with compensated summation when asked), then by fixed steps at the same number of force
-/// evaluations: each run's energy watch and evaluations.
-fn energy_on_e099(name: &str, eps: f64, periods: f64, compensated: bool) -> [(EnergyWatch, u64); 2] {
+/// `driver` with `name` over `periods` of the e = 0.99 Kepler orbit from pericentre: its
+/// energy watch (a failed run counts as an infinite error), steps and evaluations.
+fn watch_e099(driver: Driver<'_, f64, [f64; 4]>, name: &str, periods: f64) -> (EnergyWatch, u64, u64) {
     let kepler = Kepler::new(1.0);
     let y0 = pericentre(0.99);
-    let e0 = kepler.energy(0.0, &y0).unwrap();
     let t_end = periods * TAU;
-    let mut watch = EnergyWatch::new(e0, 0.0, t_end);
-    let mut driver = Driver::reversible(eps, kepler.step_density(1.5)).max_steps(u64::MAX);
+    let mut watch = EnergyWatch::new(kepler.energy(0.0, &y0).unwrap(), 0.0, t_end);
+    let run = driver
+        .max_steps(u64::MAX)
+        .run_into(&kepler, &mut *stepper(name, &y0), 0.0, &y0, t_end, &mut watch);
+    let stats = run.map(|(s, _)| s).unwrap_or_else(|(s, _)| {
+        watch.quarters[3] = f64::INFINITY;
+        s
+    });
+    (watch, stats.steps, stats.evaluations)
+}
+
+/// `periods` of the e = 0.99 Kepler orbit by `name` under the reversible control at `eps`
+/// (with compensated summation when asked), then by fixed steps at the same number of force
+/// evaluations (the same number of steps: one force per step for both): each run's energy
+/// watch and evaluations.
+fn energy_on_e099(name: &str, eps: f64, periods: f64, compensated: bool) -> [(EnergyWatch, u64); 2] {
+    let mut driver = Driver::reversible(eps, Kepler::new(1.0).step_density(1.5));
     if compensated {
         driver = driver.compensated();
     }
-    let (stats, _) = driver
-        .run_into(&kepler, &mut *stepper(name, &y0), 0.0, &y0, t_end, &mut watch)
-        .unwrap();
-    // fixed steps: the same evaluations (one force per step for both)
-    let mut fixed = EnergyWatch::new(e0, 0.0, t_end);
-    let fixed_stats = match Driver::fixed(t_end / stats.steps as f64).max_steps(u64::MAX).run_into(
-        &kepler,
-        &mut *stepper(name, &y0),
-        0.0,
-        &y0,
-        t_end,
-        &mut fixed,
-    ) {
-        Ok((s, _)) => s,
-        Err((s, _)) => {
-            fixed.quarters[3] = f64::INFINITY;
-            s
-        }
-    };
-    [(watch, stats.evaluations), (fixed, fixed_stats.evaluations)]
+    let (watch, steps, evaluations) = watch_e099(driver, name, periods);
+    assert!(watch.max().is_finite(), "{name}: the reversible run failed");
+    let (fixed, _, fixed_evaluations) = watch_e099(Driver::fixed(periods * TAU / steps as f64), name, periods);
+    [(watch, evaluations), (fixed, fixed_evaluations)]
 }
 
 /// The e = 0.99 orbit over 10^3 periods with `s = r^(3/2)`: the reversible control keeps
@@ -427,21 +424,18 @@ fn a_density_of_s_alone_follows_the_closed_form() {
 /// (docs/reversible-steps.md's table).
 #[test]
 fn r_to_the_three_halves_is_the_cheapest_kepler_density() {
-    let kepler = Kepler::new(1.0);
-    let y0 = pericentre(0.99);
-    let e0 = kepler.energy(0.0, &y0).unwrap();
     let periods = 100.0;
-    let t_end = periods * TAU;
     for (name, order) in [("velocity_verlet_kdk", 2), ("triple_jump4", 4)] {
         let mut costs = Vec::new();
         for power in [1.0, 1.25, 1.5, 2.0] {
-            let mut watch = EnergyWatch::new(e0, 0.0, t_end);
-            let (stats, _) = Driver::reversible(0.01, kepler.step_density(power))
-                .run_into(&kepler, &mut *stepper(name, &y0), 0.0, &y0, t_end, &mut watch)
-                .unwrap();
-            let per_period = stats.evaluations as f64 / periods;
+            let density = Kepler::new(1.0).step_density(power);
+            let (watch, _, evaluations) = watch_e099(Driver::reversible(0.01, density), name, periods);
+            let per_period = evaluations as f64 / periods;
             let cost = watch.max() * per_period.powi(order);
-            println!("{name} s = r^{power}: max energy error {:.2e}, {per_period:.0} evaluations per period, product {cost:.2e}", watch.max());
+            println!(
+                "{name} s = r^{power}: max energy error {:.2e}, {per_period:.0} evaluations per period, product {cost:.2e}",
+                watch.max()
+            );
             costs.push((cost, power));
         }
         let best = costs
@@ -457,43 +451,21 @@ fn r_to_the_three_halves_is_the_cheapest_kepler_density() {
 /// at eps = 0.01 and the triple jump at eps = 0.01 (docs/reversible-steps.md).
 #[test]
 fn fixed_steps_need_many_times_the_evaluations_for_the_same_energy_error() {
-    let kepler = Kepler::new(1.0);
-    let y0 = pericentre(0.99);
-    let e0 = kepler.energy(0.0, &y0).unwrap();
-    let t_end = 3.0 * TAU;
+    let periods = 3.0;
     for (name, eps, at_least) in [("velocity_verlet_kdk", 0.01, 100.0), ("triple_jump4", 0.01, 50.0)] {
-        let mut watch = EnergyWatch::new(e0, 0.0, t_end);
-        let (stats, _) = Driver::reversible(eps, kepler.step_density(1.5))
-            .run_into(&kepler, &mut *stepper(name, &y0), 0.0, &y0, t_end, &mut watch)
-            .unwrap();
-        let mut steps = stats.steps;
+        let density = Kepler::new(1.0).step_density(1.5);
+        let (watch, mut steps, evaluations) = watch_e099(Driver::reversible(eps, density), name, periods);
         let (fixed_error, fixed_evaluations) = loop {
             steps *= 2;
-            let mut fixed = EnergyWatch::new(e0, 0.0, t_end);
-            let run = Driver::fixed(t_end / steps as f64).max_steps(u64::MAX).run_into(
-                &kepler,
-                &mut *stepper(name, &y0),
-                0.0,
-                &y0,
-                t_end,
-                &mut fixed,
-            );
-            let evaluations = match run {
-                Ok((s, _)) => s.evaluations,
-                Err((s, _)) => {
-                    fixed.quarters[3] = f64::INFINITY;
-                    s.evaluations
-                }
-            };
+            let (fixed, _, fixed_evaluations) = watch_e099(Driver::fixed(periods * TAU / steps as f64), name, periods);
             if fixed.max() <= watch.max() || steps > 1 << 30 {
-                break (fixed.max(), evaluations);
+                break (fixed.max(), fixed_evaluations);
             }
         };
-        let ratio = fixed_evaluations as f64 / stats.evaluations as f64;
+        let ratio = fixed_evaluations as f64 / evaluations as f64;
         println!(
-            "{name} eps {eps}: reversible {:.2e} with {} evaluations; fixed {fixed_error:.2e} with {fixed_evaluations}: {ratio:.0}x",
-            watch.max(),
-            stats.evaluations
+            "{name} eps {eps}: reversible {:.2e} with {evaluations} evaluations; fixed {fixed_error:.2e} with {fixed_evaluations}: {ratio:.0}x",
+            watch.max()
         );
         assert!(fixed_error <= watch.max() && ratio >= at_least, "{name}: {ratio}x");
     }
