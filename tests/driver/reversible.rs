@@ -274,13 +274,16 @@ fn eps_and_the_starting_z_must_be_finite_and_positive() {
         .contains("starting control variable z"));
 }
 
+/// A density of the time alone: `(s, ds/dt)`.
+type TimedDensity = fn(f64) -> (f64, f64);
+
 /// A density that turns 0 at t = 1 stops the run there with an error saying when and
 /// what, the records made before kept; NaN and a non-finite rate likewise.
 #[test]
 fn a_density_that_fails_mid_run_stops_it_with_the_records_so_far() {
     let kepler = Kepler::new(1.0);
     let y0 = pericentre(0.5);
-    let cases: [(&str, fn(f64) -> (f64, f64)); 3] = [
+    let cases: [(&str, TimedDensity); 3] = [
         ("s(t, y) = 0", |t| (if t < 1.0 { 1.0 } else { 0.0 }, 0.0)),
         ("s(t, y) = NaN", |t| (if t < 1.0 { 1.0 } else { f64::NAN }, 0.0)),
         ("ds/dt = inf", |t| (1.0, if t < 1.0 { 0.0 } else { f64::INFINITY })),
