@@ -229,6 +229,29 @@ fn energy_stays_bounded_over_ten_thousand_periods() {
     }
 }
 
+/// The methods the refusal names as symmetric run: implicit midpoint, Gauss-Legendre,
+/// Lobatto IIIA and IIIB, a symmetric splitting and a composition.
+#[test]
+fn the_symmetric_methods_of_the_catalog_run() {
+    let kepler = Kepler::new(1.0);
+    let y0 = pericentre(0.5);
+    let names = [
+        "implicit_midpoint",
+        "gauss_legendre4",
+        "gauss_legendre6",
+        "lobatto_iiia4",
+        "lobatto_iiib4",
+        "stormer_verlet_dkd",
+        "triple_jump4",
+    ];
+    for name in names {
+        let run = Driver::reversible(0.01, kepler.step_density(1.5))
+            .run(&kepler, &mut *stepper(name, &y0), 0.0, &y0, 1.0)
+            .unwrap_or_else(|e| panic!("{name}: {e}"));
+        assert_eq!(*run.t.last().unwrap(), 1.0, "{name}");
+    }
+}
+
 #[test]
 fn a_method_that_is_not_symmetric_is_refused() {
     let kepler = Kepler::new(1.0);
@@ -307,9 +330,10 @@ fn a_density_that_fails_mid_run_stops_it_with_the_records_so_far() {
     }
 }
 
-/// Output times are interpolated (the run's steps are those of a run without them), events
-/// located on the continuous extension, a stop condition ends the run, and the end time is
-/// reached exactly: checked against the exact orbit.
+/// Records every N steps fall on the steps, output times are interpolated (the run's steps
+/// are those of a run without them), events located on the continuous extension, a stop
+/// condition ends the run, and the end time is reached exactly: checked against the exact
+/// orbit.
 #[test]
 fn output_times_events_and_stops_work_with_reversible_steps() {
     let kepler = Kepler::new(1.0);
@@ -326,6 +350,16 @@ fn output_times_events_and_stops_work_with_reversible_steps() {
         .run(&kepler, &mut *stepper("triple_jump4", &y0), 0.0, &y0, t_end)
         .unwrap();
     assert_eq!(*plain.t.last().unwrap(), t_end, "the end time exactly");
+    // a record every 10 steps: the same steps, every tenth recorded, and the last
+    let sparse = driver()
+        .every(10)
+        .run(&kepler, &mut *stepper("triple_jump4", &y0), 0.0, &y0, t_end)
+        .unwrap();
+    let mut tenth: Vec<f64> = plain.t.iter().copied().step_by(10).collect();
+    if plain.stats.steps % 10 != 0 {
+        tenth.push(t_end);
+    }
+    assert_eq!(sparse.t, tenth);
     let times: Vec<f64> = (1..10).map(|k| k as f64 * 1.7).collect();
     let saved = driver()
         .save_at(times.clone())
