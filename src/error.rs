@@ -27,6 +27,19 @@ pub enum Error {
         /// Steps taken before the cancellation was seen.
         step: u64,
     },
+    /// The reversible step control ([`Driver::reversible`](crate::Driver::reversible)) cannot
+    /// choose the next step: its density returned a value that is not finite and > 0, or a
+    /// rate that is not finite, or its control variable fell to 0 or below (`eps` too large
+    /// for how fast the density changes). Everything recorded before is kept.
+    #[error("the reversible step control failed at t = {} (step {step}): {what}", number(*t))]
+    StepDensity {
+        /// Time of the state where it happened.
+        t: f64,
+        /// Steps taken before.
+        step: u64,
+        /// What was wrong, with the value.
+        what: String,
+    },
     /// An implicit stage equation was not solved.
     #[error("the implicit solver did not converge at t = {}: residual {residual:.3e} after {iterations} iterations", number(*t))]
     SolverDiverged {

@@ -80,6 +80,8 @@ pub mod guide {
     pub mod chaos {}
     #[doc = include_str!("../docs/close-approaches.md")]
     pub mod close_approaches {}
+    #[doc = include_str!("../docs/reversible-steps.md")]
+    pub mod reversible_steps {}
 }
 
 /// The everyday items in one import.

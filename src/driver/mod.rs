@@ -1,21 +1,26 @@
 //! The driver: the integration loop around any [`Stepper`].
 //!
-//! Fixed or adaptive steps, forwards or backwards in time, a record every N steps,
+//! Fixed, adaptive or reversible adaptive steps ([`Driver::reversible`]), forwards or
+//! backwards in time, a record every N steps,
 //! statistics, a stop condition located by root finding, and on failure everything
 //! recorded so far together with the error.
 
 mod adaptive;
 mod dense;
+mod density;
 mod event;
 mod events;
 mod record;
+mod reversible;
 mod root;
 mod run;
 
 use dense::Between;
 pub use dense::{hermite, hermite5, hermite_order};
+pub use density::{NumericRate, StepDensity};
 pub use events::{Crossing, Event, EventHit};
 pub use record::{Interrupted, Recorder, Solution, Stats, StopEvent};
+pub use reversible::Reversible;
 pub(crate) use run::{steps_in_place, steps_unchecked};
 
 #[allow(unused_imports)]
@@ -48,6 +53,13 @@ pub enum StepControl<T> {
     },
 }
 
+/// How a run chooses its steps: a [`StepControl`], or the reversible control, which holds
+/// the user's density (a function, so not in the `Copy` enum).
+enum Control<'a, T, S> {
+    Steps(StepControl<T>),
+    Reversible(Reversible<'a, T, S>),
+}
+
 /// How [`Driver::run_into`] ended: the statistics and the located stop event, or the
 /// statistics up to the failure and the error.
 pub type RunOutcome<T, S> = Result<(Stats, Option<StopEvent<T, S>>), (Stats, Error)>;
@@ -56,7 +68,8 @@ pub type RunOutcome<T, S> = Result<(Stats, Option<StopEvent<T, S>>), (Stats, Err
 /// where `g` changes sign) or an event.
 pub type StopFn<'a, T, S> = Box<dyn Fn(T, &S) -> T + 'a>;
 
-/// Configuration of a run. Build it with [`Driver::fixed`] or [`Driver::adaptive`].
+/// Configuration of a run. Build it with [`Driver::fixed`], [`Driver::adaptive`] or
+/// [`Driver::reversible`].
 ///
 /// ```
 /// use stormer::{Driver, Problem};
@@ -79,7 +92,7 @@ pub type StopFn<'a, T, S> = Box<dyn Fn(T, &S) -> T + 'a>;
 /// assert!((landing - (2.0 * 10.0 / 9.81f64).sqrt()).abs() < 1e-12);
 /// ```
 pub struct Driver<'a, T: Real, S> {
-    control: StepControl<T>,
+    control: Control<'a, T, S>,
     every: u64,
     max_steps: u64,
     stop: Option<StopFn<'a, T, S>>,
@@ -104,8 +117,48 @@ impl<'a, T: Real, S: State<Scalar = T>> Driver<'a, T, S> {
         })
     }
 
+    /// Reversible adaptive steps for a symmetric method (Hairer & Soderlind 2005): steps of
+    /// about `eps s(t, y)` for the step size function `s` the user chooses
+    /// ([`StepDensity`]: a closure `(t, y) -> (s, ds/dt)`, or [`NumericRate`] for `s`
+    /// alone), taken so that the run backwards retraces them and, as with a fixed step, the
+    /// energy of a Hamiltonian system stays bounded without drift. A method that is not
+    /// symmetric is refused, as are `eps` not finite and > 0 and a density that is not
+    /// finite and > 0 during the run ([`Error::StepDensity`], with the records so far).
+    /// Output at chosen times and events are interpolated, never landed on (that would
+    /// break the reversibility); the last step is shortened to land on `t_end`, the one
+    /// step a run back does not retrace. docs/reversible-steps.md.
+    ///
+    /// ```
+    /// use stormer::{Driver, Method};
+    /// use stormer::models::CentralForce;
+    /// let kepler = CentralForce::<f64, [f64; 4]>::new(1.0);
+    /// let y0 = [0.1, 0.0, 0.0, (19.0f64).sqrt()]; // e = 0.9, a = 1, at pericentre
+    /// let verlet = Method::named("velocity_verlet_kdk").unwrap();
+    /// let mut verlet = verlet.stepper_for(&kepler, &y0, &Default::default()).unwrap();
+    /// let period = 2.0 * std::f64::consts::PI;
+    /// let run = Driver::reversible(0.01, kepler.step_density(1.5))
+    ///     .run(&kepler, &mut verlet, 0.0, &y0, 10.0 * period)
+    ///     .unwrap();
+    /// let (first, last) = (run.energy[0], run.energy[run.t.len() - 1]);
+    /// assert!(((last - first) / first).abs() < 1e-3);
+    /// assert_eq!(run.t[run.t.len() - 1], 10.0 * period); // the end time exactly
+    /// ```
+    pub fn reversible(eps: T, density: impl StepDensity<T, S> + 'a) -> Self {
+        Driver::with_reversible(Reversible::new(eps, density))
+    }
+
+    /// The reversible control as configured ([`Reversible::starting_z`] to continue a
+    /// run or run it back).
+    pub fn with_reversible(control: Reversible<'a, T, S>) -> Self {
+        Driver::with_control(Control::Reversible(control))
+    }
+
     /// Any step control.
     pub fn with(control: StepControl<T>) -> Self {
+        Driver::with_control(Control::Steps(control))
+    }
+
+    fn with_control(control: Control<'a, T, S>) -> Self {
         Driver {
             control,
             every: 1,
@@ -352,9 +405,10 @@ impl<'a, T: Real, S: State<Scalar = T>> Driver<'a, T, S> {
             out,
             stats: &mut stats,
         };
-        let result = match self.control {
-            StepControl::Fixed(h) => run.fixed(t0, y0, t_end, h),
-            StepControl::Adaptive { tol, h0, h_max } => run.adaptive(t0, y0, t_end, &tol, h0, h_max),
+        let result = match &self.control {
+            Control::Steps(StepControl::Fixed(h)) => run.fixed(t0, y0, t_end, *h),
+            Control::Steps(StepControl::Adaptive { tol, h0, h_max }) => run.adaptive(t0, y0, t_end, tol, *h0, *h_max),
+            Control::Reversible(control) => run.reversible(t0, y0, t_end, control),
         };
         let c = stepper.counters();
         stats.evaluations += c.evaluations - base.evaluations;
@@ -390,15 +444,19 @@ impl<'a, T: Real, S: State<Scalar = T>> Driver<'a, T, S> {
                 ),
             ));
         }
-        match self.control {
-            StepControl::Fixed(h) if h.is_finite() && h != T::zero() && (span / h).abs() > lit(self.max_steps as f64) => {
+        let fixed = match self.control {
+            Control::Steps(StepControl::Fixed(h)) => Some(h),
+            _ => None,
+        };
+        match fixed {
+            Some(h) if h.is_finite() && h != T::zero() && (span / h).abs() > lit(self.max_steps as f64) => {
                 Err(Error::TooManySteps {
                     t: to_f64(t0),
                     steps: self.max_steps,
                     needed: Some(to_f64((span / h).abs()).ceil()),
                 })
             }
-            StepControl::Fixed(h) if h.is_finite() && h.abs() > span.abs() => Err(Error::invalid(
+            Some(h) if h.is_finite() && h.abs() > span.abs() => Err(Error::invalid(
                 "step size",
                 format!(
                     "{} is longer than the time span ({}): not one whole step fits; give a step at most the span, or a longer span",

@@ -12,6 +12,13 @@ pub trait Recorder<T, S> {
     fn event(&mut self, _hit: &EventHit<T, S>) -> Result<(), Error> {
         Ok(())
     }
+
+    /// The control variable `z` where a reversible run ([`crate::Driver::reversible`])
+    /// reached its end time, to continue the run or run it back
+    /// ([`super::Reversible::starting_z`]); ignored by default.
+    fn reversible_end(&mut self, _z: T) -> Result<(), Error> {
+        Ok(())
+    }
 }
 
 /// Counts of the work a run did.
@@ -53,6 +60,10 @@ pub struct Solution<T, S> {
     pub stopped: Option<StopEvent<T, S>>,
     /// The crossings of the non-terminal events, in time order.
     pub events: Vec<EventHit<T, S>>,
+    /// The control variable `z` of a reversible run that reached its end time
+    /// ([`Recorder::reversible_end`]); `None` for the other controls and for a run ended by
+    /// a stop or a failure.
+    pub z_end: Option<T>,
 }
 
 impl<T, S> Default for Solution<T, S> {
@@ -64,6 +75,7 @@ impl<T, S> Default for Solution<T, S> {
             stats: Stats::default(),
             stopped: None,
             events: Vec::new(),
+            z_end: None,
         }
     }
 }
@@ -80,6 +92,11 @@ impl<T: Copy, S: Clone> Recorder<T, S> for Solution<T, S> {
 
     fn event(&mut self, hit: &EventHit<T, S>) -> Result<(), Error> {
         self.events.push(hit.clone());
+        Ok(())
+    }
+
+    fn reversible_end(&mut self, z: T) -> Result<(), Error> {
+        self.z_end = Some(z);
         Ok(())
     }
 }

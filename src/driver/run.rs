@@ -1,15 +1,17 @@
 //! One run in progress: the problem, the stepper, where the records go and the work done,
-//! with the fixed-step and adaptive loops as its methods, so that what every loop shares is
-//! named once.
+//! with the fixed-step, adaptive and reversible (`super::reversible`) loops as its methods,
+//! so that what every loop shares is named once.
 
 use super::adaptive::{initial_step, Controller};
 use super::dense::Inside;
+use super::reversible::{Reversible, SLIVER};
 use super::{Between, Driver, Recorder, Stats, StopEvent, CANCEL_EVERY};
 #[allow(unused_imports)]
 use crate::real::ops::*;
 use crate::real::{lit, to_f64};
 use crate::stepper::StepRun;
 use crate::stepper::Tolerances;
+use crate::text::number;
 use crate::{Error, Problem, Real, State, Stepper};
 use std::time::{Duration, Instant};
 
@@ -318,6 +320,128 @@ where
                         h: to_f64(h),
                     });
                 }
+            }
+        }
+    }
+
+    /// The reversible loop (module doc): one evaluation of the density per step, none of
+    /// `f` unless the density needs it and the stepper does not have it. The last step is
+    /// shortened to land on `t_end`: a step of the same map with a shorter `eps`.
+    pub(super) fn reversible(
+        &mut self,
+        t0: T,
+        y0: &S,
+        t_end: T,
+        control: &Reversible<'_, T, S>,
+    ) -> Result<Option<StopEvent<T, S>>, Error> {
+        let driver = self.driver;
+        let info = self.stepper.info();
+        if !info.flags.symmetric {
+            return Err(Error::Unsupported {
+                name: info.name,
+                reason: "reversible adaptive steps need a symmetric method (Phi_-h = Phi_h^-1: the \
+                         symmetric splittings and compositions, implicit midpoint, Gauss-Legendre, Lobatto \
+                         IIIA and IIIB); use one, or fixed or embedded adaptive steps"
+                    .into(),
+            });
+        }
+        let eps = control.eps;
+        if !(eps.is_finite() && eps > T::zero()) {
+            return Err(Error::invalid(
+                "reversible step parameter eps",
+                format!("must be finite and > 0, got {}", number(to_f64(eps))),
+            ));
+        }
+        if let Some(z) = control.z0.filter(|z| !(z.is_finite() && *z > T::zero())) {
+            return Err(Error::invalid(
+                "starting control variable z",
+                format!("must be finite and > 0, got {}", number(to_f64(z))),
+            ));
+        }
+        let dir = if t_end < t0 { -T::one() } else { T::one() };
+        let eps = eps * dir;
+        let half: T = lit(0.5);
+        let mut slope = control.density.needs_slope().then(|| y0.zeros_like());
+        if let Some(f) = slope.as_mut() {
+            self.p.rhs(t0, y0, f);
+            self.stats.evaluations += 1;
+        }
+        let (s0, mut g) = control.control(t0, y0, slope.as_ref(), 0)?;
+        let mut z = control.z0.unwrap_or(s0.recip());
+        let mut t = t0;
+        let mut y = y0.clone();
+        let mut y_new = y0.clone();
+        let mut g_stop = driver.stop.as_ref().map(|g| g(t0, y0));
+        let mut since_record = 0;
+        let mut save = driver.between(t0, y0, || info.order);
+        loop {
+            if (t - t_end) * dir >= T::zero() {
+                self.out.reversible_end(z)?;
+                return Ok(None);
+            }
+            let step = self.stats.steps;
+            if step >= driver.max_steps {
+                return Err(Error::TooManySteps {
+                    t: to_f64(t),
+                    steps: driver.max_steps,
+                    needed: None,
+                });
+            }
+            if driver.cancelled() {
+                return Err(Error::Cancelled { t: to_f64(t), step });
+            }
+            let mut a = z + half * eps * g;
+            if !(a.is_finite() && a > T::zero()) {
+                return Err(Error::StepDensity {
+                    t: to_f64(t),
+                    step,
+                    what: format!(
+                        "its control variable z = 1/s fell to {}: eps is too large for how fast the density \
+                         changes; take a smaller eps",
+                        number(to_f64(a))
+                    ),
+                });
+            }
+            let mut h = eps / a;
+            let mut kick = eps;
+            let remaining = t_end - t;
+            let last = (h - remaining) * dir >= -lit::<T>(SLIVER) * h.abs();
+            if last {
+                // the same map with a shorter eps, `kick`, whose step h = kick / a lands on t_end:
+                // kick = remaining (z + kick G / 2), solved for kick (positive: h <= eps / a)
+                kick = remaining * z / (T::one() - half * remaining * g);
+                a = z + half * kick * g;
+                h = remaining;
+            }
+            self.stepper.step(self.p, t, h, &y, &mut y_new)?;
+            if !y_new.is_finite() {
+                return Err(Error::NonFinite { t: to_f64(t), step });
+            }
+            if let Some(event) = driver.locate(self.p, &mut *self.stepper, t, h, &y, &mut y_new, &mut g_stop)? {
+                return self.end_at(t, &y, event, save.as_mut());
+            }
+            let t_next = if last { t_end } else { t + h };
+            if let Some(f) = slope.as_mut() {
+                match self.stepper.end_slopes()[1] {
+                    Some(end) => f.copy_from(end),
+                    None => {
+                        self.p.rhs(t_next, &y_new, f);
+                        self.stats.evaluations += 1;
+                    }
+                }
+            }
+            let (_, g_next) = control.control(t_next, &y_new, slope.as_ref(), step + 1)?;
+            if let Some(stop) = self.accept(save.as_mut(), t, t_next, &y, &y_new)? {
+                return Ok(Some(stop));
+            }
+            core::mem::swap(&mut y, &mut y_new);
+            t = t_next;
+            z = a + half * kick * g_next;
+            g = g_next;
+            since_record += 1;
+            if driver.save_at.is_none() && (since_record == driver.every || last) {
+                self.out.record(t, &y, self.p.energy(t, &y))?;
+                since_record = 0;
             }
         }
     }

@@ -4,7 +4,9 @@
 //! ([`ChargedParticles`], run through [`crate::magnetic::Charged`]; at speeds close to
 //! light, [`RelativisticParticles`]); and a planetary system split the Wisdom-Holman way
 //! ([`KeplerSplit`], in [`Jacobi`] or [`DemocraticHeliocentric`] coordinates); and
-//! [`SplitMix64`], the seeded sequence that draws many particles the same way everywhere.
+//! [`SplitMix64`], the seeded sequence that draws many particles the same way everywhere;
+//! and the step densities of the reversible step control, which shorten the steps where
+//! bodies come close ([`NBody::step_density`], [`CentralForce::step_density`]).
 //!
 //! The application's scene files build these; a program uses them directly:
 //!
@@ -38,6 +40,7 @@ mod orbit;
 mod perturbed_central_force;
 mod relativistic_particles;
 mod splitmix64;
+mod step_densities;
 
 pub use central_force::CentralForce;
 pub use charged_particles::ChargedParticles;
@@ -53,6 +56,7 @@ pub use orbit::{eccentric_anomaly, Orbit};
 pub use perturbed_central_force::PerturbedCentralForce;
 pub use relativistic_particles::RelativisticParticles;
 pub use splitmix64::SplitMix64;
+pub use step_densities::{PairDensity, RadialDensity};
 
 /// `names` if there is one per member (`count` of them, called `what`: "bodies",
 /// "particles"), else an error saying how many of each there are.
