@@ -222,9 +222,9 @@ impl<'s, S: Scene> SceneRun<'s, S> {
         if let Some(n) = self.max_steps {
             driver = driver.max_steps(n);
         }
-        if let Some(stop) = self.setup.model.stop() {
+        if let Some(stop) = self.setup.stop() {
             let model = &self.setup.model;
-            let g = move |t, y: &S::State| (stop.g)(model, t, y);
+            let g = move |t, y: &S::State| (stop.g)(model, t, y) - stop.level;
             driver = if self.stepper.info().dense_order.is_some() {
                 // on the method's own continuous extension: no step taken again
                 driver.event(g, Crossing::Either, true)
@@ -307,7 +307,7 @@ impl<'s, S: Scene> SceneRun<'s, S> {
     /// The scene's sentence about its stop condition: where it ended the run ("the ball
     /// lands at ..."), or that it did not before the end; `None` for a scene without one.
     pub fn stop_sentence(&self, stopped: Option<&StopEvent<f64, S::State>>) -> Option<String> {
-        let stop = self.setup.model.stop()?;
+        let stop = self.setup.stop()?;
         Some(match stopped {
             Some(event) => (stop.report)(&self.setup.model, event.t, &event.y),
             None => format!("no {} before t = {}", stop.event, stormer::text::number(self.t_end)),

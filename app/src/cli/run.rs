@@ -353,6 +353,10 @@ impl SceneVisitor for Runner<'_> {
         // The summary is information, not output: a closed stderr is not an error.
         let _ = writeln!(std::io::stderr(), "{summary}");
         if let (Some(indicator), Some(samples), Some(path)) = (args.indicator, &chaos, &indicator_path) {
+            // a run its stop condition ended (a body escaped) keeps the samples up to there
+            let until = outcome.stopped.as_ref().map_or(f64::INFINITY, |event| event.t);
+            let samples: Vec<_> = samples.iter().copied().filter(|s| s.t <= until).collect();
+            let samples = &samples;
             indicator.write(path, samples)?;
             if let Some(last) = samples.last() {
                 let _ = writeln!(

@@ -82,6 +82,9 @@ pub struct RunSettings {
     pub every: u64,
     /// The Wisdom-Holman split an n-body scene runs in (`split = "kepler-jacobi"`), if any.
     pub split: Option<stormer::models::KeplerCoordinates>,
+    /// An n-body run ends when a body gets this far from the centre of mass (`escape_distance
+    /// = 20.0`, REBOUND's `exit_max_distance`), with a sentence saying which body and when.
+    pub escape_distance: Option<f64>,
 }
 
 /// The units a scene file names (its optional `[units]` table), for the pictures' axis
@@ -153,6 +156,8 @@ struct RunTable {
     every: Option<Spanned<u64>>,
     #[serde(default)]
     split: Option<Spanned<String>>,
+    #[serde(default)]
+    escape_distance: Option<Number>,
 }
 
 impl RunTable {
@@ -181,6 +186,11 @@ impl RunTable {
                         src.error_at(s.span(), format!("run.{}", reason.trim_start_matches("invalid ")))
                     })
                 })
+                .transpose()?,
+            escape_distance: self
+                .escape_distance
+                .as_ref()
+                .map(|d| src.positive("run.escape_distance", d))
                 .transpose()?,
         })
     }
@@ -223,6 +233,16 @@ pub(super) fn parse_as<S: Scene>(src: &Source<'_>, name: &str) -> Result<Setup<S
             split.span(),
             format!(
                 "run.split is for n-body scenes with one dominant body, and this scene's model is {}",
+                S::MODEL
+            ),
+        ));
+    }
+    if let Some(escape) = file.run.escape_distance.as_ref().filter(|_| S::MODEL != "n-body") {
+        return Err(src.error_at(
+            escape.span(),
+            format!(
+                "run.escape_distance is for n-body scenes (a body that gets that far from the centre of mass ends \
+                 the run), and this scene's model is {}",
                 S::MODEL
             ),
         ));

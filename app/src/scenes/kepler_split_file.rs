@@ -49,6 +49,10 @@ impl Scene for SplitBodies {
     }
 
     super::chaos::chaos_twin!(kepler_split);
+
+    fn bodies(&self) -> Option<&NBody<f64, DVector<f64>>> {
+        Some(KeplerSplit::bodies(self))
+    }
 }
 
 /// The bodies of an n-body scene file, split, run by the Wisdom-Holman kernel in the
@@ -71,6 +75,10 @@ impl Scene for CorrectedBodies {
 
     fn components(&self, y0: &DVector<f64>) -> Vec<String> {
         self.problem().components(y0)
+    }
+
+    fn bodies(&self) -> Option<&NBody<f64, DVector<f64>>> {
+        Some(self.problem().bodies())
     }
 
     /// The corrected state, in the scene's coordinates (the split's problem is autonomous:

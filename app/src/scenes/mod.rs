@@ -49,6 +49,7 @@ mod central_force_file;
 mod chaos;
 mod charged_file;
 mod damped;
+pub mod escape;
 mod file;
 mod free_kick;
 mod harmonic;
@@ -129,6 +130,12 @@ pub trait Scene: Problem<Scalar = f64> + Sized + 'static {
         None
     }
 
+    /// The gravitating bodies of the model (their masses, dimension and names), for
+    /// escapes (`[run] escape_distance`, [`escape`]); `None` for a model without them.
+    fn bodies(&self) -> Option<&NBody<f64, DVector<f64>>> {
+        None
+    }
+
     /// The state `y` of a run in the scene's coordinates, what its records show; the
     /// identity for every model but one whose stepper runs in other coordinates (the
     /// Wisdom-Holman split, [`SplitBodies`]).
@@ -178,8 +185,10 @@ pub struct Stop<S: Scene> {
     /// The event's name, for when it does not happen (`"landing"`: "no landing before
     /// t = 10").
     pub event: &'static str,
-    /// The event function: the run stops where `g(model, t, y)` changes sign.
+    /// The event function: the run stops where `g(model, t, y)` crosses `level`.
     pub g: fn(&S, f64, &S::State) -> f64,
+    /// The value of `g` where the run stops (0 for a landing; minus the escape distance).
+    pub level: f64,
     /// The summary's sentence about the state where the run stopped ("the ball lands at
     /// t = 1.28 s, 21.9 m away").
     pub report: fn(&S, f64, &S::State) -> String,
@@ -229,6 +238,16 @@ impl<S: Scene> Setup<S> {
     /// The energy at the initial state, when the model has one.
     pub fn initial_energy(&self) -> Option<f64> {
         self.model.energy(self.run.t0, &self.y0)
+    }
+
+    /// The condition that ends the scene's runs: the model's own ([`Scene::stop`]), or a
+    /// body's escape when the file sets `escape_distance` (n-body scenes only, which have no
+    /// other).
+    pub fn stop(&self) -> Option<Stop<S>> {
+        match self.run.escape_distance {
+            Some(distance) if self.model.bodies().is_some() => Some(escape::stop(distance)),
+            _ => self.model.stop(),
+        }
     }
 }
 

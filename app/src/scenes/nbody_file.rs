@@ -242,6 +242,10 @@ impl Scene for NBody<f64, DVector<f64>> {
 
     super::chaos::chaos_twin!(n_body);
 
+    fn bodies(&self) -> Option<&NBody<f64, DVector<f64>>> {
+        Some(self)
+    }
+
     /// Known for two bodies on a bound orbit (the `kepler` scene).
     fn exact(&self, t0: f64, y0: &DVector<f64>, t: f64) -> Option<DVector<f64>> {
         self.two_body_exact(y0, t - t0)

@@ -152,10 +152,8 @@ fn an_ensemble_measures_the_indicator_on_every_member_the_stability_map() {
     let dir = workdir("indicator", "ensemble");
     let map = "ensemble two-planets --vary bodies.2.orbit.a=7.2:8.5:2 --vary bodies.2.orbit.e=0.05:0.4:2 \
                --indicator megno --out map";
-    let out = stormer_ok(&dir, &map.split_whitespace().collect::<Vec<_>>());
-    let said = format!("{}{}", stdout(&out), stderr(&out));
+    let (said, text) = ensemble(&dir, map, "map/ensemble-two-planets-a+e.csv");
     assert!(said.contains("megno: min"), "{said}");
-    let text = std::fs::read_to_string(dir.join("map/ensemble-two-planets-a+e.csv")).unwrap();
     let header: Vec<&str> = text.lines().next().unwrap().split(',').collect();
     let column = header.iter().position(|c| *c == "megno").expect("a megno column");
     let megno = |a: &str, e: &str| -> f64 {
@@ -185,6 +183,67 @@ fn an_ensemble_measures_the_indicator_on_every_member_the_stability_map() {
     );
     assert_error(&refused, "no form on dual numbers");
     assert!(!dir.join("none").exists());
+}
+
+/// What the ensemble `command` said, and its table at `table`.
+fn ensemble(dir: &std::path::Path, command: &str, table: &str) -> (String, String) {
+    let out = stormer_ok(dir, &command.split_whitespace().collect::<Vec<_>>());
+    let said = format!("{}{}", stdout(&out), stderr(&out));
+    (said, std::fs::read_to_string(dir.join(table)).unwrap())
+}
+
+/// The two-planet scene with the outer planet's orbit `a`, `e`.
+fn two_planets(a: f64, e: f64) -> String {
+    let scene = include_str!("../../../scenes/two-planets.toml");
+    let entry = "orbit = { a = 7.5, e = 0.1,";
+    assert!(scene.contains(entry));
+    scene.replace(entry, &format!("orbit = {{ a = {a:?}, e = {e:?},"))
+}
+
+#[test]
+fn an_escape_ends_the_run_with_which_body_and_when_and_marks_the_map() {
+    let dir = workdir("indicator", "escape");
+    // a point of the tutorial's map where the outer planet is thrown out (REBOUND: Escape)
+    std::fs::write(dir.join("thrown.toml"), two_planets(7.0, 0.47435897435897434)).unwrap();
+    let out = stormer_ok(
+        &dir,
+        &["run", "thrown.toml", "--indicator", "megno", "-o", "thrown.csv"],
+    );
+    let said = stderr(&out);
+    let t = summary_number(&said, "from the centre of mass at t =");
+    assert!(said.contains("saturn escapes: 20 from the centre of mass"), "{said}");
+    assert!(t > 100.0 && t < 3141.0, "{said}");
+    // the run's last record is the escape, every MEGNO sample before it, none after
+    let (_, rows) = csv_rows(&std::fs::read_to_string(dir.join("thrown.csv")).unwrap());
+    assert!(
+        (rows.last().unwrap()[0] - t).abs() < 1e-6 * t,
+        "{t} vs {:?}",
+        rows.last()
+    );
+    let (_, megno) = csv_rows(&std::fs::read_to_string(dir.join("thrown-megno.csv")).unwrap());
+    assert!(!megno.is_empty() && megno.iter().all(|r| r[0] <= t), "{t}");
+    // the same scene without the escape distance runs to the end, far beyond 20
+    let unbounded = two_planets(7.0, 0.47435897435897434).replace("escape_distance = 20.0", "");
+    std::fs::write(dir.join("free.toml"), unbounded).unwrap();
+    let free = stderr(&stormer_ok(&dir, &["run", "free.toml", "-o", "free.csv"]));
+    assert!(!free.contains("escapes"), "{free}");
+    // in a map: the member that escaped has an escape mark and no MEGNO (grey)
+    let map =
+        "ensemble thrown.toml --vary bodies.2.orbit.a=7.0:8.5:2 --vary bodies.2.orbit.e=0.05:0.47435897435897434:2 \
+               --indicator megno --out map";
+    let (said, text) = ensemble(&dir, map, "map/ensemble-thrown-a+e.csv");
+    assert!(said.contains("escape: 1 of 4 runs"), "{said}");
+    let header: Vec<&str> = text.lines().next().unwrap().split(',').collect();
+    let (escape, megno) = (
+        header.iter().position(|c| *c == "escape").unwrap(),
+        header.iter().position(|c| *c == "megno").unwrap(),
+    );
+    for row in text.lines().skip(1) {
+        let cells: Vec<&str> = row.split(',').collect();
+        assert_eq!(cells[escape] == "true", cells[megno].is_empty(), "{row}");
+    }
+    let svg = std::fs::read_to_string(dir.join("map/ensemble-thrown-a+e.svg")).unwrap();
+    assert!(svg.contains("grey: a body escaped"), "the map says what grey means");
 }
 
 /// A stop signal during the indicator's run (before the run writes anything) stops it

@@ -168,6 +168,8 @@ impl SceneVisitor for Flight<'_> {
             .map(|(drift, _)| drift)
             .filter(|d| d.is_finite());
         match indicator {
+            // an orbit its stop condition ended (a body escaped) has no indicator at the end
+            Some(_) if member.stopped => {}
             Some((i, Ok(samples))) => {
                 member.indicator = samples.last().map(|last| i.value(last)).filter(|x| x.is_finite())
             }

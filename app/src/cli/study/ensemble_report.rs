@@ -78,6 +78,11 @@ pub fn csv(part: &EnsemblePart) -> String {
 /// `free-kick, rk4: x at the landing`.
 fn title(id: &EnsembleId) -> String {
     let at = match (&id.stop, id.t_end) {
+        // escapes end some runs only; the others run to the end
+        (Some(event), t) if event == "escape" => format!(
+            "at {} (grey: a body escaped, or the run failed)",
+            t.map_or("the end".into(), |t| format!("t = {}", number(t)))
+        ),
         (Some(event), _) => format!("at the {event}"),
         (None, Some(t)) => format!("at t = {}", number(t)),
         (None, None) => "at the end".into(),

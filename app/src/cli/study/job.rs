@@ -131,7 +131,7 @@ impl SceneVisitor for Planner<'_> {
             t_end,
             methods,
             resolved,
-            stop: setup.model.stop().map(|stop| stop.event),
+            stop: setup.stop().map(|stop| stop.event),
             truth: if setup.exact(t_end).is_some() {
                 "exact"
             } else {

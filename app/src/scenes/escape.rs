@@ -1,0 +1,72 @@
+//! Escapes: an n-body run ends when a body gets `[run] escape_distance` from the centre of
+//! mass of all the bodies (REBOUND's `exit_max_distance`), located within the step like
+//! every stop condition, with a sentence saying which body and when. A stability map's
+//! escaped orbits are then a record, not a NaN or an endless run (docs/chaos.md).
+
+use nalgebra::DVector;
+use stormer::models::NBody;
+
+use super::{Scene, Stop};
+
+/// The body farthest from the centre of mass of the bodies in the scene state `y`
+/// (positions then momenta), its index and its distance.
+pub fn farthest(bodies: &NBody<f64, DVector<f64>>, y: &[f64]) -> (usize, f64) {
+    let (d, masses) = (bodies.dim(), bodies.masses());
+    let total: f64 = masses.iter().sum();
+    let mut centre = [0.0; 3];
+    for (k, &m) in masses.iter().enumerate() {
+        for c in 0..d {
+            centre[c] += m * y[k * d + c] / total;
+        }
+    }
+    let mut out = (0, 0.0);
+    for k in 0..masses.len() {
+        let r = (0..d).map(|c| (y[k * d + c] - centre[c]).powi(2)).sum::<f64>().sqrt();
+        // a body that is no longer finite is the farthest
+        if r > out.1 || r.is_nan() {
+            out = (k, r);
+        }
+    }
+    out
+}
+
+/// The stop of an n-body scene whose runs end at `distance` from the centre of mass: `g`
+/// is minus the farthest body's distance, crossing `-distance` outwards.
+pub fn stop<S: Scene>(distance: f64) -> Stop<S> {
+    Stop {
+        event: "escape",
+        g: |model, _, y| escaped(model, y).map_or(0.0, |(_, r)| -r),
+        level: -distance,
+        report: |model, t, y| match escaped(model, y) {
+            Some((name, r)) => format!(
+                "{name} escapes: {} from the centre of mass at t = {}",
+                stormer::text::number(r).significant(6),
+                stormer::text::number(t).significant(9)
+            ),
+            None => format!("the run stopped at t = {t}"),
+        },
+    }
+}
+
+/// The farthest body of the scene state of `y` (the model's own state, in the scene's
+/// coordinates first), its name and distance; `None` for a model without bodies.
+fn escaped<S: Scene>(model: &S, y: &S::State) -> Option<(String, f64)> {
+    let bodies = model.bodies()?;
+    let scene = model.scene_state(y);
+    let (k, r) = farthest(bodies, stormer::State::as_slice(scene.as_ref()));
+    Some((bodies.names().get(k).cloned().unwrap_or_else(|| format!("body {k}")), r))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_farthest_body_is_measured_from_the_centre_of_mass() {
+        let bodies = NBody::<f64, DVector<f64>>::new(1.0, &[3.0, 1.0], 1).unwrap();
+        // centre of mass at 1: the light body at 4 is 3 away, the heavy one at 0 is 1
+        let y = [0.0, 4.0, 0.0, 0.0];
+        assert_eq!(farthest(&bodies, &y), (1, 3.0));
+        assert_eq!(farthest(&bodies, &[0.0, f64::NAN, 0.0, 0.0]).0, 1);
+    }
+}
