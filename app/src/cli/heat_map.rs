@@ -27,11 +27,18 @@ pub struct HeatMap {
     pub ys: Vec<f64>,
     /// The values, the vertical index fastest.
     pub values: Vec<Option<f64>>,
+    /// The colour scale: [`VIRIDIS`] or [`GREEN_YELLOW_RED`], from the lowest value to the
+    /// highest.
+    pub palette: &'static [(u8, u8, u8)],
+    /// The values the scale spans, when not all of them: values beyond take its end colours
+    /// (REBOUND's MEGNO maps span 1.9 to 4, so that the regular orbits near 2 and the
+    /// chaotic ones stand apart, whatever the largest MEGNO).
+    pub span: Option<(f64, f64)>,
 }
 
 /// Viridis at nine evenly spaced points (matplotlib's values): readable in grey and by
 /// the colour-blind.
-const VIRIDIS: [(u8, u8, u8); 9] = [
+pub const VIRIDIS: [(u8, u8, u8); 9] = [
     (68, 1, 84),
     (71, 44, 122),
     (59, 81, 139),
@@ -42,6 +49,21 @@ const VIRIDIS: [(u8, u8, u8); 9] = [
     (170, 220, 50),
     (253, 231, 37),
 ];
+/// ColorBrewer's RdYlGn reversed (matplotlib's `RdYlGn_r`, the colours of REBOUND's MEGNO
+/// maps): green low, yellow between, red high.
+pub const GREEN_YELLOW_RED: [(u8, u8, u8); 11] = [
+    (0, 104, 55),
+    (26, 152, 80),
+    (102, 189, 99),
+    (166, 217, 106),
+    (217, 239, 139),
+    (255, 255, 191),
+    (254, 224, 139),
+    (253, 174, 97),
+    (244, 109, 67),
+    (215, 48, 39),
+    (165, 0, 38),
+];
 const MISSING: RGBColor = RGBColor(200, 200, 200);
 /// At most this many cells along an axis: the plotting area is about 500 pixels wide, so a
 /// cell stays a few pixels wide, and the SVG holds at most this squared rectangles (about
@@ -51,13 +73,13 @@ const MAX_CELLS_PER_AXIS: usize = 128;
 const BAR_PX: u32 = 22;
 const GAP_PX: u32 = 14;
 
-/// The viridis colour at `f` in [0, 1].
-fn viridis(f: f64) -> RGBColor {
+/// The colour of `palette` (evenly spaced colours, at least two) at `f` in [0, 1].
+fn shade(palette: &[(u8, u8, u8)], f: f64) -> RGBColor {
     let f = if f.is_finite() { f.clamp(0.0, 1.0) } else { 0.0 };
-    let x = f * (VIRIDIS.len() - 1) as f64;
-    let k = (x.floor() as usize).min(VIRIDIS.len() - 2);
+    let x = f * (palette.len() - 1) as f64;
+    let k = (x.floor() as usize).min(palette.len() - 2);
     let w = x - k as f64;
-    let (a, b) = (VIRIDIS[k], VIRIDIS[k + 1]);
+    let (a, b) = (palette[k], palette[k + 1]);
     let mix = |p: u8, q: u8| (f64::from(p) + w * (f64::from(q) - f64::from(p))).round() as u8;
     RGBColor(mix(a.0, b.0), mix(a.1, b.1), mix(a.2, b.2))
 }
@@ -105,9 +127,12 @@ fn label_area(range: (f64, f64)) -> u32 {
 /// Draws `map` into the SVG file `path`.
 pub fn draw(path: &Path, map: &HeatMap) -> anyhow::Result<()> {
     let finite: Vec<f64> = map.values.iter().flatten().copied().filter(|v| v.is_finite()).collect();
-    let (lo, hi) = finite.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &v| {
-        (lo.min(v), hi.max(v))
+    let (lo, hi) = map.span.unwrap_or_else(|| {
+        finite.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &v| {
+            (lo.min(v), hi.max(v))
+        })
     });
+    let viridis = |f| shade(map.palette, f);
     // the bar spans the values; a flat or empty map gets the padded range of a line chart
     let bar_range = if lo < hi {
         (lo, hi)
@@ -213,6 +238,7 @@ mod tests {
 
     #[test]
     fn viridis_runs_from_purple_to_yellow() {
+        let viridis = |f| shade(&VIRIDIS, f);
         assert_eq!(viridis(0.0), RGBColor(68, 1, 84));
         assert_eq!(viridis(1.0), RGBColor(253, 231, 37));
         assert_eq!(viridis(0.5), RGBColor(33, 144, 141));
@@ -234,6 +260,8 @@ mod tests {
             xs,
             ys,
             values: vec![Some(1.0), Some(2.0), None, Some(4.0), Some(5.0), Some(f64::NAN)],
+            palette: &VIRIDIS,
+            span: None,
         };
         draw(&path, &map).unwrap();
         let svg = std::fs::read_to_string(&path).unwrap();
@@ -252,6 +280,32 @@ mod tests {
     }
 
     #[test]
+    fn a_megno_map_spans_rebounds_range_in_its_colours() {
+        let dir = std::env::temp_dir().join(format!("stormer-heat-map-megno-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("map.svg");
+        let map = HeatMap {
+            title: "megno".into(),
+            x_label: "a".into(),
+            y_label: "e".into(),
+            value_label: "megno".into(),
+            xs: vec![7.0, 8.0],
+            ys: vec![0.0, 0.5],
+            // beyond the span: the end colours; inside, between them
+            values: vec![Some(1.5), Some(3.0), Some(40.0), None],
+            palette: &GREEN_YELLOW_RED,
+            span: Some((1.9, 4.0)),
+        };
+        draw(&path, &map).unwrap();
+        let svg = std::fs::read_to_string(&path).unwrap();
+        for colour in ["#006837", "#A50026"] {
+            assert!(svg.contains(colour), "{colour}: the cell beyond that end of the span");
+        }
+        assert_eq!(svg.matches("#C8C8C8").count(), 1, "the missing cell");
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
     fn a_huge_grid_draws_a_bounded_file_in_blocks() {
         let dir = std::env::temp_dir().join(format!("stormer-heat-map-huge-{}", std::process::id()));
         std::fs::create_dir_all(&dir).unwrap();
@@ -266,6 +320,8 @@ mod tests {
             xs: grid.clone(),
             ys: grid,
             values: (0..n * n).map(|k| Some((k % 997) as f64)).collect(),
+            palette: &VIRIDIS,
+            span: None,
         };
         draw(&path, &map).unwrap();
         let bytes = std::fs::metadata(&path).unwrap().len();

@@ -243,7 +243,7 @@ fn an_escape_ends_the_run_with_which_body_and_when_and_marks_the_map() {
         assert_eq!(cells[escape] == "true", cells[megno].is_empty(), "{row}");
     }
     let svg = std::fs::read_to_string(dir.join("map/ensemble-thrown-a+e.svg")).unwrap();
-    assert!(svg.contains("grey: a body escaped"), "the map says what grey means");
+    assert!(svg.contains("(grey: escaped)"), "the map says what grey means");
 }
 
 /// A stop signal during the indicator's run (before the run writes anything) stops it

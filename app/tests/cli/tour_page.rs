@@ -91,7 +91,7 @@ fn tour_writes_the_report_with_verdicts() {
     }
     assert!(pictures >= 12, "{pictures} pictures");
     let verdicts: Vec<&str> = html.lines().filter(|l| l.contains("class=\"verdict\"")).collect();
-    assert_eq!(verdicts.len(), 9, "{verdicts:?}");
+    assert_eq!(verdicts.len(), 10, "{verdicts:?}");
     let has = |i: usize, needle: &str| assert!(verdicts[i].contains(needle), "expected {needle:?} in {}", verdicts[i]);
     has(0, "Explicit Euler's energy drifts upward");
     has(0, "Stormer-Verlet's stays bounded");
@@ -104,6 +104,8 @@ fn tour_writes_the_report_with_verdicts() {
     has(3, "energy stays bounded");
     has(4, "least accurate: explicit Euler");
     has(5, "the energy decreases");
+    has(8, "REBOUND's MEGNO tutorial");
+    has(8, "escape");
 }
 
 /// The page stands alone: an inlined stylesheet and nothing from the network, a table of
@@ -122,7 +124,7 @@ fn the_page_is_self_contained_with_contents_and_captions() {
         .skip(1)
         .map(|s| s.split('"').next().unwrap())
         .collect();
-    assert_eq!(targets.len(), 9, "one entry per experiment");
+    assert_eq!(targets.len(), 10, "one entry per experiment");
     for id in &targets {
         assert!(html.contains(&format!("<section id=\"{id}\">")), "no section {id}");
     }
@@ -135,7 +137,7 @@ fn the_page_is_self_contained_with_contents_and_captions() {
     );
     assert!(html.contains("<td class=\"num\">"), "numbers aligned right");
     let summary = std::fs::read_to_string(report.join("summary.md")).unwrap();
-    assert_eq!(summary.matches("**Verdict:**").count(), 9);
+    assert_eq!(summary.matches("**Verdict:**").count(), 10);
     assert_eq!(summary.matches("](").count(), figures);
 }
 

@@ -79,10 +79,10 @@ pub fn csv(part: &EnsemblePart) -> String {
 fn title(id: &EnsembleId) -> String {
     let at = match (&id.stop, id.t_end) {
         // escapes end some runs only; the others run to the end
-        (Some(event), t) if event == "escape" => format!(
-            "at {} (grey: a body escaped, or the run failed)",
-            t.map_or("the end".into(), |t| format!("t = {}", number(t)))
-        ),
+        (Some(event), t) if event == "escape" => match t {
+            Some(t) => format!("at t = {} (grey: escaped)", number(t)),
+            None => "(grey: escaped)".into(),
+        },
         (Some(event), _) => format!("at the {event}"),
         (None, Some(t)) => format!("at t = {}", number(t)),
         (None, None) => "at the end".into(),
@@ -123,6 +123,17 @@ fn draw(part: &EnsemblePart, path: &Path) -> anyhow::Result<()> {
                 xs: x.values(),
                 ys: y.values(),
                 values,
+                palette: &heat_map::VIRIDIS,
+                span: None,
+            };
+            // a MEGNO map in the colours and range of REBOUND's tutorial
+            let map = match id.indicator.as_deref() {
+                Some("megno") if id.show == "megno" => HeatMap {
+                    palette: &heat_map::GREEN_YELLOW_RED,
+                    span: Some((1.9, 4.0)),
+                    ..map
+                },
+                _ => map,
             };
             heat_map::draw(path, &map)
         }

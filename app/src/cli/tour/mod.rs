@@ -16,6 +16,7 @@ mod outer_solar_system;
 mod pendulum;
 mod picture;
 mod sim;
+mod stability_map;
 mod trace;
 mod verdict;
 mod work_precision;
@@ -46,6 +47,7 @@ const EXPERIMENTS: &[(&str, Experiment)] = &[
     ("free kick", free_kick::run),
     ("Henon-Heiles", henon_heiles::run),
     ("regular or chaotic", chaos::run),
+    ("stability map", stability_map::run),
     ("work-precision", work_precision::run),
 ];
 
