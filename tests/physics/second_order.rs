@@ -8,7 +8,7 @@ use num_dual::{Dual2SVec64, Dual2_64, Dual64};
 use stormer::chaos::{final_state_derivative, final_state_second_derivative, SecondOrderScalar};
 use stormer::models::{KeplerCoordinates, KeplerSplit, NBody};
 use stormer::real::lit;
-use stormer::{Method, Real};
+use stormer::{Method, Real, SecondOrder};
 
 use crate::support::outer_solar_system as oss;
 
@@ -225,9 +225,13 @@ fn a_mixed_second_derivative_of_a_mass_and_an_initial_direction_agrees_with_diff
     }
 }
 
+/// A position, its gradient (`[component][parameter]`) and Hessians
+/// (`[component][parameter][parameter]`) with respect to two parameters.
+type WithDerivatives = ([f64; 3], [[f64; 2]; 3], [[[f64; 2]; 2]; 3]);
+
 /// Jupiter's final position (velocity Verlet), its gradient and its Hessian with respect to
 /// the Sun's mass `m` and Jupiter's initial `vx`.
-fn jupiter(m: f64, vx: f64) -> ([f64; 3], [[f64; 2]; 3], [[[f64; 2]; 2]; 3]) {
+fn jupiter(m: f64, vx: f64) -> WithDerivatives {
     type Two = Dual2SVec64<2>;
     let case = &CASES[1];
     let (m, vx) = (Two::seeded(m, &[1.0, 0.0]), Two::seeded(vx, &[0.0, 1.0]));
@@ -337,4 +341,55 @@ fn newtons_method_with_the_exact_hessian_fits_the_suns_mass_and_a_velocity_quadr
         rate > 0.1 && gauss_newton[6] > 1e-8,
         "Gauss-Newton as fast: {gauss_newton:?}"
     );
+}
+
+/// `q'' = -(q - a)^2`: at `q = a`, `p = 0` an equilibrium whose force has zero first but
+/// nonzero second derivatives, so an implicit solver's first sweep leaves the value and
+/// the first derivatives unchanged and only the second derivatives move.
+struct Pinned<T> {
+    a: T,
+}
+
+impl<T: Real> SecondOrder for Pinned<T> {
+    type Scalar = T;
+    type State = [T; 2];
+    fn acceleration(&self, _t: T, q: &[T], acc: &mut [T]) {
+        let d = q[0] - self.a;
+        acc[0] = -d * d;
+    }
+}
+
+/// 10 steps of 0.1 of the implicit `gauss_legendre4` on [`Pinned`] from rest at 0.
+fn pinned<T: Real, R>(a: T, end: impl FnOnce(&Pinned<T>, &mut dyn stormer::Stepper<Pinned<T>>, &[T; 2]) -> R) -> R {
+    let problem = Pinned { a };
+    let y0 = [T::zero(); 2];
+    let mut stepper = Method::named("gauss_legendre4")
+        .unwrap()
+        .stepper_for(&problem, &y0, &Default::default())
+        .unwrap();
+    end(&problem, &mut *stepper, &y0)
+}
+
+#[test]
+fn an_implicit_method_converges_the_second_derivatives_at_an_equilibrium() {
+    let first = |da: f64| {
+        pinned(Dual64::new(da, 1.0), |p, s, y| {
+            final_state_derivative(p, s, 0.0, y, 0.1, 10).unwrap().derivative
+        })
+    };
+    let differences = differences(first, 1e-3);
+    let one = pinned(Dual2_64::seeded(0.0, &[1.0]), |p, s, y| {
+        final_state_second_derivative(p, s, 0.0, y, 0.1, 10).unwrap()
+    });
+    let two = pinned(Dual2SVec64::<2>::seeded(0.0, &[1.0]), |p, s, y| {
+        final_state_second_derivative(p, s, 0.0, y, 0.1, 10).unwrap()
+    });
+    for (end, what) in [(one, "Dual2_64"), (two, "Dual2SVec64<2>")] {
+        let second: Vec<f64> = end.second.iter().map(|h| h[(0, 0)]).collect();
+        assert_agrees(
+            &second,
+            &differences,
+            &format!("d2 y / d a2 at an equilibrium, on {what}"),
+        );
+    }
 }
