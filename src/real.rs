@@ -33,22 +33,61 @@ pub fn to_f64<T: Real>(x: T) -> f64 {
 ///
 /// Comparisons of dual numbers look at the real part only (by design: the derivative
 /// must follow the same branches as the value). An iteration stopped on `|update|` then
-/// stops when the value has converged, whatever the derivative part: at an equilibrium,
+/// stops when the value has converged, whatever the derivative parts: at an equilibrium,
 /// where the value's first update is exactly zero, after one sweep. For the dual types
-/// of `num_dual` this returns `|re| + |eps|` as a real number, so an implicit solver on
-/// dual numbers iterates until value *and* derivative have converged; for every other
-/// scalar it is `x.abs()`. The type test is resolved at compile time.
+/// of `num_dual` this returns the sum of the absolute values of every part as a real
+/// number (`|re| + |eps|` for first-order duals; value, first and second derivative
+/// parts for the second-order [`num_dual::Dual2_64`] and [`num_dual::Dual2SVec64`] of up
+/// to [`SECOND_ORDER_DIRECTIONS`] directions, and their `f32` forms), so an implicit solver
+/// iterates until value *and* derivatives have converged; for every other scalar it is
+/// `x.abs()`. The type tests are resolved at compile time.
 #[inline(always)]
 pub(crate) fn magnitude<T: Real>(x: T) -> T {
     use core::any::Any;
+    use num_dual::{Dual2SVec32, Dual2SVec64, Dual2_32, Dual2_64, Dual32, Dual64};
     let any = &x as &dyn Any;
-    if let Some(d) = any.downcast_ref::<num_dual::Dual64>() {
+    if let Some(d) = any.downcast_ref::<Dual64>() {
         return lit(d.re.abs() + d.eps.abs());
     }
-    if let Some(d) = any.downcast_ref::<num_dual::Dual32>() {
+    if let Some(d) = any.downcast_ref::<Dual32>() {
         return T::from_subset(&f64::from(d.re.abs() + d.eps.abs()));
     }
+    if let Some(d) = any.downcast_ref::<Dual2_64>() {
+        return lit(d.re.abs() + d.v1.abs() + d.v2.abs());
+    }
+    if let Some(d) = any.downcast_ref::<Dual2_32>() {
+        return T::from_subset(&f64::from(d.re.abs() + d.v1.abs() + d.v2.abs()));
+    }
+    // the vector forms, one size at a time (a downcast needs the concrete type)
+    macro_rules! vector_forms {
+        ($($n:literal)*) => {$(
+            if let Some(d) = any.downcast_ref::<Dual2SVec64<$n>>() {
+                return lit(vector_parts(d.re, d.v1, d.v2));
+            }
+            if let Some(d) = any.downcast_ref::<Dual2SVec32<$n>>() {
+                return T::from_subset(&f64::from(vector_parts(d.re, d.v1, d.v2)));
+            }
+        )*};
+    }
+    vector_forms!(1 2 3 4);
     x.abs()
+}
+
+/// The number of directions up to which an implicit solver's convergence test sees every
+/// part of a [`num_dual::Dual2SVec64`] (beyond, only its value, so the derivative parts
+/// may stop short of convergence).
+pub const SECOND_ORDER_DIRECTIONS: usize = 4;
+
+/// `|re|` plus the absolute values of every gradient and Hessian entry.
+#[inline(always)]
+fn vector_parts<F: num_dual::DualNum<F> + num_dual::DualNumFloat, const N: usize>(
+    re: F,
+    v1: num_dual::Derivative<F, F, nalgebra::U1, nalgebra::Const<N>>,
+    v2: num_dual::Derivative<F, F, nalgebra::Const<N>, nalgebra::Const<N>>,
+) -> F {
+    let (one, n) = (nalgebra::U1, nalgebra::Const::<N>);
+    let sum = |m: &[F]| m.iter().fold(F::zero(), |s, x| s + x.abs());
+    re.abs() + sum(v1.unwrap_generic(one, n).as_slice()) + sum(v2.unwrap_generic(n, n).as_slice())
 }
 
 /// The numeric traits behind [`Real`]: imported where their methods are called on an
@@ -73,5 +112,22 @@ mod tests {
         assert_eq!((m.re, m.eps), (3.0, 0.0));
         // while a comparison does not see it
         assert!(ComplexField::abs(Dual64::new(0.0, -3.0)) <= Dual64::from(0.0));
+    }
+
+    #[test]
+    #[allow(clippy::float_cmp)] // exact values
+    fn magnitude_sees_the_second_derivative_parts() {
+        use num_dual::{Derivative, Dual2SVec64, Dual2_64};
+        assert_eq!(magnitude(Dual2_64::new(0.0, -3.0, 4.0)).re, 7.0);
+        let hessian = nalgebra::Matrix2::new(0.0, -5.0, -5.0, 0.0);
+        let mixed = Dual2SVec64::<2>::new(1.0, Derivative::none(), Derivative::some(hessian));
+        assert_eq!(magnitude(mixed).re, 11.0);
+        // beyond the sizes listed, only the value
+        let wide = Dual2SVec64::<5>::new(
+            1.0,
+            Derivative::none(),
+            Derivative::some(nalgebra::SMatrix::repeat(1.0)),
+        );
+        assert_eq!(magnitude(wide).re, 1.0);
     }
 }

@@ -48,13 +48,17 @@ pub fn time<R>(kernels: &[Kernel<'_, R>], rounds: usize, repeat: usize, steps: u
 /// Times the kernels (31 rounds of 200 runs) and prints each one's ns per step and its
 /// ratio to the first kernel, the hand-written loop.
 pub fn print_ratios<R>(kernels: &[Kernel<'_, R>], steps: usize) {
-    const ROUNDS: usize = 31;
-    const REPEAT: usize = 200;
-    let summary = time(kernels, ROUNDS, REPEAT, steps);
-    println!("\ninterleaved, {ROUNDS} rounds x {REPEAT} runs x {steps} steps (ns/step: min, median; ratio to hand-written by min and median):");
+    print_ratios_over(kernels, 31, 200, steps, "hand-written");
+}
+
+/// Times the kernels (`rounds` rounds of `repeat` runs) and prints each one's ns per step
+/// and its ratio to the first kernel, named `first`.
+pub fn print_ratios_over<R>(kernels: &[Kernel<'_, R>], rounds: usize, repeat: usize, steps: usize, first: &str) {
+    let summary = time(kernels, rounds, repeat, steps);
+    println!("\ninterleaved, {rounds} rounds x {repeat} runs x {steps} steps (ns/step: min, median; ratio to {first} by min and median):");
     for ((name, _), (min, median)) in kernels.iter().zip(&summary) {
         println!(
-            "  {name:<16} {min:7.2} {median:7.2}   ratio {:.3} {:.3}",
+            "  {name:<16} {min:9.2} {median:9.2}   ratio {:.3} {:.3}",
             min / summary[0].0,
             median / summary[0].1
         );

@@ -1,7 +1,8 @@
 //! Is this orbit chaotic? The tangent map of the numerical step, and the indicators built on
 //! it: MEGNO and its running mean, the maximal Lyapunov exponent, the fast Lyapunov
 //! indicator; and the derivative of a run's final state with respect to its initial state
-//! or a parameter ([`final_state_derivative`]), for fits.
+//! or a parameter ([`final_state_derivative`]) and its second derivatives
+//! ([`final_state_second_derivative`]), for fits.
 //!
 //! A variation `delta` of the state is carried through the *same discrete steps* as the
 //! orbit: the stepper runs on dual numbers `y + delta eps` (the scalar of the problem is a
@@ -32,9 +33,11 @@
 //! ```
 
 mod indicators;
+mod second_order;
 mod sensitivity;
 mod tangent;
 
 pub use indicators::Indicators;
+pub use second_order::{final_state_second_derivative, SecondOrderFinalState, SecondOrderScalar};
 pub use sensitivity::{final_state_derivative, FinalState};
 pub use tangent::{Measure, Rate, Tangent};

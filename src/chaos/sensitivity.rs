@@ -60,20 +60,44 @@ where
     St: Stepper<P> + ?Sized,
 {
     let zero = Re::<P>::zero();
-    let h_dual = P::Scalar::seeded(h, zero);
+    let y = steps(
+        problem,
+        stepper,
+        P::Scalar::seeded(t0, zero),
+        y0,
+        P::Scalar::seeded(h, zero),
+        n,
+    )?;
+    let parts = |part: fn(P::Scalar) -> Re<P>| y.as_slice().iter().map(|&y| part(y)).collect();
+    Ok(FinalState {
+        state: parts(P::Scalar::real_part),
+        derivative: parts(P::Scalar::dual_part),
+    })
+}
+
+/// `n` steps of size `h` from `(t0, y0)` on any scalar (the derivative parts of `t0` and
+/// `h` zero): the final state, or the first step that left it non-finite.
+pub(super) fn steps<P, St>(
+    problem: &P,
+    stepper: &mut St,
+    t0: P::Scalar,
+    y0: &P::State,
+    h: P::Scalar,
+    n: u64,
+) -> Result<P::State, Error>
+where
+    P: Problem,
+    St: Stepper<P> + ?Sized,
+{
     let (mut y, mut y_new) = (y0.clone(), y0.zeros_like());
     for step in 0..n {
-        let t = t0 + lit::<Re<P>>(step as f64) * h;
-        stepper.step(problem, P::Scalar::seeded(t, zero), h_dual, &y, &mut y_new)?;
+        let t = t0 + lit::<P::Scalar>(step as f64) * h;
+        stepper.step(problem, t, h, &y, &mut y_new)?;
         if !y_new.is_finite() {
             return Err(Error::NonFinite { t: to_f64(t), step });
         }
         stepper.accept();
         core::mem::swap(&mut y, &mut y_new);
     }
-    let parts = |part: fn(P::Scalar) -> Re<P>| y.as_slice().iter().map(|&y| part(y)).collect();
-    Ok(FinalState {
-        state: parts(P::Scalar::real_part),
-        derivative: parts(P::Scalar::dual_part),
-    })
+    Ok(y)
 }

@@ -108,7 +108,12 @@ impl<T: Real> LagrangeCoefficients<T> {
             return dual;
         }
         Self::from_invariants(mu, tau, r0_2, v2, eta0, |orbit, tau, bracket| {
-            solve(orbit, tau, bracket).1
+            let (s, at_root) = solve(orbit, tau, bracket);
+            if carries_values_only::<T>() {
+                at_root
+            } else {
+                twice_corrected(orbit, tau, s)
+            }
         })
     }
 
@@ -186,6 +191,28 @@ fn on_dual_numbers<T: Real>(mu: T, tau: T, r0_2: T, v2: T, eta0: T) -> Option<La
         f_dot: back(c.f_dot)?,
         g_dot_minus_one: back(c.g_dot_minus_one)?,
     })
+}
+
+/// `f64` or `f32`: a scalar without derivative parts.
+#[inline(always)]
+fn carries_values_only<T: Real>() -> bool {
+    use core::any::TypeId;
+    TypeId::of::<T>() == TypeId::of::<f64>() || TypeId::of::<T>() == TypeId::of::<f32>()
+}
+
+/// The Stiefel functions at the root from `s`, the last iterate of [`solve`], on a scalar
+/// with derivative parts (other than [`Dual64`], solved in [`on_dual_numbers`]): the solve
+/// stops when the *value* has converged, the derivative parts of `s` being whatever the
+/// steps that got there made of them. A Newton correction from an iterate with the exact
+/// value makes the first derivative exact but leaves the second wrong by the square of the
+/// first's error (10% of it measured, a quarter period on a circle); a second correction
+/// makes the second exact too (and the first-order step of [`Stiefel::shifted`] is then
+/// exact, the step having no first-derivative part). Second-order dual numbers need both.
+#[inline(always)]
+fn twice_corrected<T: Real>(orbit: &Orbit<T>, tau: T, s: T) -> Stiefel<T> {
+    let [residual, r, ..] = orbit.residual(&Stiefel::at(orbit.beta, s), s, tau);
+    let s = s - residual / r;
+    corrected(orbit, tau, s)
 }
 
 /// The Stiefel functions one Newton correction from `s` (the last step of [`solve`]).

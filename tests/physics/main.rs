@@ -12,6 +12,7 @@ mod kepler_generalized_order;
 mod kepler_split;
 mod magnetic;
 mod relativistic;
+mod second_order;
 mod time_transform;
 
 /// The helpers shared by the library's tests (tests/support/), each compiled once here.
