@@ -82,6 +82,9 @@ pub struct RunSettings {
     pub every: u64,
     /// The Wisdom-Holman split an n-body scene runs in (`split = "kepler-jacobi"`), if any.
     pub split: Option<stormer::models::KeplerCoordinates>,
+    /// The time transformation the scene runs in (`time_transform = "logh"`), if any: `dt`
+    /// is then the step in the fictitious time `s` (docs/close-approaches.md).
+    pub time_transform: Option<stormer::time_transform::Transform>,
 }
 
 /// The units a scene file names (its optional `[units]` table), for the pictures' axis
@@ -153,6 +156,8 @@ struct RunTable {
     every: Option<Spanned<u64>>,
     #[serde(default)]
     split: Option<Spanned<String>>,
+    #[serde(default)]
+    time_transform: Option<Spanned<String>>,
 }
 
 impl RunTable {
@@ -177,6 +182,16 @@ impl RunTable {
                 .as_ref()
                 .map(|s| {
                     stormer::models::KeplerCoordinates::named(s.get_ref()).map_err(|e| {
+                        let reason = e.to_string();
+                        src.error_at(s.span(), format!("run.{}", reason.trim_start_matches("invalid ")))
+                    })
+                })
+                .transpose()?,
+            time_transform: self
+                .time_transform
+                .as_ref()
+                .map(|s| {
+                    stormer::time_transform::Transform::named(s.get_ref()).map_err(|e| {
                         let reason = e.to_string();
                         src.error_at(s.span(), format!("run.{}", reason.trim_start_matches("invalid ")))
                     })
