@@ -261,6 +261,12 @@ impl<'s, S: Scene> SceneRun<'s, S> {
                 ),
             ));
         }
+        if self.save_at.as_ref().is_some_and(|t| t.windows(2).any(|w| !(w[0] < w[1]))) {
+            return Err(Error::invalid(
+                "--save-at",
+                "the output times of a time-transformed run must increase, each after the one before",
+            ));
+        }
         self.driver(1).check_span(self.t0(), self.driver_end())
     }
 
@@ -356,6 +362,17 @@ impl<'s, S: Scene> SceneRun<'s, S> {
             None => {}
         }
         let end = self.driver_end();
+        // an output time at the start: no crossing there, the initial state is the record
+        if let Some(&t0) = times.and_then(|t| t.first()).filter(|&&t| output_events.is_some() && t == self.t0()) {
+            if let Err(e) = tracking.write(t0, &setup.y0, setup.model.energy(setup.run.t0, &setup.y0)) {
+                return Outcome {
+                    stats: Stats::default(),
+                    stopped: None,
+                    error: Some(e),
+                    track: tracking.track,
+                };
+            }
+        }
         let mut result = driver.run_into(
             &setup.model,
             &mut *self.stepper,
@@ -369,7 +386,7 @@ impl<'s, S: Scene> SceneRun<'s, S> {
         if let (Some(&t), Ok((stats, Some(stop)))) = (at_end, &result) {
             if tracking.track.last_t != Some(t) {
                 if let Err(e) = tracking.write(t, &stop.y, setup.model.energy(stop.t, &stop.y)) {
-                    result = Err((stats.clone(), e));
+                    result = Err((*stats, e));
                 }
             }
         }
