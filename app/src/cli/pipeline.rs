@@ -165,6 +165,18 @@ impl<'s, S: Scene> SceneRun<'s, S> {
                  where the orbit comes close; drop --rtol/--atol",
             ));
         }
+        if transformed && method.splitting_source().is_none() {
+            return Err(Error::Unsupported {
+                name: method.name().to_string(),
+                reason: format!(
+                    "a time-transformed scene is stepped by a splitting or composition of the catalog (e.g. \
+                     triple_jump4, yoshida6a: `stormer methods`, family splitting), which keeps the transformed \
+                     problem's structure; {} is of the {} family",
+                    method.name(),
+                    method.info().family
+                ),
+            });
+        }
         let mut stepper = setup.model.stepper(method, &setup.y0, &options.implicit)?;
         if options.compensated {
             // refused here, before an output file is created (the driver turns it on too)
@@ -261,7 +273,11 @@ impl<'s, S: Scene> SceneRun<'s, S> {
                 ),
             ));
         }
-        if self.save_at.as_ref().is_some_and(|t| t.windows(2).any(|w| !(w[0] < w[1]))) {
+        if self
+            .save_at
+            .as_ref()
+            .is_some_and(|t| t.windows(2).any(|w| !(w[0] < w[1])))
+        {
             return Err(Error::invalid(
                 "--save-at",
                 "the output times of a time-transformed run must increase, each after the one before",
@@ -346,7 +362,9 @@ impl<'s, S: Scene> SceneRun<'s, S> {
     {
         let times = self.save_at.as_ref().filter(|_| at_times);
         // the output times of a time-transformed run are events after the section's
-        let output_events = (self.transformed && times.is_some()).then_some(usize::from(self.section.is_some()));
+        let output_events = times
+            .filter(|_| self.transformed)
+            .map(|t| (usize::from(self.section.is_some()), t.as_slice()));
         let mut tracking = Tracking {
             setup: self.setup,
             track: Track::default(),
@@ -363,7 +381,7 @@ impl<'s, S: Scene> SceneRun<'s, S> {
         }
         let end = self.driver_end();
         // an output time at the start: no crossing there, the initial state is the record
-        if let Some(&t0) = times.and_then(|t| t.first()).filter(|&&t| output_events.is_some() && t == self.t0()) {
+        if let Some(&t0) = output_events.and_then(|(_, t)| t.first()).filter(|&&t| t == self.t0()) {
             if let Err(e) = tracking.write(t0, &setup.y0, setup.model.energy(setup.run.t0, &setup.y0)) {
                 return Outcome {
                     stats: Stats::default(),
@@ -382,7 +400,7 @@ impl<'s, S: Scene> SceneRun<'s, S> {
             &mut tracking,
         );
         // an output time at the physical end: the state where the run stopped
-        let at_end = times.and_then(|t| t.last()).filter(|&&t| output_events.is_some() && t == self.t_end);
+        let at_end = output_events.and_then(|(_, t)| t.last()).filter(|&&t| t == self.t_end);
         if let (Some(&t), Ok((stats, Some(stop)))) = (at_end, &result) {
             if tracking.track.last_t != Some(t) {
                 if let Err(e) = tracking.write(t, &stop.y, setup.model.energy(stop.t, &stop.y)) {
@@ -452,10 +470,10 @@ struct Tracking<'a, S: Scene, R: ?Sized> {
     track: Track,
     out: &'a mut R,
     section: Option<&'a Section>,
-    /// The index of the first event that is an output time, when the records are those
-    /// events (`--save-at` on a time-transformed scene); the driver's own records are then
-    /// not written.
-    output_events: Option<usize>,
+    /// The index of the first event that is an output time and the output times, when the
+    /// records are those events (`--save-at` on a time-transformed scene); the driver's own
+    /// records are then not written.
+    output_events: Option<(usize, &'a [f64])>,
 }
 
 impl<S: Scene, R: Recorder<f64, S::State> + ?Sized> Tracking<'_, S, R> {
@@ -498,7 +516,9 @@ impl<S: Scene, R: Recorder<f64, S::State> + ?Sized> Recorder<f64, S::State> for 
     fn event(&mut self, hit: &EventHit<f64, S::State>) -> Result<(), Error> {
         let model = &self.setup.model;
         let t = model.time_of(&hit.y).unwrap_or(hit.t);
-        if self.output_events.is_some_and(|first| hit.index >= first) {
+        if let Some((first, times)) = self.output_events.filter(|&(first, _)| hit.index >= first) {
+            // the time asked for, which the located state's time coordinate is to round-off
+            let t = times.get(hit.index - first).copied().unwrap_or(t);
             return self.write(t, &hit.y, model.energy(hit.t, &hit.y));
         }
         // else the section, the run's only other non-terminal event

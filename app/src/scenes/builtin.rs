@@ -218,7 +218,9 @@ pub fn parse(text: &str, origin: &str, name: &str) -> Result<AnyScene, Error> {
         }
     };
     match scene.run().time_transform {
-        Some(transform) => scene.with_time_transform(transform).map_err(|e| src.error(e.to_string())),
+        Some(transform) => scene
+            .with_time_transform(transform)
+            .map_err(|e| src.error(e.to_string())),
         None => Ok(scene),
     }
 }

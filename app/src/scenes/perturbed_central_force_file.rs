@@ -62,8 +62,16 @@ mod tests {
                     q = [1.99, 0.0]\np = [0.0, 0.07]\n[run]\nmethod = \"rk4\"\ndt = 0.01\nt_end = 1.0\n";
         let cases = [
             ("mu = 1.0", "mu = 0.0", "line 3: parameters.mu must be > 0"),
-            ("epsilon = 1e-7", "epsilon = nan", "line 4: parameters.epsilon must be a finite number"),
-            ("q = [1.99, 0.0]", "q = [0.0, 0.0]", "line 6: initial.q is the centre itself"),
+            (
+                "epsilon = 1e-7",
+                "epsilon = nan",
+                "line 4: parameters.epsilon must be a finite number",
+            ),
+            (
+                "q = [1.99, 0.0]",
+                "q = [0.0, 0.0]",
+                "line 6: initial.q is the centre itself",
+            ),
         ];
         bad_line::assert_bad_replacements(good, "p.toml", &cases);
     }

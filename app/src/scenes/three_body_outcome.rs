@@ -32,7 +32,10 @@ pub struct Escape {
 fn body(masses: &[f64], dim: usize, y: &[f64], k: usize) -> (Vec<f64>, Vec<f64>) {
     let n = masses.len() * dim;
     let q = y[k * dim..(k + 1) * dim].to_vec();
-    let v = y[n + k * dim..n + (k + 1) * dim].iter().map(|p| p / masses[k]).collect();
+    let v = y[n + k * dim..n + (k + 1) * dim]
+        .iter()
+        .map(|p| p / masses[k])
+        .collect();
     (q, v)
 }
 
@@ -91,11 +94,10 @@ pub fn escape(masses: &[f64], g: f64, dim: usize, t: f64, y: &[f64]) -> Option<E
         let (i, j) = ((k + 1) % 3, (k + 2) % 3);
         let (i, j) = (i.min(j), i.max(j));
         let (mi, mj) = (masses[i], masses[j]);
-        let centre = |x: &[f64], z: &[f64]| -> Vec<f64> { x.iter().zip(z).map(|(a, b)| (mi * a + mj * b) / (mi + mj)).collect() };
-        let binary_centre = (
-            centre(&bodies[i].0, &bodies[j].0),
-            centre(&bodies[i].1, &bodies[j].1),
-        );
+        let centre = |x: &[f64], z: &[f64]| -> Vec<f64> {
+            x.iter().zip(z).map(|(a, b)| (mi * a + mj * b) / (mi + mj)).collect()
+        };
+        let binary_centre = (centre(&bodies[i].0, &bodies[j].0), centre(&bodies[i].1, &bodies[j].1));
         let (r, v) = relative(&binary_centre, &bodies[k]);
         let mu = g * (masses[k] + mi + mj);
         let (energy, h2, rv) = two_body(mu, &r, &v);
