@@ -252,7 +252,7 @@ impl<'s, S: Scene> SceneRun<'s, S> {
     /// with `s`, so the end must come after the start, and the output times between them.
     fn check_physical_span(&self) -> Result<(), Error> {
         let (t0, t_end) = (self.t0(), self.t_end);
-        if !(t_end > t0) {
+        if t_end.partial_cmp(&t0) != Some(core::cmp::Ordering::Greater) {
             return Err(Error::invalid(
                 "time span",
                 format!(
@@ -273,11 +273,10 @@ impl<'s, S: Scene> SceneRun<'s, S> {
                 ),
             ));
         }
-        if self
-            .save_at
-            .as_ref()
-            .is_some_and(|t| t.windows(2).any(|w| !(w[0] < w[1])))
-        {
+        if self.save_at.as_ref().is_some_and(|t| {
+            t.windows(2)
+                .any(|w| w[0].partial_cmp(&w[1]) != Some(core::cmp::Ordering::Less))
+        }) {
             return Err(Error::invalid(
                 "--save-at",
                 "the output times of a time-transformed run must increase, each after the one before",
@@ -356,6 +355,7 @@ impl<'s, S: Scene> SceneRun<'s, S> {
 
     /// Runs recording every `every` steps, or at the output times when `at_times` and the
     /// run has them.
+    #[allow(clippy::float_cmp)] // an output time at the start or the end is that time exactly
     fn run_recording<R>(&mut self, every: u64, at_times: bool, out: &mut R) -> Outcome<S>
     where
         R: Recorder<f64, S::State> + ?Sized,
@@ -515,7 +515,8 @@ impl<S: Scene, R: Recorder<f64, S::State> + ?Sized> Recorder<f64, S::State> for 
 
     fn event(&mut self, hit: &EventHit<f64, S::State>) -> Result<(), Error> {
         let model = &self.setup.model;
-        let t = model.time_of(&hit.y).unwrap_or(hit.t);
+        let clock = model.time_of(&hit.y);
+        let t = clock.unwrap_or(hit.t);
         if let Some((first, times)) = self.output_events.filter(|&(first, _)| hit.index >= first) {
             // the time asked for, which the located state's time coordinate is to round-off
             let t = times.get(hit.index - first).copied().unwrap_or(t);
@@ -525,7 +526,7 @@ impl<S: Scene, R: Recorder<f64, S::State> + ?Sized> Recorder<f64, S::State> for 
         let y = model.scene_state(&hit.y);
         if self.section.is_some_and(|s| s.admits(y.as_slice())) {
             match y {
-                Cow::Borrowed(_) if t == hit.t => self.out.event(hit)?,
+                Cow::Borrowed(_) if clock.is_none() => self.out.event(hit)?,
                 y => self.out.event(&EventHit {
                     index: hit.index,
                     t,

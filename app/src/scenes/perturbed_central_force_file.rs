@@ -42,6 +42,7 @@ impl Scene for PerturbedCentralForce<f64, DVector<f64>> {
 }
 
 #[cfg(test)]
+#[allow(clippy::float_cmp)] // values read from a file are compared exactly
 mod tests {
     use crate::scenes::{bad_line, load, AnyScene};
 

@@ -3,6 +3,8 @@
 //! physical time, the eccentric orbit's energy kept without drift, the Pythagorean
 //! problem's outcome, and the refusals, one line each with no file left behind.
 
+#![allow(clippy::float_cmp)] // output times are the times asked for, compared exactly
+
 use crate::support::binary;
 use binary::{assert_error, csv_rows, stderr, stormer, stormer_ok, summary_number, workdir};
 use std::f64::consts::TAU;
