@@ -48,7 +48,10 @@ mod tests {
 
     #[test]
     fn the_perturbed_scene_is_e_099_with_a_small_inverse_cube_term() {
-        let AnyScene::PerturbedCentralForce(s) = load("kepler-e099-perturbed").unwrap() else {
+        let scene = load("kepler-e099-perturbed").unwrap();
+        // its file runs it in the logarithmic Hamiltonian
+        assert_eq!(scene.time_transform(), Some(stormer::time_transform::Transform::LogH));
+        let AnyScene::PerturbedCentralForce(s) = scene.without_time_transform() else {
             panic!("model")
         };
         assert_eq!(s.model.mu, 1.0);
