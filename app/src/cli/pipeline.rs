@@ -160,9 +160,9 @@ impl<'s, S: Scene> SceneRun<'s, S> {
         let transformed = setup.model.time_of(&setup.y0).is_some();
         if transformed && matches!(options.steps, Steps::Adaptive { .. }) {
             return Err(Error::invalid(
-                "--rtol/--atol",
+                "adaptive steps",
                 "a time-transformed run takes fixed steps of its fictitious time s (--dt), which already shrink \
-                 where the orbit comes close; drop --rtol/--atol",
+                 where the orbit comes close; no tolerances (--rtol/--atol, --tolerances)",
             ));
         }
         if transformed && method.splitting_source().is_none() {

@@ -197,7 +197,7 @@ fn the_pythagorean_problem_ends_with_m3_escaping() {
 #[test]
 fn time_transform_refusals_are_one_line_and_leave_no_file() {
     let dir = workdir("time_transform", "refusals");
-    let cases: [(&[&str], &str); 10] = [
+    let cases: [(&[&str], &str); 11] = [
         (
             &["run", "damped-oscillator", "--time-transform", "logh"],
             "damped-oscillator",
@@ -224,6 +224,7 @@ fn time_transform_refusals_are_one_line_and_leave_no_file() {
         (&["run", "pythagorean", "--compensated"], "compensated"),
         (&["run", "kepler-e099", "--t-end", "-1"], "must come after"),
         (&["run", "kepler-e099", "--save-at", "0,2,1"], "must increase"),
+        (&["run", "pythagorean", "--indicator", "megno"], "--time-transform none"),
     ];
     for (args, needle) in cases {
         let out = stormer(&dir, &[args, &["-o", "refused.csv"]].concat());
