@@ -152,3 +152,74 @@ pub(super) fn sentence(model: &NBody<f64, nalgebra::DVector<f64>>, t: f64, y: &[
         ),
     })
 }
+
+#[cfg(test)]
+#[allow(clippy::float_cmp)] // the anomalies are chosen, compared exactly
+mod tests {
+    use super::escape;
+
+    /// The escaper on a hyperbola of `a = 2`, `e = 1.5` about the centre of mass of a tight
+    /// pair at rest there, at hyperbolic anomaly `f`, the run's time `t`: the state a body of
+    /// unit mass has there, with the pair's unit masses 0.01 apart (their own orbit circular).
+    fn state(f: f64, t: f64) -> (Vec<f64>, f64) {
+        let (a, e, mu) = (2.0f64, 1.5f64, 3.0f64);
+        let n = (mu / (a * a * a)).sqrt();
+        let r = a * (e * f.cosh() - 1.0);
+        let (x, y) = (a * (e - f.cosh()), a * (e * e - 1.0).sqrt() * f.sinh());
+        let (vx, vy) = (
+            -n * a * a / r * f.sinh(),
+            n * a * a / r * (e * e - 1.0).sqrt() * f.cosh(),
+        );
+        // the third body's momentum is balanced by the pair's, so the centre of mass of all
+        // three is at rest, and the pair's centre moves by -1/2 of the third's motion
+        let (cx, cy, cvx, cvy) = (-x / 3.0, -y / 3.0, -vx / 3.0, -vy / 3.0);
+        let (px, py) = (x + cx, y + cy);
+        let v = (2.0f64 / 0.01).sqrt() / 2.0; // circular pair: v_rel^2 = G (m1 + m2) / d
+        let y = vec![
+            cx - 0.005,
+            cy,
+            cx + 0.005,
+            cy,
+            px,
+            py,
+            cvx,
+            cvy - v,
+            cvx,
+            cvy + v,
+            vx + cvx,
+            vy + cvy,
+        ];
+        (y, t - (e * f.sinh() - f) / n)
+    }
+
+    #[test]
+    fn the_escape_time_is_the_pericentre_of_the_escapers_hyperbola() {
+        for f in [0.0, 0.5, 2.0, 4.0] {
+            let (y, pericentre) = state(f, 10.0);
+            let found = escape(&[1.0, 1.0, 1.0], 1.0, 2, 10.0, &y);
+            if f == 0.0 {
+                // at the pericentre itself it does not recede yet: r . v = 0
+                assert!(found.is_none() || (found.unwrap().decided_at - 10.0).abs() < 1e-12);
+                continue;
+            }
+            let e = found.unwrap_or_else(|| panic!("F = {f}: no escape found"));
+            assert_eq!((e.escaper, e.binary), (2, (0, 1)));
+            assert!(
+                (e.decided_at - pericentre).abs() < 1e-9 * pericentre.abs().max(1.0),
+                "F = {f}: {} vs {pericentre}",
+                e.decided_at
+            );
+            assert!((e.a - 0.01).abs() < 1e-12 && e.e < 1e-6, "{} {}", e.a, e.e);
+        }
+    }
+
+    #[test]
+    fn no_escape_when_every_body_is_bound() {
+        // the pair with a third body at rest 10 away: bound
+        let y = [0.0, 0.0, 1.0, 0.0, 10.0, 0.0, 0.0, -0.7, 0.0, 0.7, 0.0, 0.0];
+        assert!(escape(&[1.0, 1.0, 1.0], 1.0, 2, 0.0, &y).is_none());
+        // not three bodies, or a state of the wrong length
+        assert!(escape(&[1.0, 1.0], 1.0, 2, 0.0, &y[..8]).is_none());
+        assert!(escape(&[1.0, 1.0, 1.0], 1.0, 2, 0.0, &y[..10]).is_none());
+    }
+}
