@@ -104,10 +104,10 @@ def main():
     lines = [
         f"Pythagorean problem to t = 70 (load {open('/proc/loadavg').read().split()[:3]}), best of {args.rounds}:",
         f"REBOUND {rebound.__version__} IAS15 eps {args.epsilon:g}: {theirs[0]*1e3:.1f} ms, {theirs[3]} steps, "
-        f"|dE/E0| {theirs[2]:.1e}; {r['escaper']} escapes, binary {r['binary']} a = {r['a']:.6f}, "
+        f"|dE/E0| at t = 70 {theirs[2]:.1e}; {r['escaper']} escapes, binary {r['binary']} a = {r['a']:.6f}, "
         f"e = {r['e']:.6f}, escape decided at t = {r['decided']:.5f}",
         f"stormer TTL {args.method} dt {args.dt:g} in s: {ours[0]*1e3:.1f} ms (whole command), {ours[3]} steps, "
-        f"max |dE/E0| {ours[2]:.1e}; {s['escaper']} escapes, binary {s['binary']} a = {s['a']:.6f}, "
+        f"max |dE/E0| over the records {ours[2]:.1e}; {s['escaper']} escapes, binary {s['binary']} a = {s['a']:.6f}, "
         f"e = {s['e']:.6f}, escape decided at t = {s['decided']:.5f}",
         f"  command: {ours[4]}",
         f"agreement: same escaper {r['escaper'] == s['escaper']}, a {abs(s['a'] / r['a'] - 1):.1e}, "
