@@ -173,10 +173,11 @@ pub fn run(args: &RunArgs) -> anyhow::Result<()> {
     // counted and refused before the scene is read, when there are too many
     let save_at = args.save_at.as_deref().map(super::save_at::parse).transpose()?;
     let mut scene = scenes::load(&args.scene)?;
-    // the file's transformation is replaced by the option's; the split is chosen on the
-    // physical scene
+    // the file's transformation is replaced by the option's, or dropped for a split or a
+    // corrector asked for; the split is chosen on the physical scene
     let transform = match args.time_transform {
         Some(arg) => arg.transform(),
+        None if args.split.as_deref().is_some_and(|s| s != "none") || args.corrector.is_some() => None,
         None => scene.time_transform(),
     };
     if let Some(t) = transform {

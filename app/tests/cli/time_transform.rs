@@ -197,7 +197,7 @@ fn the_pythagorean_problem_ends_with_m3_escaping() {
 #[test]
 fn time_transform_refusals_are_one_line_and_leave_no_file() {
     let dir = workdir("time_transform", "refusals");
-    let cases: [(&[&str], &str); 11] = [
+    let cases: [(&[&str], &str); 12] = [
         (
             &["run", "damped-oscillator", "--time-transform", "logh"],
             "damped-oscillator",
@@ -225,6 +225,8 @@ fn time_transform_refusals_are_one_line_and_leave_no_file() {
         (&["run", "kepler-e099", "--t-end", "-1"], "must come after"),
         (&["run", "kepler-e099", "--save-at", "0,2,1"], "must increase"),
         (&["run", "pythagorean", "--indicator", "megno"], "--time-transform none"),
+        // a split asked for replaces the file's transformation: the split's own refusal
+        (&["run", "pythagorean", "--split", "kepler-jacobi"], "no body dominates"),
     ];
     for (args, needle) in cases {
         let out = stormer(&dir, &[args, &["-o", "refused.csv"]].concat());
