@@ -6,6 +6,8 @@
 #                                           # the options after it are whfast_step.py's)
 #   bash benches/peers/run.sh nbody         # REBOUND vs stormer on 10 to 3000 bodies (nbody.py)
 #   bash benches/peers/run.sh nbody --sizes 1000 --rounds 5
+#   bash benches/peers/run.sh pythagorean   # REBOUND IAS15 vs stormer's TTL on Burrau's problem
+#                                           # (pythagorean.py; --method, --dt, --rounds)
 # Installs what it needs: a virtual environment under target/peers/venv with REBOUND
 # (PyPI package `rebound`), or the one named by $PEERS_VENV; our side is
 # `app/examples/outer_solar_front.rs` (release build).
@@ -25,6 +27,11 @@ if [ "${1:-}" = nbody ]; then
     shift
     cargo build --release --example nbody_timing --features parallel
     exec "$venv/bin/python" benches/peers/nbody.py "$@"
+fi
+if [ "${1:-}" = pythagorean ]; then
+    shift
+    cargo build --release -p stormer-app
+    exec "$venv/bin/python" benches/peers/pythagorean.py "$@"
 fi
 cargo build --release -p stormer-app --example outer_solar_front
 if [ "${1:-}" = "--whfast-step" ]; then

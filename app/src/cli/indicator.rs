@@ -121,6 +121,13 @@ pub fn follow<S: Scene>(
     t_end: f64,
 ) -> Result<Vec<ChaosSample>, Error> {
     let refuse = |reason: String| Err(Error::invalid("--indicator", reason));
+    if setup.model.time_of(&setup.y0).is_some() {
+        return refuse(
+            "the indicators follow a variation through fixed steps of the time t, and this scene runs in a time \
+             transformation (steps of s); add --time-transform none"
+                .into(),
+        );
+    }
     let h = match options.steps {
         Steps::Fixed(dt) => dt.unwrap_or(setup.run.dt),
         Steps::Adaptive { .. } => {

@@ -4,6 +4,12 @@
 //! steps, the cancel flag, and what the records tell (energy drift, deviation from the
 //! exact solution, the last state). `run`, `compare`, `scan` (their jobs and reference)
 //! and `tour` all run scenes through [`SceneRun`], so they stop and measure alike.
+//!
+//! A time-transformed scene ([`Scene::time_of`]) steps in a fictitious time `s`: its run
+//! ends where the physical time reaches the end (`stormer::time_transform::
+//! stop_at_physical_time`, the span in `s` only a bound: the step limit), its output times
+//! are events on the physical time (`at_physical_times`), and every record, crossing and
+//! output is at the physical time.
 
 use super::section::Section;
 use std::borrow::Cow;
@@ -11,6 +17,7 @@ use std::sync::atomic::AtomicBool;
 use stormer::driver::{Crossing, EventHit, Stats, StepControl};
 use stormer::driver::{Recorder, StopEvent};
 use stormer::stepper::{ImplicitOptions, Tolerances};
+use stormer::time_transform::{at_physical_times, stop_at_physical_time};
 use stormer::{Driver, Error, Method, State, Stepper};
 use stormer_app::scenes::{Scene, Setup};
 
@@ -84,7 +91,13 @@ pub struct SceneRun<'s, S: Scene> {
     max_steps: Option<u64>,
     compensated: bool,
     cancel: Option<&'static AtomicBool>,
+    /// The scene steps in a fictitious time, its physical time a coordinate
+    /// ([`Scene::time_of`]).
+    transformed: bool,
 }
+
+/// The driver's own step limit, when `--max-steps` does not give one.
+const DEFAULT_MAX_STEPS: u64 = 100_000_000;
 
 /// How a run ended and what its records told.
 #[derive(Debug)]
@@ -144,6 +157,26 @@ pub fn max_difference(a: &[f64], b: &[f64]) -> f64 {
 impl<'s, S: Scene> SceneRun<'s, S> {
     /// Builds `method`'s stepper on the scene and the run's settings from `options`.
     pub fn new(setup: &'s Setup<S>, method: &Method, options: &Options) -> Result<Self, Error> {
+        let transformed = setup.model.time_of(&setup.y0).is_some();
+        if transformed && matches!(options.steps, Steps::Adaptive { .. }) {
+            return Err(Error::invalid(
+                "adaptive steps",
+                "a time-transformed run takes fixed steps of its fictitious time s (--dt), which already shrink \
+                 where the orbit comes close; no tolerances (--rtol/--atol, --tolerances)",
+            ));
+        }
+        if transformed && method.splitting_source().is_none() {
+            return Err(Error::Unsupported {
+                name: method.name().to_string(),
+                reason: format!(
+                    "a time-transformed scene is stepped by a splitting or composition of the catalog (e.g. \
+                     triple_jump4, yoshida6a: `stormer methods`, family splitting), which keeps the transformed \
+                     problem's structure; {} is of the {} family",
+                    method.name(),
+                    method.info().family
+                ),
+            });
+        }
         let mut stepper = setup.model.stepper(method, &setup.y0, &options.implicit)?;
         if options.compensated {
             // refused here, before an output file is created (the driver turns it on too)
@@ -172,6 +205,7 @@ impl<'s, S: Scene> SceneRun<'s, S> {
             max_steps: options.max_steps,
             compensated: options.compensated,
             cancel: options.cancel,
+            transformed,
         })
     }
 
@@ -190,14 +224,65 @@ impl<'s, S: Scene> SceneRun<'s, S> {
         self.t_end
     }
 
+    /// Where the driver's independent variable ends: `t_end`, or for a time-transformed
+    /// scene the bound on `s` that the step limit allows (the physical end stops the run).
+    fn driver_end(&self) -> f64 {
+        match self.control {
+            StepControl::Fixed(h) if self.transformed => {
+                self.t0() + h.abs() * self.max_steps.unwrap_or(DEFAULT_MAX_STEPS) as f64
+            }
+            _ => self.t_end,
+        }
+    }
+
     /// Refuses a run that would compute nothing (an empty span, a step longer than the
     /// span), before the caller creates its outputs.
     pub fn check_span(&self) -> Result<(), Error> {
+        if self.transformed {
+            return self.check_physical_span();
+        }
         let mut driver = self.driver(1);
         if let Some(times) = &self.save_at {
             driver = driver.save_at(times.iter().copied());
         }
         driver.check_span(self.t0(), self.t_end)
+    }
+
+    /// [`SceneRun::check_span`] of a time-transformed scene: the physical time only grows
+    /// with `s`, so the end must come after the start, and the output times between them.
+    fn check_physical_span(&self) -> Result<(), Error> {
+        let (t0, t_end) = (self.t0(), self.t_end);
+        if t_end.partial_cmp(&t0) != Some(core::cmp::Ordering::Greater) {
+            return Err(Error::invalid(
+                "time span",
+                format!(
+                    "a time-transformed run goes forward in time from t0 = {}: the end time ({}) must come after it",
+                    stormer::text::number(t0),
+                    stormer::text::number(t_end)
+                ),
+            ));
+        }
+        if let Some(t) = self.save_at.iter().flatten().find(|&&t| !(t0..=t_end).contains(&t)) {
+            return Err(Error::invalid(
+                "--save-at",
+                format!(
+                    "{} is outside the run [{}, {}]",
+                    stormer::text::number(*t),
+                    stormer::text::number(t0),
+                    stormer::text::number(t_end)
+                ),
+            ));
+        }
+        if self.save_at.as_ref().is_some_and(|t| {
+            t.windows(2)
+                .any(|w| w[0].partial_cmp(&w[1]) != Some(core::cmp::Ordering::Less))
+        }) {
+            return Err(Error::invalid(
+                "--save-at",
+                "the output times of a time-transformed run must increase, each after the one before",
+            ));
+        }
+        self.driver(1).check_span(self.t0(), self.driver_end())
     }
 
     /// The most records the run can make, when it is known before it starts: its output
@@ -208,6 +293,8 @@ impl<'s, S: Scene> SceneRun<'s, S> {
             return Some(times.len() as f64);
         }
         match self.control {
+            // the steps of s to the physical end are not known before the run
+            StepControl::Fixed(_) if self.transformed => None,
             StepControl::Fixed(h) => {
                 let steps = ((self.t_end - self.t0()) / h).abs().ceil();
                 Some((steps / self.every as f64).floor() + 2.0)
@@ -238,6 +325,9 @@ impl<'s, S: Scene> SceneRun<'s, S> {
             let g = move |t, y: &S::State| g(t, model.scene_state(y).as_slice());
             driver = driver.event(g, Crossing::Either, false);
         }
+        if self.transformed {
+            driver = stop_at_physical_time(driver, self.t_end);
+        }
         if self.compensated {
             driver = driver.compensated();
         }
@@ -265,30 +355,72 @@ impl<'s, S: Scene> SceneRun<'s, S> {
 
     /// Runs recording every `every` steps, or at the output times when `at_times` and the
     /// run has them.
+    #[allow(clippy::float_cmp)] // an output time at the start or the end is that time exactly
     fn run_recording<R>(&mut self, every: u64, at_times: bool, out: &mut R) -> Outcome<S>
     where
         R: Recorder<f64, S::State> + ?Sized,
     {
+        let times = self.save_at.as_ref().filter(|_| at_times);
+        // the output times of a time-transformed run are events after the section's
+        let output_events = times
+            .filter(|_| self.transformed)
+            .map(|t| (usize::from(self.section.is_some()), t.as_slice()));
         let mut tracking = Tracking {
             setup: self.setup,
             track: Track::default(),
             out,
             section: self.section.as_ref(),
+            output_events,
         };
-        let (mut driver, setup) = (self.driver(every), self.setup);
-        if let Some(times) = self.save_at.as_ref().filter(|_| at_times) {
-            driver = driver.save_at(times.iter().copied());
+        let setup = self.setup;
+        let mut driver = self.driver(if output_events.is_some() { u64::MAX } else { every });
+        match times {
+            Some(times) if self.transformed => driver = at_physical_times(driver, times),
+            Some(times) => driver = driver.save_at(times.iter().copied()),
+            None => {}
         }
-        let result = driver.run_into(
+        let end = self.driver_end();
+        // an output time at the start: no crossing there, the initial state is the record
+        if let Some(&t0) = output_events.and_then(|(_, t)| t.first()).filter(|&&t| t == self.t0()) {
+            if let Err(e) = tracking.write(t0, &setup.y0, setup.model.energy(setup.run.t0, &setup.y0)) {
+                return Outcome {
+                    stats: Stats::default(),
+                    stopped: None,
+                    error: Some(e),
+                    track: tracking.track,
+                };
+            }
+        }
+        let mut result = driver.run_into(
             &setup.model,
             &mut *self.stepper,
             setup.run.t0,
             &setup.y0,
-            self.t_end,
+            end,
             &mut tracking,
         );
+        // an output time at the physical end: the state where the run stopped
+        let at_end = output_events.and_then(|(_, t)| t.last()).filter(|&&t| t == self.t_end);
+        if let (Some(&t), Ok((stats, Some(stop)))) = (at_end, &result) {
+            if tracking.track.last_t != Some(t) {
+                if let Err(e) = tracking.write(t, &stop.y, setup.model.energy(stop.t, &stop.y)) {
+                    result = Err((*stats, e));
+                }
+            }
+        }
         let track = tracking.track;
         match result {
+            // a time-transformed run that did not reach its physical end: the step limit
+            Ok((stats, None)) if self.transformed => Outcome {
+                error: Some(Error::TooManySteps {
+                    t: track.last_t.unwrap_or(self.t0()),
+                    steps: stats.steps,
+                    needed: None,
+                }),
+                stats,
+                stopped: None,
+                track,
+            },
             Ok((stats, stopped)) => Outcome {
                 stats,
                 stopped,
@@ -307,6 +439,14 @@ impl<'s, S: Scene> SceneRun<'s, S> {
     /// The scene's sentence about its stop condition: where it ended the run ("the ball
     /// lands at ..."), or that it did not before the end; `None` for a scene without one.
     pub fn stop_sentence(&self, stopped: Option<&StopEvent<f64, S::State>>) -> Option<String> {
+        if self.transformed {
+            let event = stopped?;
+            return Some(format!(
+                "t = {} reached at s = {}",
+                stormer::text::number(self.t_end),
+                stormer::text::number(event.t)
+            ));
+        }
         let stop = self.setup.stop()?;
         Some(match stopped {
             Some(event) => (stop.report)(&self.setup.model, event.t, &event.y),
@@ -323,16 +463,22 @@ impl<'s, S: Scene> SceneRun<'s, S> {
 }
 
 /// Keeps the [`Track`] of the records on their way to `out`, and passes on the crossings
-/// of the run's Poincare section that lie on its side.
+/// of the run's Poincare section that lie on its side. Times are the scene's
+/// ([`Scene::time_of`] for a time-transformed scene).
 struct Tracking<'a, S: Scene, R: ?Sized> {
     setup: &'a Setup<S>,
     track: Track,
     out: &'a mut R,
     section: Option<&'a Section>,
+    /// The index of the first event that is an output time and the output times, when the
+    /// records are those events (`--save-at` on a time-transformed scene); the driver's own
+    /// records are then not written.
+    output_events: Option<(usize, &'a [f64])>,
 }
 
-impl<S: Scene, R: Recorder<f64, S::State> + ?Sized> Recorder<f64, S::State> for Tracking<'_, S, R> {
-    fn record(&mut self, t: f64, y: &S::State, energy: Option<f64>) -> Result<(), Error> {
+impl<S: Scene, R: Recorder<f64, S::State> + ?Sized> Tracking<'_, S, R> {
+    /// Records `y` at the scene's time `t`.
+    fn write(&mut self, t: f64, y: &S::State, energy: Option<f64>) -> Result<(), Error> {
         // in the scene's coordinates from here on
         let y = &*self.setup.model.scene_state(y);
         self.out.record(t, y, energy)?;
@@ -356,17 +502,35 @@ impl<S: Scene, R: Recorder<f64, S::State> + ?Sized> Recorder<f64, S::State> for 
         track.records += 1;
         Ok(())
     }
+}
+
+impl<S: Scene, R: Recorder<f64, S::State> + ?Sized> Recorder<f64, S::State> for Tracking<'_, S, R> {
+    fn record(&mut self, t: f64, y: &S::State, energy: Option<f64>) -> Result<(), Error> {
+        if self.output_events.is_some() {
+            return Ok(());
+        }
+        let t = self.setup.model.time_of(y).unwrap_or(t);
+        self.write(t, y, energy)
+    }
 
     fn event(&mut self, hit: &EventHit<f64, S::State>) -> Result<(), Error> {
-        // the section is the run's only non-terminal event
-        let y = self.setup.model.scene_state(&hit.y);
+        let model = &self.setup.model;
+        let clock = model.time_of(&hit.y);
+        let t = clock.unwrap_or(hit.t);
+        if let Some((first, times)) = self.output_events.filter(|&(first, _)| hit.index >= first) {
+            // the time asked for, which the located state's time coordinate is to round-off
+            let t = times.get(hit.index - first).copied().unwrap_or(t);
+            return self.write(t, &hit.y, model.energy(hit.t, &hit.y));
+        }
+        // else the section, the run's only other non-terminal event
+        let y = model.scene_state(&hit.y);
         if self.section.is_some_and(|s| s.admits(y.as_slice())) {
             match y {
-                Cow::Borrowed(_) => self.out.event(hit)?,
-                Cow::Owned(y) => self.out.event(&EventHit {
+                Cow::Borrowed(_) if clock.is_none() => self.out.event(hit)?,
+                y => self.out.event(&EventHit {
                     index: hit.index,
-                    t: hit.t,
-                    y,
+                    t,
+                    y: y.into_owned(),
                 })?,
             }
         }

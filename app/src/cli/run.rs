@@ -12,6 +12,7 @@ use stormer::driver::Stats;
 use stormer::models::KeplerCoordinates;
 use stormer::stepper::{ImplicitOptions, Tolerances};
 use stormer::text::number;
+use stormer::time_transform::Transform;
 use stormer::Error;
 use stormer_app::scenes::{self, Scene, SceneVisitor, Setup};
 
@@ -85,6 +86,39 @@ pub struct RunArgs {
     /// (docs/chaos.md).
     #[arg(long, value_enum)]
     pub indicator: Option<super::indicator::IndicatorArg>,
+    /// Run the scene in a time transformation (docs/close-approaches.md): its model wrapped
+    /// in the extended phase space and stepped by --method (any splitting or composition)
+    /// in a fictitious time s, so that the steps shrink where the orbit comes close. --dt is
+    /// then the step in s, not in t; the CSV, --save-at, sections, the energy and the end
+    /// are in physical time t. For central-force, perturbed-central-force and n-body scenes
+    /// (unsplit) at fixed steps; none: untransformed, whatever the scene's file says
+    /// [default: the scene's `time_transform`, else none].
+    #[arg(long, value_enum, value_name = "TRANSFORM")]
+    pub time_transform: Option<TimeTransformArg>,
+}
+
+/// `--time-transform`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum TimeTransformArg {
+    /// The logarithmic Hamiltonian (Mikkola & Tanikawa 1999): symplectic, follows a Kepler
+    /// orbit of any eccentricity exactly (one body about a centre, or a pair).
+    Logh,
+    /// The time-transformed leapfrog (Mikkola & Aarseth 2002): time-reversible, for N bodies
+    /// whose close approaches change partners.
+    Ttl,
+    /// No transformation.
+    None,
+}
+
+impl TimeTransformArg {
+    /// The library's transformation, `None` for `none`.
+    fn transform(self) -> Option<Transform> {
+        match self {
+            TimeTransformArg::Logh => Some(Transform::LogH),
+            TimeTransformArg::Ttl => Some(Transform::Ttl),
+            TimeTransformArg::None => None,
+        }
+    }
 }
 
 /// `--solver`.
@@ -139,6 +173,29 @@ pub fn run(args: &RunArgs) -> anyhow::Result<()> {
     // counted and refused before the scene is read, when there are too many
     let save_at = args.save_at.as_deref().map(super::save_at::parse).transpose()?;
     let mut scene = scenes::load(&args.scene)?;
+    // the file's transformation is replaced by the option's, or dropped for a split or a
+    // corrector asked for; the split is chosen on the physical scene
+    let transform = match args.time_transform {
+        Some(arg) => arg.transform(),
+        None if args.split.as_deref().is_some_and(|s| s != "none") || args.corrector.is_some() => None,
+        None => scene.time_transform(),
+    };
+    if let Some(t) = transform {
+        if args.rtol.is_some() || args.atol.is_some() {
+            return Err(Error::invalid(
+                "--rtol/--atol",
+                format!(
+                    "the time transformation {} takes fixed steps of the fictitious time s (--dt), which already \
+                     shrink where the orbit comes close; drop --rtol/--atol",
+                    t.name()
+                ),
+            )
+            .into());
+        }
+    }
+    if args.split.is_some() || args.corrector.is_some() {
+        scene = scene.without_time_transform();
+    }
     match args.split.as_deref() {
         Some("none") => scene = scene.without_split(),
         Some(split) => scene = scene.with_split(KeplerCoordinates::named(split)?)?,
@@ -159,7 +216,16 @@ pub fn run(args: &RunArgs) -> anyhow::Result<()> {
         let dt = args.overrides.dt.unwrap_or(scene.run().dt);
         scene = scene.with_corrector(order, &method, dt)?;
     }
-    scene.visit(Runner { args, save_at })
+    scene = match transform {
+        Some(t) if scene.time_transform() != Some(t) => scene.with_time_transform(t)?,
+        Some(_) => scene,
+        None => scene.without_time_transform(),
+    };
+    scene.visit(Runner {
+        args,
+        save_at,
+        transform,
+    })
 }
 
 /// The run, generic over the scene's model.
@@ -167,6 +233,8 @@ struct Runner<'a> {
     args: &'a RunArgs,
     /// The times of `--save-at`, parsed.
     save_at: Option<Vec<f64>>,
+    /// The time transformation the scene runs in.
+    transform: Option<Transform>,
 }
 
 impl Runner<'_> {
@@ -335,6 +403,13 @@ impl SceneVisitor for Runner<'_> {
         section_flushed?;
         let summary = summary(
             &match (setup.run.split, args.corrector) {
+                _ if self.transform.is_some() => format!(
+                    "{} on {} (time transform {}; steps of dt = {} in the fictitious time s, outputs in time t)",
+                    method.name(),
+                    setup.name,
+                    self.transform.map_or("", Transform::name),
+                    number(args.overrides.dt.unwrap_or(setup.run.dt))
+                ),
                 (Some(split), Some(k)) => format!(
                     "{} on {} ({split}, corrector {k})",
                     method.name(),
@@ -352,6 +427,9 @@ impl SceneVisitor for Runner<'_> {
         );
         // The summary is information, not output: a closed stderr is not an error.
         let _ = writeln!(std::io::stderr(), "{summary}");
+        if let Some(outcome) = track.last_t.and_then(|t| setup.model.outcome(t, &track.last)) {
+            let _ = writeln!(std::io::stderr(), "{outcome}");
+        }
         if let (Some(indicator), Some(samples), Some(path)) = (args.indicator, &chaos, &indicator_path) {
             // a run its stop condition ended (a body escaped) keeps the samples up to there
             let until = outcome.stopped.as_ref().map_or(f64::INFINITY, |event| event.t);

@@ -7,7 +7,7 @@ use super::{HenonHeiles, RelativisticScene, RestrictedThreeBody, SpinningBall};
 use nalgebra::DVector;
 use std::path::Path;
 use stormer::magnetic::Charged;
-use stormer::models::{CentralForce, NBody};
+use stormer::models::{CentralForce, NBody, PerturbedCentralForce};
 use stormer::Error;
 
 /// A scene file compiled into the crate.
@@ -88,6 +88,18 @@ pub const BUILTIN: &[BuiltinScene] = &[
     BuiltinScene {
         name: "two-planets",
         text: include_str!("../../../scenes/two-planets.toml"),
+    },
+    BuiltinScene {
+        name: "kepler-e099",
+        text: include_str!("../../../scenes/kepler-e099.toml"),
+    },
+    BuiltinScene {
+        name: "kepler-e099-perturbed",
+        text: include_str!("../../../scenes/kepler-e099-perturbed.toml"),
+    },
+    BuiltinScene {
+        name: "pythagorean",
+        text: include_str!("../../../scenes/pythagorean.toml"),
     },
 ];
 
@@ -180,7 +192,7 @@ pub fn source(name_or_path: &str) -> Result<SceneSource, Error> {
 pub fn parse(text: &str, origin: &str, name: &str) -> Result<AnyScene, Error> {
     let src = Source { origin, text };
     let model = model_name(&src)?;
-    Ok(match model.get_ref().as_str() {
+    let scene = match model.get_ref().as_str() {
         Harmonic::MODEL => AnyScene::Harmonic(parse_as(&src, name)?),
         DampedOscillator::MODEL => AnyScene::DampedOscillator(parse_as(&src, name)?),
         Pendulum::MODEL => AnyScene::Pendulum(parse_as(&src, name)?),
@@ -197,13 +209,20 @@ pub fn parse(text: &str, origin: &str, name: &str) -> Result<AnyScene, Error> {
         Charged::<RestrictedThreeBody>::MODEL => AnyScene::RestrictedThreeBody(parse_as(&src, name)?),
         SpinningBall::MODEL => AnyScene::SpinningBall(parse_as(&src, name)?),
         HenonHeiles::MODEL => AnyScene::HenonHeiles(parse_as(&src, name)?),
+        PerturbedCentralForce::<f64, DVector<f64>>::MODEL => AnyScene::PerturbedCentralForce(parse_as(&src, name)?),
         other => {
             return Err(src.error_at(
                 model.span(),
                 format!("unknown model \"{other}\" (known models: {})", MODELS.join(", ")),
             ))
         }
-    })
+    };
+    match scene.run().time_transform {
+        Some(transform) => scene
+            .with_time_transform(transform)
+            .map_err(|e| src.error(e.to_string())),
+        None => Ok(scene),
+    }
 }
 
 #[cfg(test)]
@@ -232,6 +251,9 @@ mod tests {
             ("free-kick", "spinning-ball"),
             ("henon-heiles", "henon-heiles"),
             ("two-planets", "n-body"),
+            ("kepler-e099", "central-force"),
+            ("kepler-e099-perturbed", "perturbed-central-force"),
+            ("pythagorean", "n-body"),
         ];
         assert_eq!(BUILTIN.len(), models.len());
         for (s, (name, model)) in BUILTIN.iter().zip(models) {

@@ -26,6 +26,27 @@ pub struct CentralForceInitial {
     pub p: toml::Spanned<Vec<Number>>,
 }
 
+impl CentralForceInitial {
+    /// The state `(q | p)`, checked: as many coordinates in both, not at the centre.
+    pub(super) fn state(&self, src: &Source<'_>) -> Result<DVector<f64>, Error> {
+        let q = coordinates(src, "initial.q", &self.q)?;
+        let p = coordinates(src, "initial.p", &self.p)?;
+        if p.len() != q.len() {
+            return Err(src.error_at(
+                self.p.span(),
+                format!("initial.p has {} coordinates but initial.q has {}", p.len(), q.len()),
+            ));
+        }
+        if q.iter().all(|&x| x == 0.0) {
+            return Err(src.error_at(
+                self.q.span(),
+                "initial.q is the centre itself, where the force is infinite",
+            ));
+        }
+        Ok(DVector::from_iterator(2 * q.len(), q.into_iter().chain(p)))
+    }
+}
+
 /// The coordinates of a vector read from a file: 1 to 3 finite numbers, named
 /// `field[i]` in errors.
 pub(super) fn coordinates(src: &Source<'_>, field: &str, v: &toml::Spanned<Vec<Number>>) -> Result<Vec<f64>, Error> {
@@ -40,6 +61,14 @@ pub(super) fn coordinates(src: &Source<'_>, field: &str, v: &toml::Spanned<Vec<N
         .collect()
 }
 
+/// `x, y, px, py` (as many axes as the state `(q | p)` has).
+pub(super) fn orbit_components(y0: &DVector<f64>) -> Vec<String> {
+    let dim = y0.len() / 2;
+    let q = AXES.iter().take(dim).map(|a| a.to_string());
+    let p = AXES.iter().take(dim).map(|a| format!("p{a}"));
+    q.chain(p).collect()
+}
+
 /// Names of the coordinates of a `dim`-dimensional vector.
 pub(super) const AXES: [&str; 3] = ["x", "y", "z"];
 
@@ -51,34 +80,15 @@ impl Scene for CentralForce<f64, DVector<f64>> {
     fn build(parameters: Option<Self::Parameters>, initial: Self::Initial, src: &Source<'_>) -> Built<Self> {
         let parameters = parameters.ok_or_else(|| src.missing("parameters", "mu"))?;
         let mu = src.positive("parameters.mu", &parameters.mu)?;
-        let q = coordinates(src, "initial.q", &initial.q)?;
-        let p = coordinates(src, "initial.p", &initial.p)?;
-        if p.len() != q.len() {
-            return Err(src.error_at(
-                initial.p.span(),
-                format!("initial.p has {} coordinates but initial.q has {}", p.len(), q.len()),
-            ));
-        }
-        if q.iter().all(|&x| x == 0.0) {
-            return Err(src.error_at(
-                initial.q.span(),
-                "initial.q is the centre itself, where the force is infinite",
-            ));
-        }
-        Ok((
-            CentralForce::new(mu),
-            DVector::from_iterator(2 * q.len(), q.into_iter().chain(p)),
-        ))
+        Ok((CentralForce::new(mu), initial.state(src)?))
     }
 
     fn components(&self, y0: &DVector<f64>) -> Vec<String> {
-        let dim = y0.len() / 2;
-        let q = AXES.iter().take(dim).map(|a| a.to_string());
-        let p = AXES.iter().take(dim).map(|a| format!("p{a}"));
-        q.chain(p).collect()
+        orbit_components(y0)
     }
 
     super::chaos::chaos_twin!(central_force);
+    super::time_transformed::time_transformable!(LogHCentralForce, TtlCentralForce);
 
     fn exact(&self, t0: f64, y0: &DVector<f64>, t: f64) -> Option<DVector<f64>> {
         let (q0, p0) = stormer::hamiltonian::halves(y0.as_slice());

@@ -85,6 +85,9 @@ pub struct RunSettings {
     /// An n-body run ends when a body gets this far from the centre of mass (`escape_distance
     /// = 20.0`, REBOUND's `exit_max_distance`), with a sentence saying which body and when.
     pub escape_distance: Option<f64>,
+    /// The time transformation the scene runs in (`time_transform = "logh"`), if any: `dt`
+    /// is then the step in the fictitious time `s` (docs/close-approaches.md).
+    pub time_transform: Option<stormer::time_transform::Transform>,
 }
 
 /// The units a scene file names (its optional `[units]` table), for the pictures' axis
@@ -158,6 +161,7 @@ struct RunTable {
     split: Option<Spanned<String>>,
     #[serde(default)]
     escape_distance: Option<Number>,
+    time_transform: Option<Spanned<String>>,
 }
 
 impl RunTable {
@@ -191,6 +195,16 @@ impl RunTable {
                 .escape_distance
                 .as_ref()
                 .map(|d| src.positive("run.escape_distance", d))
+                .transpose()?,
+            time_transform: self
+                .time_transform
+                .as_ref()
+                .map(|s| {
+                    stormer::time_transform::Transform::named(s.get_ref()).map_err(|e| {
+                        let reason = e.to_string();
+                        src.error_at(s.span(), format!("run.{}", reason.trim_start_matches("invalid ")))
+                    })
+                })
                 .transpose()?,
         })
     }

@@ -49,7 +49,7 @@ mod central_force_file;
 mod chaos;
 mod charged_file;
 mod damped;
-pub mod escape;
+pub mod escape_distance;
 mod file;
 mod free_kick;
 mod harmonic;
@@ -59,7 +59,10 @@ mod nbody_file;
 mod orbit_entry;
 mod particle_list;
 mod pendulum;
+mod perturbed_central_force_file;
 mod relativistic_file;
+mod three_body_outcome;
+mod time_transformed;
 
 pub use arenstorf::{RestrictedThreeBody, ThreeBodyInitial, ThreeBodyParameters};
 pub use builtin::{builtin, load, parse, source, BuiltinScene, SceneSource, BUILTIN};
@@ -75,14 +78,18 @@ pub use kepler_split_file::{CorrectedBodies, SplitBodies};
 pub use nbody_file::{BodyEntry, GravityParameters};
 pub use orbit_entry::{ElementsFrame, OrbitEntry};
 pub use pendulum::{NoParameters, Pendulum, PendulumInitial, PENDULUM_PERIOD_45_DEGREES};
+pub use perturbed_central_force_file::PerturbedCentralForceParameters;
 pub use relativistic_file::{RelativisticParameters, RelativisticScene};
+pub use three_body_outcome::{escape, Escape};
+pub use time_transformed::{Transformable, Transformed};
 
 use nalgebra::DVector;
 use serde::de::DeserializeOwned;
 use stormer::magnetic::Charged;
 use stormer::method::StepperResult;
-use stormer::models::{CentralForce, NBody};
+use stormer::models::{CentralForce, NBody, PerturbedCentralForce};
 use stormer::stepper::ImplicitOptions;
+use stormer::time_transform::Transform;
 use stormer::{Error, Method, Problem};
 
 /// A model of a scene: a problem in `f64` that knows how a scene file describes it.
@@ -131,7 +138,7 @@ pub trait Scene: Problem<Scalar = f64> + Sized + 'static {
     }
 
     /// The gravitating bodies of the model (their masses, dimension and names), for
-    /// escapes (`[run] escape_distance`, [`escape`]); `None` for a model without them.
+    /// escapes (`[run] escape_distance`, [`escape_distance`]); `None` for a model without them.
     fn bodies(&self) -> Option<&NBody<f64, DVector<f64>>> {
         None
     }
@@ -156,6 +163,30 @@ pub trait Scene: Problem<Scalar = f64> + Sized + 'static {
     /// the model on dual numbers carrying one variation ([`ChaosRun`], scenes/chaos.rs);
     /// `None` for a model with no dual form yet.
     fn chaos(&self, _y0: &Self::State, _run: &ChaosRun<'_>) -> Option<Result<Vec<ChaosSample>, Error>> {
+        None
+    }
+
+    /// The scene run in the time transformation `transform` (`run --time-transform`, or
+    /// `time_transform` in the file's `[run]` table; docs/close-approaches.md): the model
+    /// wrapped by `stormer::time_transform::{LogH, Ttl}` ([`Transformed`],
+    /// scenes/time_transformed.rs); `None` for a model without the structure they need (a
+    /// separable Hamiltonian whose potential's depth is positive).
+    fn time_transform(_setup: &Setup<Self>, _transform: Transform) -> Option<Result<Transformed, Error>> {
+        None
+    }
+
+    /// The physical time of the state `y` when the run's independent variable is not the
+    /// time (a time-transformed scene steps in a fictitious time `s`, the physical time is
+    /// a coordinate): the records, the output times, the sections and the end of the run
+    /// are then in this time (cli/pipeline.rs). `None`: the run's variable is the time.
+    fn time_of(&self, _y: &Self::State) -> Option<f64> {
+        None
+    }
+
+    /// What the scene says about the state where the run ended (`scene_state`, in the
+    /// scene's coordinates, at time `t`), if it has something to say: the outcome of a
+    /// three-body scene (which body escapes, the binary left; scenes/three_body_outcome.rs).
+    fn outcome(&self, _t: f64, _scene_state: &[f64]) -> Option<String> {
         None
     }
 }
@@ -245,7 +276,7 @@ impl<S: Scene> Setup<S> {
     /// other).
     pub fn stop(&self) -> Option<Stop<S>> {
         match self.run.escape_distance {
-            Some(distance) if self.model.bodies().is_some() => Some(escape::stop(distance)),
+            Some(distance) if self.model.bodies().is_some() => Some(escape_distance::stop(distance)),
             _ => self.model.stop(),
         }
     }
@@ -290,6 +321,12 @@ pub enum AnyScene {
     /// `model = "n-body"` run in the Wisdom-Holman split with a symplectic corrector
     /// ([`AnyScene::with_corrector`]).
     CorrectedSplit(Setup<CorrectedBodies>),
+    /// `model = "perturbed-central-force"`: one body around a fixed centre,
+    /// `H = |p|^2/2 - mu/|q| - epsilon/|q|^3` (the `kepler-e099-perturbed` scene).
+    PerturbedCentralForce(Setup<PerturbedCentralForce<f64, DVector<f64>>>),
+    /// A central-force, perturbed central-force or n-body scene run in a time
+    /// transformation ([`AnyScene::with_time_transform`]).
+    TimeTransformed(Transformed),
 }
 
 /// The model names a scene file can give, in the order of [`AnyScene`].
@@ -304,6 +341,7 @@ pub const MODELS: &[&str] = &[
     Charged::<RestrictedThreeBody>::MODEL,
     SpinningBall::MODEL,
     HenonHeiles::MODEL,
+    PerturbedCentralForce::<f64, DVector<f64>>::MODEL,
 ];
 
 /// `$body` with `$s` bound to the setup of whichever model `$scene` holds.
@@ -322,9 +360,18 @@ macro_rules! each {
             AnyScene::HenonHeiles($s) => $body,
             AnyScene::KeplerSplit($s) => $body,
             AnyScene::CorrectedSplit($s) => $body,
+            AnyScene::PerturbedCentralForce($s) => $body,
+            AnyScene::TimeTransformed(Transformed::LogHCentralForce($s)) => $body,
+            AnyScene::TimeTransformed(Transformed::TtlCentralForce($s)) => $body,
+            AnyScene::TimeTransformed(Transformed::LogHPerturbed($s)) => $body,
+            AnyScene::TimeTransformed(Transformed::TtlPerturbed($s)) => $body,
+            AnyScene::TimeTransformed(Transformed::LogHBodies($s)) => $body,
+            AnyScene::TimeTransformed(Transformed::TtlBodies($s)) => $body,
         }
     };
 }
+
+pub(crate) use each;
 
 /// `S::MODEL` for the setup `_s`, whatever its model (used through [`each!`]).
 fn model_of<S: Scene>(_s: &Setup<S>) -> &'static str {

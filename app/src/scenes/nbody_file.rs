@@ -241,6 +241,12 @@ impl Scene for NBody<f64, DVector<f64>> {
     }
 
     super::chaos::chaos_twin!(n_body);
+    super::time_transformed::time_transformable!(LogHBodies, TtlBodies);
+
+    /// Three bodies: which one escapes and the binary left ([`super::escape`]).
+    fn outcome(&self, t: f64, scene_state: &[f64]) -> Option<String> {
+        super::three_body_outcome::sentence(self, t, scene_state)
+    }
 
     fn bodies(&self) -> Option<&NBody<f64, DVector<f64>>> {
         Some(self)

@@ -14,6 +14,7 @@ mod kepler_split;
 mod save_at;
 mod section;
 mod signals;
+mod time_transform;
 mod tour_page;
 
 /// The application tests' helpers (app/tests/support/), each compiled once here.

@@ -216,7 +216,11 @@ pub fn reference(scene: &SceneText, study: &StudyId, cache: &Path) -> anyhow::Re
             },
         });
     }
-    let (state, uncertainty) = scene.parse()?.visit(ReferenceRunner { t_end: study.t_end })?;
+    // a time-transformed scene's reference is its physical scene's, by dop853's adaptive steps
+    let (state, uncertainty) = scene
+        .parse()?
+        .without_time_transform()
+        .visit(ReferenceRunner { t_end: study.t_end })?;
     let cached = CachedReference {
         format: REFERENCE_FORMAT.into(),
         recipe: RECIPE.into(),
