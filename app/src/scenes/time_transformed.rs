@@ -251,10 +251,10 @@ impl AnyScene {
     pub fn with_time_transform(self, transform: Transform) -> Result<AnyScene, Error> {
         match self {
             AnyScene::TimeTransformed(t) => t.physical().with_time_transform(transform),
-            AnyScene::KeplerSplit(_) | AnyScene::CorrectedSplit(_) => Err(Error::Unsupported {
-                name: format!("time transformation {} of '{}'", transform.name(), self.name()),
-                reason: SPLIT.into(),
-            }),
+            AnyScene::KeplerSplit(_) | AnyScene::CorrectedSplit(_) => Err(Error::invalid(
+                format!("time transformation {} of '{}'", transform.name(), self.name()),
+                SPLIT,
+            )),
             other => super::each!(other, s => transformed(s, transform)),
         }
     }
