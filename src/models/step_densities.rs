@@ -5,6 +5,7 @@
 use super::central_force::CentralForce;
 use super::nbody::NBody;
 use super::nbody_shape::Shape;
+use super::perturbed_central_force::PerturbedCentralForce;
 use crate::driver::StepDensity;
 use crate::hamiltonian::halves;
 use crate::real::lit;
@@ -43,6 +44,22 @@ impl<T: Real, S: State<Scalar = T>> CentralForce<T, S> {
     /// let kepler = CentralForce::<f64, [f64; 4]>::new(1.0);
     /// // at r = 4 moving outwards at dr/dt = 0.5: s = 8, ds/dt = 3/2 r^(1/2) dr/dt = 1.5
     /// assert_eq!(kepler.step_density(1.5).at(0.0, &[4.0, 0.0, 0.5, 0.1], None), (8.0, 1.5));
+    /// ```
+    pub fn step_density(&self, power: T) -> RadialDensity<T> {
+        RadialDensity { power }
+    }
+}
+
+impl<T: Real, S: State<Scalar = T>> PerturbedCentralForce<T, S> {
+    /// The step density `s = r^power` for [`crate::Driver::reversible`], as
+    /// [`CentralForce::step_density`]: the inverse-cube term is a small perturbation of the
+    /// Kepler orbit, whose time scale `r^(3/2)` still sets the step.
+    ///
+    /// ```
+    /// use stormer::driver::StepDensity;
+    /// use stormer::models::PerturbedCentralForce;
+    /// let perturbed = PerturbedCentralForce::<f64, [f64; 4]>::new(1.0, 1e-7);
+    /// assert_eq!(perturbed.step_density(1.5).at(0.0, &[4.0, 0.0, 0.5, 0.1], None), (8.0, 1.5));
     /// ```
     pub fn step_density(&self, power: T) -> RadialDensity<T> {
         RadialDensity { power }

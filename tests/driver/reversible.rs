@@ -53,7 +53,7 @@ fn a_run_back_retraces_the_same_steps() {
     let y0 = pericentre(0.9);
     for (name, eps) in [("velocity_verlet_kdk", 0.01), ("triple_jump4", 0.05)] {
         let control = || Reversible::new(eps, kepler.step_density(1.5));
-        let run = |control: Reversible<'_, f64, [f64; 4]>, t0: f64, y: &[f64; 4], t_end: f64| {
+        let run = |control: Reversible<'static, f64, [f64; 4]>, t0: f64, y: &[f64; 4], t_end: f64| {
             Driver::with_reversible(control)
                 .run(&kepler, &mut *stepper(name, y), t0, y, t_end)
                 .unwrap()
@@ -557,4 +557,84 @@ fn close_three_body_encounters_under_the_pair_density() {
     assert!(fixed_error > 1e3 * energy_error(&first.energy));
     assert_eq!(back.stats.steps as usize, h.len());
     assert!(back_error < 1e-8, "{back_error:e}");
+}
+
+/// Keeps the times of the last two records of a run recorded at every step: the end, and
+/// where the last whole step ended.
+#[derive(Default)]
+struct LastTwo {
+    times: [f64; 2],
+}
+
+impl Recorder<f64, [f64; 4]> for LastTwo {
+    fn record(&mut self, t: f64, _y: &[f64; 4], _energy: Option<f64>) -> Result<(), Error> {
+        self.times = [self.times[1], t];
+        Ok(())
+    }
+}
+
+/// `periods` of the e = 0.99 orbit of the `kepler-e099` scene (from apocentre) by the triple
+/// jump under the reversible control at `eps`, ending on its last whole step, then back
+/// from there with the `z` it ended with (backwards in time), and again forwards in time
+/// from the end with the momenta reversed: the distances of the two returns from the start,
+/// `max |y - y0| / max |y0|`, and the steps taken.
+fn there_and_back_on_e099(eps: f64, periods: f64, compensated: bool) -> (f64, f64, u64) {
+    let kepler = Kepler::new(1.0);
+    let y0 = [1.99, 0.0, 0.0, (0.01f64 / 1.99).sqrt()];
+    let control = || Reversible::new(eps, kepler.step_density(1.5));
+    let driver = |control: Reversible<'static, f64, [f64; 4]>| {
+        let driver = Driver::with_reversible(control).max_steps(u64::MAX);
+        if compensated {
+            driver.compensated()
+        } else {
+            driver
+        }
+    };
+    let mut last_two = LastTwo::default();
+    driver(control())
+        .run_into(
+            &kepler,
+            &mut *stepper("triple_jump4", &y0),
+            0.0,
+            &y0,
+            periods * TAU,
+            &mut last_two,
+        )
+        .unwrap();
+    let t_end = last_two.times[0];
+    let run = |control: Reversible<'static, f64, [f64; 4]>, t0: f64, y: &[f64; 4], t_end: f64| {
+        driver(control)
+            .every(u64::MAX)
+            .run(&kepler, &mut *stepper("triple_jump4", y), t0, y, t_end)
+            .unwrap()
+    };
+    let forward = run(control(), 0.0, &y0, t_end);
+    let (z_end, y_end) = (forward.z_end.unwrap(), *forward.y.last().unwrap());
+    let back = run(control().starting_z(z_end), t_end, &y_end, 0.0);
+    let back_error = relative(back.y.last().unwrap(), &y0);
+    let reversed = [y_end[0], y_end[1], -y_end[2], -y_end[3]];
+    let mirror = run(control().starting_z(z_end), 0.0, &reversed, t_end);
+    let end = mirror.y.last().unwrap();
+    let mirror_error = relative(&[end[0], end[1], -end[2], -end[3]], &y0);
+    assert_eq!(back.stats.steps, forward.stats.steps, "as many steps back");
+    assert_eq!(mirror.stats.steps, forward.stats.steps, "as many steps reversed");
+    (back_error, mirror_error, forward.stats.steps)
+}
+
+/// The test of reversibility on `kepler-e099` (e = 0.99): 10^3 periods forward
+/// (1144610 steps of the triple jump at eps = 0.01, compensated), then back, backwards in
+/// time with the control's `z` and forwards with the momenta reversed, returns to the
+/// initial state within 1.6e-10 and 1.3e-10 relative (asserted: 1e-9). The steps retrace
+/// exactly but for round-off, and round-off here is not small: an error in the energy
+/// shifts the phase along the orbit in proportion to the time left, so the return misses by
+/// about the steps^(3/2) times the rounding (5e-13 after 30 periods; 1e-10 to 5e-9 after
+/// 10^3 at eps 0.01 to 0.05, with or without compensation, docs/reversible-steps.md). The
+/// issue's 1e-10 is met by the LogH triple jump at its 9 times fewer steps
+/// (tests/physics/time_transform.rs, 4.7e-11).
+#[test]
+fn a_thousand_periods_there_and_back_return_to_the_start() {
+    let (back, mirror, steps) = there_and_back_on_e099(0.01, 1e3, true);
+    println!("10^3 periods, {steps} steps each way: back {back:.2e}, momenta reversed {mirror:.2e}");
+    assert!(back < 1e-9, "back: {back:e}");
+    assert!(mirror < 1e-9, "momenta reversed: {mirror:e}");
 }

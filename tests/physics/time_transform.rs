@@ -457,3 +457,38 @@ fn catalog_methods_by_name_step_the_transformed_problems() {
     let run = Driver::fixed(1e-3).run(&ttl, &mut named, 0.0, &x0, 1.0).unwrap();
     assert!(ttl.time(run.y.last().unwrap()) > 0.0);
 }
+
+/// The reversibility test on `kepler-e099` (e = 0.99, from apocentre) by the LogH
+/// triple jump at the scene's 128 steps of `s` per orbit: 10^3 orbits forward (128000 steps),
+/// then as many steps of `-h` back, return to the initial state within 1e-10 relative
+/// (`max |y - y0| / max |y0|` of the physical state; the time coordinate back to 0 within
+/// 1e-10 of the span). Measured in debug: docs/close-approaches.md.
+#[test]
+fn logh_triple_jump_goes_a_thousand_orbits_and_back_to_the_start() {
+    let logh = LogH::<Kepler, [f64; 6]>::new(Kepler::new(1.0)).unwrap();
+    let x0 = logh.extend(0.0, &apocentre(0.99)).unwrap();
+    let mut stepper = SplittingStepper::<TripleJump4, [f64; 6]>::new(&x0).unwrap();
+    let (h, n) = (TAU / 128.0, 128_000u64);
+    let s_end = h * n as f64;
+    let forward = Driver::fixed(h)
+        .every(u64::MAX)
+        .run(&logh, &mut stepper, 0.0, &x0, s_end)
+        .unwrap();
+    let x_end = *forward.y.last().unwrap();
+    let back = Driver::fixed(h)
+        .every(u64::MAX)
+        .run(&logh, &mut stepper, s_end, &x_end, 0.0)
+        .unwrap();
+    assert_eq!((forward.stats.steps, back.stats.steps), (n, n));
+    let x = back.y.last().unwrap();
+    let (t, y) = logh.physical(x).unwrap();
+    let y0 = apocentre(0.99);
+    let scale = y0.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    let distance = y.iter().zip(&y0).fold(0.0f64, |m, (a, b)| m.max((a - b).abs())) / scale;
+    let t_span = logh.time(&x_end);
+    println!(
+        "LogH triple jump, {n} steps to t = {t_span:.6} and back: the start within {distance:.2e} relative, t = {t:.2e}"
+    );
+    assert!(distance < 1e-10, "{distance:e}");
+    assert!(t.abs() < 1e-10 * t_span, "{t:e}");
+}

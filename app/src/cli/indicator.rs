@@ -133,6 +133,9 @@ pub fn follow<S: Scene>(
         Steps::Adaptive { .. } => {
             return refuse("the indicators follow a variation through fixed steps; drop --rtol/--atol".into())
         }
+        Steps::Reversible { .. } => {
+            return refuse("the indicators follow a variation through fixed steps; drop --adaptive-reversible".into())
+        }
     };
     if options.save_at.is_some() {
         return refuse("the indicators are sampled with the records every N steps; drop --save-at".into());

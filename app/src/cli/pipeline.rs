@@ -13,8 +13,10 @@
 
 use super::section::Section;
 use std::borrow::Cow;
+use std::cell::Cell;
+use std::rc::Rc;
 use std::sync::atomic::AtomicBool;
-use stormer::driver::{Crossing, EventHit, Stats, StepControl};
+use stormer::driver::{Crossing, EventHit, Stats, StepControl, StepDensity};
 use stormer::driver::{Recorder, StopEvent};
 use stormer::stepper::{ImplicitOptions, Tolerances};
 use stormer::time_transform::{at_physical_times, stop_at_physical_time};
@@ -33,6 +35,12 @@ pub enum Steps {
         tol: Tolerances<f64>,
         /// First step size.
         h0: Option<f64>,
+    },
+    /// Reversible adaptive steps (symmetric methods; Hairer & Soderlind): steps of about
+    /// `eps s(y)` for the scene's step size function `s` ([`Scene::reversible_density`]).
+    Reversible {
+        /// The step-size scale: `h = eps s(y)`.
+        eps: f64,
     },
 }
 
@@ -83,7 +91,7 @@ impl Default for Options {
 pub struct SceneRun<'s, S: Scene> {
     setup: &'s Setup<S>,
     stepper: Box<dyn Stepper<S>>,
-    control: StepControl<f64>,
+    control: Control<S>,
     t_end: f64,
     every: u64,
     save_at: Option<Vec<f64>>,
@@ -94,6 +102,79 @@ pub struct SceneRun<'s, S: Scene> {
     /// The scene steps in a fictitious time, its physical time a coordinate
     /// ([`Scene::time_of`]).
     transformed: bool,
+}
+
+/// How a [`SceneRun`] chooses its steps: the library's [`StepControl`], or its reversible
+/// control with the scene's density, whose steps are watched for the summary.
+enum Control<S: Scene> {
+    Steps(StepControl<f64>),
+    Reversible {
+        eps: f64,
+        density: Rc<dyn StepDensity<f64, S::State>>,
+        /// The density's formula, for the summary.
+        formula: &'static str,
+        steps: Rc<Cell<StepRange>>,
+    },
+}
+
+/// The smallest and largest step of a reversible run, seen from its density: the driver
+/// evaluates it once at the start and once at the end of every step, so the differences of
+/// the times it is called at are the steps.
+#[derive(Debug, Clone, Copy, Default)]
+struct StepRange {
+    /// Where the density was last evaluated.
+    t: Option<f64>,
+    /// The last step, not yet counted: the one shortened to land on the end time is left out.
+    last: Option<f64>,
+    smallest: f64,
+    largest: f64,
+}
+
+impl StepRange {
+    fn step_to(&mut self, t: f64) {
+        if let Some(before) = self.t {
+            if let Some(h) = self.last {
+                self.count(h);
+            }
+            self.last = Some((t - before).abs());
+        }
+        self.t = Some(t);
+    }
+
+    fn count(&mut self, h: f64) {
+        if self.smallest == 0.0 || h < self.smallest {
+            self.smallest = h;
+        }
+        self.largest = self.largest.max(h);
+    }
+
+    /// The smallest and largest whole step, with the last step when it is the only one or
+    /// was not shortened to land on the end (the run stopped before).
+    fn range(mut self, with_last: bool) -> Option<(f64, f64)> {
+        if let Some(h) = self.last.filter(|_| with_last || self.largest == 0.0) {
+            self.count(h);
+        }
+        (self.largest > 0.0).then_some((self.smallest, self.largest))
+    }
+}
+
+/// The scene's density, its evaluations watched for the [`StepRange`].
+struct Watched<S: Scene> {
+    density: Rc<dyn StepDensity<f64, S::State>>,
+    steps: Rc<Cell<StepRange>>,
+}
+
+impl<S: Scene> StepDensity<f64, S::State> for Watched<S> {
+    fn at(&self, t: f64, y: &S::State, slope: Option<&S::State>) -> (f64, f64) {
+        let mut steps = self.steps.get();
+        steps.step_to(t);
+        self.steps.set(steps);
+        self.density.at(t, y, slope)
+    }
+
+    fn needs_slope(&self) -> bool {
+        self.density.needs_slope()
+    }
 }
 
 /// The driver's own step limit, when `--max-steps` does not give one.
@@ -158,6 +239,14 @@ impl<'s, S: Scene> SceneRun<'s, S> {
     /// Builds `method`'s stepper on the scene and the run's settings from `options`.
     pub fn new(setup: &'s Setup<S>, method: &Method, options: &Options) -> Result<Self, Error> {
         let transformed = setup.model.time_of(&setup.y0).is_some();
+        if transformed && matches!(options.steps, Steps::Reversible { .. }) {
+            return Err(Error::invalid(
+                "--adaptive-reversible",
+                "a time-transformed run already takes steps that shrink where the orbit comes close (fixed steps of \
+                 its fictitious time s); both change the steps: run with --time-transform none, or drop \
+                 --adaptive-reversible",
+            ));
+        }
         if transformed && matches!(options.steps, Steps::Adaptive { .. }) {
             return Err(Error::invalid(
                 "adaptive steps",
@@ -183,7 +272,8 @@ impl<'s, S: Scene> SceneRun<'s, S> {
             stepper.set_compensated(true)?;
         }
         let control = match options.steps {
-            Steps::Fixed(h) => StepControl::Fixed(h.unwrap_or(setup.run.dt)),
+            Steps::Fixed(h) => Control::Steps(StepControl::Fixed(h.unwrap_or(setup.run.dt))),
+            Steps::Reversible { eps } => reversible(setup, &*stepper, eps)?,
             Steps::Adaptive { .. } if stepper.error_order().is_none() => {
                 return Err(Error::Unsupported {
                     name: method.name().to_string(),
@@ -192,7 +282,7 @@ impl<'s, S: Scene> SceneRun<'s, S> {
                         .into(),
                 });
             }
-            Steps::Adaptive { tol, h0 } => StepControl::Adaptive { tol, h0, h_max: None },
+            Steps::Adaptive { tol, h0 } => Control::Steps(StepControl::Adaptive { tol, h0, h_max: None }),
         };
         Ok(SceneRun {
             setup,
@@ -228,7 +318,7 @@ impl<'s, S: Scene> SceneRun<'s, S> {
     /// scene the bound on `s` that the step limit allows (the physical end stops the run).
     fn driver_end(&self) -> f64 {
         match self.control {
-            StepControl::Fixed(h) if self.transformed => {
+            Control::Steps(StepControl::Fixed(h)) if self.transformed => {
                 self.t0() + h.abs() * self.max_steps.unwrap_or(DEFAULT_MAX_STEPS) as f64
             }
             _ => self.t_end,
@@ -294,8 +384,8 @@ impl<'s, S: Scene> SceneRun<'s, S> {
         }
         match self.control {
             // the steps of s to the physical end are not known before the run
-            StepControl::Fixed(_) if self.transformed => None,
-            StepControl::Fixed(h) => {
+            Control::Steps(StepControl::Fixed(_)) if self.transformed => None,
+            Control::Steps(StepControl::Fixed(h)) => {
                 let steps = ((self.t_end - self.t0()) / h).abs().ceil();
                 Some((steps / self.every as f64).floor() + 2.0)
             }
@@ -305,7 +395,19 @@ impl<'s, S: Scene> SceneRun<'s, S> {
 
     /// The driver of this run, recording every `every` steps.
     fn driver(&self, every: u64) -> Driver<'s, f64, S::State> {
-        let mut driver = Driver::with(self.control).every(every);
+        let mut driver = match &self.control {
+            Control::Steps(control) => Driver::with(*control),
+            Control::Reversible {
+                eps, density, steps, ..
+            } => Driver::reversible(
+                *eps,
+                Watched::<S> {
+                    density: Rc::clone(density),
+                    steps: Rc::clone(steps),
+                },
+            ),
+        }
+        .every(every);
         if let Some(n) = self.max_steps {
             driver = driver.max_steps(n);
         }
@@ -373,6 +475,9 @@ impl<'s, S: Scene> SceneRun<'s, S> {
             output_events,
         };
         let setup = self.setup;
+        if let Control::Reversible { steps, .. } = &self.control {
+            steps.take();
+        }
         let mut driver = self.driver(if output_events.is_some() { u64::MAX } else { every });
         match times {
             Some(times) if self.transformed => driver = at_physical_times(driver, times),
@@ -436,6 +541,24 @@ impl<'s, S: Scene> SceneRun<'s, S> {
         }
     }
 
+    /// The smallest and largest step of the last run under reversible adaptive steps (the
+    /// last step left out when it was shortened to land on the end time, `reached_end`);
+    /// `None` for the other step controls.
+    pub fn step_range(&self, reached_end: bool) -> Option<(f64, f64)> {
+        match &self.control {
+            Control::Reversible { steps, .. } => steps.get().range(!reached_end),
+            Control::Steps(_) => None,
+        }
+    }
+
+    /// The step size function `s` of reversible adaptive steps, as the summary writes it.
+    pub fn density_formula(&self) -> Option<&'static str> {
+        match &self.control {
+            Control::Reversible { formula, .. } => Some(formula),
+            Control::Steps(_) => None,
+        }
+    }
+
     /// The scene's sentence about its stop condition: where it ended the run ("the ball
     /// lands at ..."), or that it did not before the end; `None` for a scene without one.
     pub fn stop_sentence(&self, stopped: Option<&StopEvent<f64, S::State>>) -> Option<String> {
@@ -460,6 +583,61 @@ impl<'s, S: Scene> SceneRun<'s, S> {
         let t = outcome.stopped.as_ref().map_or(self.t_end, |event| event.t);
         self.setup.exact(t).map(|y| y.as_slice().to_vec())
     }
+}
+
+/// The reversible control of `eps` with the scene's density, refused (before any output is
+/// created) for a method that is not symmetric, an `eps` not finite and > 0, a scene
+/// without a density, and a density that is not finite and > 0 at the start.
+fn reversible<S: Scene>(setup: &Setup<S>, stepper: &dyn Stepper<S>, eps: f64) -> Result<Control<S>, Error> {
+    let info = stepper.info();
+    if !info.flags.symmetric {
+        return Err(Error::Unsupported {
+            name: info.name.clone(),
+            reason: format!(
+                "reversible adaptive steps (--adaptive-reversible) need a symmetric method, Phi_-h = Phi_h^-1, \
+                 and {} is not: use a symmetric splitting or composition (velocity_verlet_kdk, triple_jump4, \
+                 yoshida6a, kahan_li6), implicit midpoint, Gauss-Legendre or Lobatto IIIA/IIIB (`stormer \
+                 methods`, flag symmetric), or fixed steps (--dt) or --rtol/--atol",
+                info.name
+            ),
+        });
+    }
+    if !(eps.is_finite() && eps > 0.0) {
+        return Err(Error::invalid(
+            "--adaptive-reversible",
+            format!("the step-size scale eps (h = eps s(y)) must be finite and > 0, got {eps}"),
+        ));
+    }
+    let Some((density, formula)) = setup.model.reversible_density() else {
+        let which = match setup.run.split {
+            Some(split) => format!("a scene in the {} split has", split.name()),
+            None => format!("the {} model has", S::MODEL),
+        };
+        return Err(Error::invalid(
+            "--adaptive-reversible",
+            format!(
+                "{which} no step density s(y) to scale the steps by (reversible adaptive steps run on central-force, \
+                 perturbed-central-force and n-body scenes, not split: --split none); use fixed steps (--dt)"
+            ),
+        ));
+    };
+    let (s, rate) = density.at(setup.run.t0, &setup.y0, None);
+    if !(s.is_finite() && s > 0.0 && (rate.is_finite() || density.needs_slope())) {
+        return Err(Error::invalid(
+            "--adaptive-reversible",
+            format!(
+                "the scene's step density s = {formula} is {} at the start (s must be finite and > 0: a single body \
+                 has no pair, a body at the centre no radius)",
+                stormer::text::number(s)
+            ),
+        ));
+    }
+    Ok(Control::Reversible {
+        eps,
+        density: Rc::from(density),
+        formula,
+        steps: Rc::default(),
+    })
 }
 
 /// Keeps the [`Track`] of the records on their way to `out`, and passes on the crossings

@@ -51,6 +51,15 @@ pub struct RunArgs {
     /// Absolute tolerance: adaptive steps (methods with an embedded pair).
     #[arg(long, value_name = "A", allow_negative_numbers = true)]
     pub atol: Option<f64>,
+    /// Reversible adaptive steps (Hairer & Soderlind; docs/reversible-steps.md): every step
+    /// h = EPS s(y), EPS the step-size scale and s the scene's step size function (r^(3/2)
+    /// about a centre; for n bodies the pairs' free-fall times, dominated by the closest
+    /// pair), taken so that a run back retraces them and the energy stays bounded without
+    /// drift. For symmetric methods (velocity_verlet_kdk, triple_jump4, ...) on central-force,
+    /// perturbed-central-force and unsplit n-body scenes; replaces the scene file's time
+    /// transformation; not with --dt, --rtol/--atol or --time-transform logh|ttl.
+    #[arg(long, value_name = "EPS", allow_negative_numbers = true)]
+    pub adaptive_reversible: Option<f64>,
     /// How implicit methods solve their stage equations [default: fixed-point].
     #[arg(long, value_enum)]
     pub solver: Option<SolverArg>,
@@ -153,6 +162,34 @@ fn check(args: &RunArgs) -> Result<(), Error> {
     if args.max_iterations == Some(0) {
         return Err(Error::invalid("--max-iterations", "must be >= 1, got 0"));
     }
+    if args.adaptive_reversible.is_some() {
+        check_reversible(args)?;
+    }
+    Ok(())
+}
+
+/// What `--adaptive-reversible` does not combine with: the other ways of choosing the steps.
+fn check_reversible(args: &RunArgs) -> Result<(), Error> {
+    let refuse = |reason: &str| Err(Error::invalid("--adaptive-reversible", reason));
+    if args.rtol.is_some() || args.atol.is_some() {
+        return refuse(
+            "the reversible control sets every step itself (h = eps s(y)); --rtol/--atol are the tolerances of \
+             another control (embedded pairs): drop them",
+        );
+    }
+    if args.overrides.dt.is_some() {
+        return refuse("the reversible control sets every step itself (h = eps s(y)): drop --dt");
+    }
+    if args.corrector.is_some() {
+        return refuse("a symplectic corrector is built for one fixed step size: drop --corrector");
+    }
+    if let Some(t) = args.time_transform.and_then(TimeTransformArg::transform) {
+        return refuse(&format!(
+            "the time transformation {} already makes the steps shrink where the orbit comes close (fixed steps of \
+             its fictitious time s); both change the steps: choose one (--time-transform none)",
+            t.name()
+        ));
+    }
     Ok(())
 }
 
@@ -177,7 +214,12 @@ pub fn run(args: &RunArgs) -> anyhow::Result<()> {
     // corrector asked for; the split is chosen on the physical scene
     let transform = match args.time_transform {
         Some(arg) => arg.transform(),
-        None if args.split.as_deref().is_some_and(|s| s != "none") || args.corrector.is_some() => None,
+        None if args.split.as_deref().is_some_and(|s| s != "none")
+            || args.corrector.is_some()
+            || args.adaptive_reversible.is_some() =>
+        {
+            None
+        }
         None => scene.time_transform(),
     };
     if let Some(t) = transform {
@@ -249,7 +291,9 @@ impl Runner<'_> {
         if let Some(n) = args.max_iterations {
             implicit.max_iterations = n;
         }
-        let steps = if args.rtol.is_some() || args.atol.is_some() {
+        let steps = if let Some(eps) = args.adaptive_reversible {
+            Steps::Reversible { eps }
+        } else if args.rtol.is_some() || args.atol.is_some() {
             let rtol = args.rtol.or(args.atol).unwrap_or_default();
             let atol = args.atol.or(args.rtol).unwrap_or_default();
             Steps::Adaptive {
@@ -417,10 +461,18 @@ impl SceneVisitor for Runner<'_> {
                     split = split.name()
                 ),
                 (Some(split), None) => format!("{} on {} ({split})", method.name(), setup.name, split = split.name()),
+                _ if run.density_formula().is_some() => format!(
+                    "{} on {} (reversible adaptive steps h = eps s, eps = {}, s = {})",
+                    method.name(),
+                    setup.name,
+                    number(args.adaptive_reversible.unwrap_or(f64::NAN)),
+                    run.density_formula().unwrap_or_default()
+                ),
                 _ => format!("{} on {}", method.name(), setup.name),
             },
             stats,
             matches!(options.steps, Steps::Adaptive { .. }),
+            run.step_range(outcome.stopped.is_none()),
             track,
             &csv.destination(),
             run.stop_sentence(outcome.stopped.as_ref()),
@@ -481,11 +533,15 @@ fn summary(
     what: &str,
     stats: &Stats,
     adaptive: bool,
+    step_range: Option<(f64, f64)>,
     track: &Track,
     destination: &str,
     stop: Option<String>,
 ) -> String {
-    let mut parts = vec![format!("{what}: {} steps", stats.steps)];
+    let mut parts = vec![match step_range {
+        Some((smallest, largest)) => format!("{what}: {} steps from h = {smallest:.3e} to {largest:.3e}", stats.steps),
+        None => format!("{what}: {} steps", stats.steps),
+    }];
     if adaptive {
         parts.push(format!("{} rejected", stats.rejected));
     }

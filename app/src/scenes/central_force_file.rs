@@ -69,6 +69,9 @@ pub(super) fn orbit_components(y0: &DVector<f64>) -> Vec<String> {
     q.chain(p).collect()
 }
 
+/// The reversible steps' density of one body about a centre, as the summary writes it.
+pub(super) const KEPLER_DENSITY: &str = "r^(3/2)";
+
 /// Names of the coordinates of a `dim`-dimensional vector.
 pub(super) const AXES: [&str; 3] = ["x", "y", "z"];
 
@@ -89,6 +92,11 @@ impl Scene for CentralForce<f64, DVector<f64>> {
 
     super::chaos::chaos_twin!(central_force);
     super::time_transformed::time_transformable!(LogHCentralForce, TtlCentralForce);
+
+    /// `r^(3/2)`, the orbital time scale `sqrt(r^3 / mu)`.
+    fn reversible_density(&self) -> Option<super::Density<Self>> {
+        Some((Box::new(self.step_density(1.5)), KEPLER_DENSITY))
+    }
 
     fn exact(&self, t0: f64, y0: &DVector<f64>, t: f64) -> Option<DVector<f64>> {
         let (q0, p0) = stormer::hamiltonian::halves(y0.as_slice());

@@ -85,6 +85,7 @@ pub use time_transformed::{Transformable, Transformed};
 
 use nalgebra::DVector;
 use serde::de::DeserializeOwned;
+use stormer::driver::StepDensity;
 use stormer::magnetic::Charged;
 use stormer::method::StepperResult;
 use stormer::models::{CentralForce, NBody, PerturbedCentralForce};
@@ -183,6 +184,14 @@ pub trait Scene: Problem<Scalar = f64> + Sized + 'static {
         None
     }
 
+    /// The step size function `s(y)` of reversible adaptive steps (`run --adaptive-reversible
+    /// EPS`: steps of about `eps s(y)`, `stormer::Driver::reversible`,
+    /// docs/reversible-steps.md) and its formula for the summary: the model's time scale,
+    /// which shrinks where the orbit comes close; `None` for a model without a natural one.
+    fn reversible_density(&self) -> Option<Density<Self>> {
+        None
+    }
+
     /// What the scene says about the state where the run ended (`scene_state`, in the
     /// scene's coordinates, at time `t`), if it has something to say: the outcome of a
     /// three-body scene (which body escapes, the binary left; scenes/three_body_outcome.rs).
@@ -209,6 +218,10 @@ macro_rules! compiled_in_release {
         }
     };
 }
+
+/// A model's step size function for reversible adaptive steps ([`Scene::reversible_density`]):
+/// `(s, ds/dt)` at `(t, y)`, and its formula as the summary writes it (`"r^(3/2)"`).
+pub type Density<S> = (Box<dyn StepDensity<f64, <S as Problem>::State>>, &'static str);
 
 /// A stop condition of a scene's model ([`Scene::stop`]): where the run ends, and what
 /// the run summary says about it.

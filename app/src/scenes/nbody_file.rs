@@ -243,6 +243,15 @@ impl Scene for NBody<f64, DVector<f64>> {
     super::chaos::chaos_twin!(n_body);
     super::time_transformed::time_transformable!(LogHBodies, TtlBodies);
 
+    /// The pairs' free-fall times combined, dominated by the closest pair
+    /// (`NBody::step_density`); a single body has none, which the run refuses.
+    fn reversible_density(&self) -> Option<super::Density<Self>> {
+        Some((
+            Box::new(self.step_density()),
+            "(sum over pairs G (m_k + m_l) / r^3)^(-1/2)",
+        ))
+    }
+
     /// Three bodies: which one escapes and the binary left ([`super::escape`]).
     fn outcome(&self, t: f64, scene_state: &[f64]) -> Option<String> {
         super::three_body_outcome::sentence(self, t, scene_state)

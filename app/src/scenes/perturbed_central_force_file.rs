@@ -39,6 +39,14 @@ impl Scene for PerturbedCentralForce<f64, DVector<f64>> {
     }
 
     super::time_transformed::time_transformable!(LogHPerturbed, TtlPerturbed);
+
+    /// `r^(3/2)`, the Kepler orbit's time scale, which the small inverse-cube term hardly changes.
+    fn reversible_density(&self) -> Option<super::Density<Self>> {
+        Some((
+            Box::new(self.step_density(1.5)),
+            super::central_force_file::KEPLER_DENSITY,
+        ))
+    }
 }
 
 #[cfg(test)]

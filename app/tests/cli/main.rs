@@ -11,6 +11,7 @@ mod hostile;
 mod indicator;
 mod kepler_correctors;
 mod kepler_split;
+mod reversible;
 mod save_at;
 mod section;
 mod signals;

@@ -10,13 +10,13 @@ use binary::{assert_error, csv_rows, stderr, stormer, stormer_ok, summary_number
 use std::f64::consts::TAU;
 
 /// The rows of the CSV at `path`.
-fn rows(path: &std::path::Path) -> Vec<Vec<f64>> {
+pub(crate) fn rows(path: &std::path::Path) -> Vec<Vec<f64>> {
     csv_rows(&std::fs::read_to_string(path).unwrap()).1
 }
 
 /// `(max |dE/E0|, first-quarter max, last-quarter max)` of the energy column (the last) of
 /// `rows`, the quarters by time.
-fn energy_errors(rows: &[Vec<f64>]) -> (f64, f64, f64) {
+pub(crate) fn energy_errors(rows: &[Vec<f64>]) -> (f64, f64, f64) {
     let e0 = *rows[0].last().unwrap();
     let t_end = rows.last().unwrap()[0];
     let error = |r: &Vec<f64>| ((r.last().unwrap() - e0) / e0).abs();
