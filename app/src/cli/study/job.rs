@@ -438,9 +438,7 @@ impl SceneVisitor for JobRunner<'_> {
         let (stats, track) = (measured.stats, &measured.track);
         // the truth where the run ended: at the end time, or where the scene's stop
         // condition ended it (the reference stops there too)
-        let exact = (study.truth == "exact")
-            .then(|| run.exact_at_end(&measured))
-            .flatten();
+        let exact = (study.truth == "exact").then(|| run.exact_at_end(&measured)).flatten();
         let truth: &[f64] = match (&exact, self.reference) {
             (Some(y), _) => y,
             (None, Some(r)) => &r.state,

@@ -39,7 +39,10 @@ pub fn split(given: &str) -> Result<(&str, Asked), Error> {
     let Some((method, suffix)) = given.rsplit_once('@') else {
         return Ok((given, Asked::AsTheFileSays));
     };
-    Ok((method, named(suffix).map_err(|why| Error::invalid("--methods", format!("{given}: {why}")))?))
+    Ok((
+        method,
+        named(suffix).map_err(|why| Error::invalid("--methods", format!("{given}: {why}")))?,
+    ))
 }
 
 /// The transformation of that name (`none`, `logh`, `ttl`), as a suffix and a study give
@@ -48,9 +51,12 @@ pub fn named(name: &str) -> Result<Asked, String> {
     if name.trim().eq_ignore_ascii_case(NONE) {
         return Ok(Asked::Untransformed);
     }
-    Transform::named(name)
-        .map(Asked::In)
-        .map_err(|_| format!("unknown time transformation '{name}' (write METHOD@T, T one of {})", names()))
+    Transform::named(name).map(Asked::In).map_err(|_| {
+        format!(
+            "unknown time transformation '{name}' (write METHOD@T, T one of {})",
+            names()
+        )
+    })
 }
 
 /// The transformation a study keeps for a method (`None`: the scene as its file says).

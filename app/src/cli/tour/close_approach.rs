@@ -25,12 +25,17 @@ const DT: f64 = 1e-3;
 /// Ten orbits.
 const ORBITS: f64 = 10.0;
 
+/// The orbits are drawn until they first go further than this from the centre (the
+/// apocentre is at 1.99).
+const FRAME: f64 = 2.5;
+
 /// The orbits drawn.
 const ORBIT: Figure = Figure {
     file: "close-approach-orbit.svg",
-    caption: "The orbit in the plane, equal scales, over ten periods; the centre is at the origin and the \
-        pericentre, 0.01 from it, is at the left end. At a fixed step each pass of the pericentre kicks the \
-        orbit onto another ellipse (or out of the picture); the LogH triple jump draws one ellipse ten times.",
+    caption: "The orbit in the plane, equal scales, over ten periods or until it first goes further than 2.5 \
+        from the centre (at the origin; the pericentre, 0.01 from it, is at the left end). At a fixed step a pass \
+        of the pericentre kicks the orbit onto another ellipse, and then out of the picture; the LogH triple \
+        jump draws one ellipse ten times.",
 };
 
 /// The energy errors drawn.
@@ -64,7 +69,10 @@ fn fate(t: &Trace) -> String {
     if end >= 0.0 {
         "ends unbound (E >= 0)".into()
     } else {
-        format!("ends with a semi-major axis {} times the start's", measured(t.e0() / end))
+        format!(
+            "ends with a semi-major axis {} times the start's",
+            measured(t.e0() / end)
+        )
     }
 }
 
@@ -93,7 +101,11 @@ fn front(out: &Path) -> anyhow::Result<(Vec<crate::cli::tour_page::Picture>, Vec
         },
     };
     let (pictures, table) = compared(out, &args, "ca-")?;
-    Ok((pictures, table, fewer_evaluations(&dir.join(format!("compare-{SCENE}.csv")))?))
+    Ok((
+        pictures,
+        table,
+        fewer_evaluations(&dir.join(format!("compare-{SCENE}.csv")))?,
+    ))
 }
 
 /// From the front's table: the evaluations the fixed-step triple jump needs for its best
@@ -170,7 +182,14 @@ pub(super) fn run(out: &Path) -> anyhow::Result<Section> {
         .iter()
         .map(|(l, t)| {
             let (x, y) = (&t.names[0], &t.names[1]);
-            let points = t.column(x).into_iter().zip(t.column(y)).collect();
+            // drawn until it first leaves the frame of the first ellipse (a chord would join
+            // the points on either side of an excursion)
+            let points = t
+                .column(x)
+                .into_iter()
+                .zip(t.column(y))
+                .take_while(|(x, y)| x.hypot(*y) <= FRAME)
+                .collect();
             Series::line(*l, thinned(points, false))
         })
         .collect();
@@ -186,12 +205,8 @@ pub(super) fn run(out: &Path) -> anyhow::Result<Section> {
         .iter()
         .map(|(l, t)| Series::line(*l, thinned(t.relative_energy_error(), true)))
         .collect();
-    let chart = Chart::new(
-        "kepler-e099: energy error against time",
-        units.t(),
-        "|E - E0| / |E0|",
-    )
-    .scales(Scale::Linear, Scale::Log);
+    let chart = Chart::new("kepler-e099: energy error against time", units.t(), "|E - E0| / |E0|")
+        .scales(Scale::Linear, Scale::Log);
     let energy = picture(out, &ENERGY, &chart, &energies)?;
     let (mut pictures, _, front_verdict) = front(out)?;
     pictures.insert(0, energy);
