@@ -228,7 +228,7 @@ pub(super) fn run(out: &Path) -> anyhow::Result<Section> {
     let verdict = format!(
         "At a fixed step dt = {DT} ({steps} steps an orbit) velocity Verlet (max |dE/E0| = {}) {} and the triple jump \
          (max |dE/E0| = {}) {}: {fixed_words}; {logh_words} (max |dE/E0| = {} over ten orbits) with 128 steps of s \
-         an orbit, {} times fewer. {}",
+         an orbit, {} times fewer steps. {}",
         measured(max_rel(verlet)),
         fate(verlet),
         measured(max_rel(jump)),
