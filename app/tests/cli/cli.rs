@@ -7,7 +7,9 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 
 use crate::support::binary;
-use binary::{assert_error, assert_ok, energy_drift, stderr, stdout, stormer, stormer_ok, summary_number};
+use binary::{
+    assert_error, assert_ok, column, energy_drift, read_table, stderr, stdout, stormer, stormer_ok, summary_number,
+};
 
 /// A fresh directory for one test.
 fn workdir(name: &str) -> PathBuf {
@@ -1199,22 +1201,6 @@ const QUICK: &[&str] = &["--runs", "1", "--min-time", "0"];
 
 fn with_quick<'a>(args: &[&'a str]) -> Vec<&'a str> {
     args.iter().chain(QUICK).copied().collect()
-}
-
-/// The CSV as (header, rows of text cells).
-fn read_table(path: &Path) -> (Vec<String>, Vec<Vec<String>>) {
-    let text = std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
-    let mut lines = text.lines();
-    let header = lines.next().unwrap().split(',').map(String::from).collect();
-    let rows = lines.map(|l| l.split(',').map(String::from).collect()).collect();
-    (header, rows)
-}
-
-fn column(header: &[String], name: &str) -> usize {
-    header
-        .iter()
-        .position(|h| h == name)
-        .unwrap_or_else(|| panic!("no column {name} in {header:?}"))
 }
 
 /// An SVG diagram with its axis labels and a legend naming `names`.

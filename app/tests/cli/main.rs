@@ -6,6 +6,7 @@
 
 mod bad_input;
 mod cli;
+mod compare_time_transforms;
 mod ensemble;
 mod hostile;
 mod indicator;

@@ -91,7 +91,7 @@ fn tour_writes_the_report_with_verdicts() {
     }
     assert!(pictures >= 12, "{pictures} pictures");
     let verdicts: Vec<&str> = html.lines().filter(|l| l.contains("class=\"verdict\"")).collect();
-    assert_eq!(verdicts.len(), 10, "{verdicts:?}");
+    assert_eq!(verdicts.len(), 11, "{verdicts:?}");
     let has = |i: usize, needle: &str| assert!(verdicts[i].contains(needle), "expected {needle:?} in {}", verdicts[i]);
     has(0, "Explicit Euler's energy drifts upward");
     has(0, "Stormer-Verlet's stays bounded");
@@ -106,6 +106,9 @@ fn tour_writes_the_report_with_verdicts() {
     has(5, "the energy decreases");
     has(8, "REBOUND's MEGNO tutorial");
     has(8, "escape");
+    has(10, "the fixed steps lose the orbit");
+    has(10, "the LogH triple jump keeps it");
+    has(10, "the LogH triple jump does better");
 }
 
 /// The page stands alone: an inlined stylesheet and nothing from the network, a table of
@@ -124,7 +127,7 @@ fn the_page_is_self_contained_with_contents_and_captions() {
         .skip(1)
         .map(|s| s.split('"').next().unwrap())
         .collect();
-    assert_eq!(targets.len(), 10, "one entry per experiment");
+    assert_eq!(targets.len(), 11, "one entry per experiment");
     for id in &targets {
         assert!(html.contains(&format!("<section id=\"{id}\">")), "no section {id}");
     }
@@ -137,7 +140,7 @@ fn the_page_is_self_contained_with_contents_and_captions() {
     );
     assert!(html.contains("<td class=\"num\">"), "numbers aligned right");
     let summary = std::fs::read_to_string(report.join("summary.md")).unwrap();
-    assert_eq!(summary.matches("**Verdict:**").count(), 10);
+    assert_eq!(summary.matches("**Verdict:**").count(), 11);
     assert_eq!(summary.matches("](").count(), figures);
 }
 

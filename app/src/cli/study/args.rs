@@ -36,12 +36,19 @@ pub struct CommonArgs {
 pub struct CompareArgs {
     /// A built-in scene (see `stormer scene list`) or a path to a scene file (.toml).
     pub scene: String,
-    /// The methods: catalog names or TOML method files, separated by commas.
+    /// The methods: catalog names or TOML method files, separated by commas; a suffix
+    /// `@logh`, `@ttl` or `@none` runs the method in that time transformation of the scene
+    /// (`triple_jump4@logh,triple_jump4@none,dop853@none`; without one, as the scene's
+    /// file says).
     #[arg(long, value_name = "A,B,..", value_delimiter = ',', required = true)]
     pub methods: Vec<String>,
-    /// Fixed step sizes, separated by commas.
+    /// Fixed step sizes (of the time t), separated by commas.
     #[arg(long, value_name = "H,..", value_delimiter = ',')]
     pub dt: Vec<f64>,
+    /// Fixed steps of the fictitious time s, for the methods run in a time transformation
+    /// [default: --dt, read as steps of s].
+    #[arg(long, value_name = "H,..", value_delimiter = ',')]
+    pub ds: Vec<f64>,
     /// Tolerances (rtol = atol) of adaptive runs, for the methods with an embedded pair.
     #[arg(long, value_name = "TOL,..", value_delimiter = ',')]
     pub tolerances: Vec<f64>,

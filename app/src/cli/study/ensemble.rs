@@ -10,6 +10,7 @@
 use super::ensemble_part::{self, EnsembleId, EnsemblePart, Member};
 use super::job::{self, SceneText};
 use super::scene_numbers::{self, Numbers};
+use super::transform;
 use super::vary::{self, Axis, Vary};
 use crate::cli::indicator::IndicatorArg;
 use crate::cli::output::one_line;
@@ -225,6 +226,13 @@ pub fn ensemble(args: &EnsembleArgs) -> anyhow::Result<()> {
         Some(m) => m.clone(),
         None => scene.parse()?.run().method.clone(),
     };
+    // an ensemble runs its members as the scene's file says (compare takes METHOD@logh)
+    if transform::split(&method_name)?.1 != transform::Asked::AsTheFileSays {
+        bail!(Error::invalid(
+            "--method",
+            format!("{method_name}: an ensemble runs the scene in the time transformation its file says; give the method's name alone")
+        ));
+    }
     let plan = job::plan(&scene, std::slice::from_ref(&method_name), args.overrides.t_end)?;
     let method = plan.resolved.first().context("no method")?;
     let mut id = EnsembleId {

@@ -1,5 +1,6 @@
 //! Planning a study on its scene, the reference solution, and running one job.
 
+use super::transform::{self, Asked};
 use super::{fnv1a, Control, Kind, MethodEntry, ReferenceInfo, Row, StudyId};
 use crate::cli::choice;
 use crate::cli::output::{file_safe, one_line};
@@ -81,21 +82,74 @@ impl Plan {
     }
 }
 
-/// Resolves every method and builds its stepper on the scene: an unknown method, or one the
-/// scene refuses (a splitting on a model that is not a Hamiltonian), fails the whole study
-/// before anything runs, with the scene's sentence.
+/// Resolves every method and builds its stepper on the scene, in the time transformation
+/// its suffix asks (`triple_jump4@logh`; none: as the scene's file says): an unknown
+/// method or transformation, or one the scene refuses (a splitting on a model that is not
+/// a Hamiltonian, a transformation of a model without the structure), fails the whole
+/// study before anything runs, with the scene's sentence.
 pub fn plan(scene: &SceneText, methods: &[String], t_end: Option<f64>) -> Result<Plan, Error> {
-    let mut plan = scene.parse()?.visit(Planner { methods, t_end })?;
+    let mut plan = scene.parse()?.visit(Planner { t_end })?;
     plan.scene_hash = scene.hash();
+    let mut transforms = Vec::new();
+    let mut exact = true;
+    for given in methods {
+        let (name, asked) = transform::split(given)?;
+        let method = choice::resolve(name, None)?;
+        let run_scene = transform::apply(scene.parse()?, asked)?;
+        let in_transform = transform::name_of(&run_scene);
+        let checked = run_scene
+            .visit(MethodCheck {
+                method: &method,
+                t_end: plan.t_end,
+            })
+            .map_err(|e| match asked {
+                // the transformation came from the file: say how to leave it
+                Asked::AsTheFileSays if in_transform != transform::NONE => Error::invalid(
+                    "--methods",
+                    format!(
+                        "{e} (the scene's file runs it in the time transformation {in_transform}: write \
+                         {given}@none to run it untransformed)"
+                    ),
+                ),
+                _ => e,
+            })?;
+        exact &= checked.exact;
+        plan.methods.push(MethodEntry {
+            given: given.clone(),
+            label: method.name().to_string(),
+            order: checked.order,
+            embedded: checked.embedded,
+            transform: None,
+        });
+        transforms.push(in_transform);
+        plan.resolved.push(method);
+    }
+    // once a method runs in a transformation, every label says which one each runs in
+    if transforms.iter().any(|&t| t != transform::NONE) {
+        for (m, t) in plan.methods.iter_mut().zip(transforms) {
+            m.label = format!("{}@{t}", m.label);
+            m.transform = Some(t.to_string());
+        }
+    }
+    for (k, m) in plan.methods.iter().enumerate() {
+        if plan.methods[..k].iter().any(|earlier| earlier.label == m.label) {
+            return Err(Error::invalid("--methods", format!("{} is given twice", m.label)));
+        }
+    }
+    // a time-transformed scene has no exact solution of its own: its errors are measured
+    // against the reference of its physical scene, and so are the others' of the study
+    if !exact {
+        plan.truth = "reference";
+    }
     Ok(plan)
 }
 
-struct Planner<'a> {
-    methods: &'a [String],
+/// The scene's own figures of a study (its span, stop, energy, truth), read as its file says.
+struct Planner {
     t_end: Option<f64>,
 }
 
-impl SceneVisitor for Planner<'_> {
+impl SceneVisitor for Planner {
     type Output = Result<Plan, Error>;
 
     fn visit<S: Scene>(self, setup: Setup<S>) -> Result<Plan, Error> {
@@ -107,30 +161,13 @@ impl SceneVisitor for Planner<'_> {
                 format!("must differ from the start time {t0}"),
             ));
         }
-        let mut methods: Vec<MethodEntry> = Vec::new();
-        let mut resolved = Vec::new();
-        for given in self.methods {
-            let method = choice::resolve(given, None)?;
-            let run = SceneRun::new(&setup, &method, &Options::default())?;
-            let label = method.name().to_string();
-            if methods.iter().any(|m| m.label == label) {
-                return Err(Error::invalid("--methods", format!("{label} is given twice")));
-            }
-            methods.push(MethodEntry {
-                given: given.clone(),
-                label,
-                order: run.stepper().info().order,
-                embedded: run.stepper().error_order().is_some(),
-            });
-            resolved.push(method);
-        }
         Ok(Plan {
             scene: setup.name.clone(),
             scene_hash: String::new(),
             t0,
             t_end,
-            methods,
-            resolved,
+            methods: Vec::new(),
+            resolved: Vec::new(),
             stop: setup.stop().map(|stop| stop.event),
             truth: if setup.exact(t_end).is_some() {
                 "exact"
@@ -140,6 +177,33 @@ impl SceneVisitor for Planner<'_> {
             energy: setup.initial_energy().is_some(),
             components: setup.model.components(&setup.y0),
             units: setup.units.clone(),
+        })
+    }
+}
+
+/// What a method is on the scene it runs on: its stepper built there.
+struct MethodCheck<'a> {
+    method: &'a Method,
+    t_end: f64,
+}
+
+/// The figures of a method built on its scene.
+struct Checked {
+    order: usize,
+    embedded: bool,
+    /// The scene it runs on has an exact solution at the end.
+    exact: bool,
+}
+
+impl SceneVisitor for MethodCheck<'_> {
+    type Output = Result<Checked, Error>;
+
+    fn visit<S: Scene>(self, setup: Setup<S>) -> Result<Checked, Error> {
+        let run = SceneRun::new(&setup, self.method, &Options::default())?;
+        Ok(Checked {
+            order: run.stepper().info().order,
+            embedded: run.stepper().error_order().is_some(),
+            exact: setup.exact(self.t_end).is_some(),
         })
     }
 }
@@ -295,7 +359,9 @@ pub fn run(
         reference,
         timing,
     };
-    match scene.parse() {
+    // the job runs in the transformation the study keeps for its method
+    let kept = study.methods[study.jobs[j].method].transform.as_deref();
+    match transform::kept(kept).and_then(|asked| transform::apply(scene.parse()?, asked)) {
         Ok(s) => s.visit(runner),
         Err(e) => runner.failed(Default::default(), &e),
     }
@@ -347,6 +413,14 @@ impl SceneVisitor for JobRunner<'_> {
                 1,
             ),
         };
+        // an orbit that comes close has its largest energy error at the close approach,
+        // which a fixed cadence of records would miss: a study with a time transformation
+        // records every step
+        let every = if study.methods.iter().any(|m| m.transform.is_some()) {
+            1
+        } else {
+            every
+        };
         let options = Options {
             steps,
             t_end: Some(study.t_end),
@@ -364,7 +438,7 @@ impl SceneVisitor for JobRunner<'_> {
         let (stats, track) = (measured.stats, &measured.track);
         // the truth where the run ended: at the end time, or where the scene's stop
         // condition ended it (the reference stops there too)
-        let exact = run.exact_at_end(&measured);
+        let exact = (study.truth == "exact").then(|| run.exact_at_end(&measured)).flatten();
         let truth: &[f64] = match (&exact, self.reference) {
             (Some(y), _) => y,
             (None, Some(r)) => &r.state,

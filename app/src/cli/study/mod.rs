@@ -19,6 +19,7 @@ mod part_mutations;
 mod report;
 mod scene_numbers;
 mod shards;
+mod transform;
 mod vary;
 
 use super::output::file_safe;
@@ -39,8 +40,9 @@ use shards::{join, parse_part, read_text, shard_jobs, write_json, Sharded};
 pub fn compare(args: &CompareArgs) -> anyhow::Result<()> {
     check_common(&args.common)?;
     positive_list("--dt", &args.dt)?;
+    positive_list("--ds", &args.ds)?;
     positive_list("--tolerances", &args.tolerances)?;
-    if args.dt.is_empty() && args.tolerances.is_empty() {
+    if args.dt.is_empty() && args.ds.is_empty() && args.tolerances.is_empty() {
         bail!(Error::invalid(
             "--dt/--tolerances",
             "give step sizes (--dt), tolerances (--tolerances) or both"
@@ -48,23 +50,21 @@ pub fn compare(args: &CompareArgs) -> anyhow::Result<()> {
     }
     let scene = SceneText::load(&args.scene)?;
     let plan = job::plan(&scene, &args.methods, args.common.t_end)?;
-    if args.dt.is_empty() {
-        if let Some(m) = plan.methods.iter().find(|m| !m.embedded) {
-            bail!(Error::Unsupported {
-                name: m.label.clone(),
-                reason: "it has no embedded error estimate, which adaptive steps (--tolerances) need; \
-                         give step sizes (--dt) too, or use a method with an embedded order (`stormer methods`)"
-                    .into(),
-            });
-        }
+    if !args.ds.is_empty() && !plan.methods.iter().any(MethodEntry::transformed) {
+        bail!(Error::invalid(
+            "--ds",
+            "these are steps of the fictitious time s of the methods run in a time transformation, and none \
+             is (write METHOD@logh or METHOD@ttl in --methods)"
+        ));
     }
     let mut jobs = Vec::new();
     for (k, m) in plan.methods.iter().enumerate() {
-        jobs.extend(args.dt.iter().map(|&h| Job {
+        let steps = compare_steps(m, args)?;
+        jobs.extend(steps.iter().map(|&h| Job {
             method: k,
             control: Control::Dt(h),
         }));
-        if m.embedded {
+        if m.embedded && !m.transformed() {
             jobs.extend(args.tolerances.iter().map(|&tol| Job {
                 method: k,
                 control: Control::Tolerance(tol),
@@ -76,6 +76,44 @@ pub fn compare(args: &CompareArgs) -> anyhow::Result<()> {
         .into_iter()
         .chain(args.methods.iter().map(String::as_str));
     execute(&scene, study, &methods, &args.common, inputs)
+}
+
+/// The fixed steps of method `m` in a comparison: `--ds` (steps of `s`) for a method run in
+/// a time transformation when given, else `--dt`; an error when it would have no run at all.
+fn compare_steps<'a>(m: &MethodEntry, args: &'a CompareArgs) -> Result<&'a [f64], Error> {
+    let steps = if m.transformed() && !args.ds.is_empty() {
+        &args.ds
+    } else {
+        &args.dt
+    };
+    let adaptive = m.embedded && !m.transformed() && !args.tolerances.is_empty();
+    if !steps.is_empty() || adaptive {
+        return Ok(steps);
+    }
+    Err(if m.transformed() {
+        Error::invalid(
+            "--ds",
+            format!(
+                "{} runs in a time transformation, at fixed steps of its fictitious time s: give them (--ds, or --dt)",
+                m.label
+            ),
+        )
+    } else if m.embedded {
+        Error::invalid(
+            "--dt/--tolerances",
+            format!(
+                "{} runs untransformed: give it steps of t (--dt) or tolerances (--tolerances); --ds are steps of s",
+                m.label
+            ),
+        )
+    } else {
+        Error::Unsupported {
+            name: m.label.clone(),
+            reason: "it has no embedded error estimate, which adaptive steps (--tolerances) need; \
+                     give step sizes (--dt) too, or use a method with an embedded order (`stormer methods`)"
+                .into(),
+        }
+    })
 }
 
 /// `stormer scan`.

@@ -43,6 +43,18 @@ pub struct MethodEntry {
     pub order: usize,
     /// Has an embedded error estimate (adaptive steps).
     pub embedded: bool,
+    /// The time transformation it runs in (`logh`, `ttl`, `none`), when a method of the
+    /// study runs in one: its fixed steps are then steps of the fictitious time `s`.
+    /// Absent: the scene untransformed, as its file says (and the parts of older versions).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub transform: Option<String>,
+}
+
+impl MethodEntry {
+    /// Steps in a fictitious time `s` (a time transformation other than `none`).
+    pub fn transformed(&self) -> bool {
+        self.transform.as_deref().is_some_and(|t| t != super::transform::NONE)
+    }
 }
 
 /// One job: a method (index into [`StudyId::methods`]) and its step control.

@@ -21,6 +21,9 @@ pub fn check(part: &Part) -> Result<(), String> {
         if m.label.trim().is_empty() {
             return Err(format!("study.methods[{k}].label: empty"));
         }
+        if let Some(t) = &m.transform {
+            super::transform::named(t).map_err(|why| format!("study.methods[{k}].transform: {why}"))?;
+        }
     }
     for (j, job) in study.jobs.iter().enumerate() {
         if job.method >= study.methods.len() {

@@ -21,6 +21,7 @@ fn good_part() -> String {
         label: label.into(),
         order,
         embedded: false,
+        transform: None,
     };
     let row = |job| Row {
         job,

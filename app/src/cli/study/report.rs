@@ -27,8 +27,11 @@ fn time(s: Option<f64>) -> String {
     }
 }
 
-fn control(c: Control) -> String {
+/// A job's step control; `ds` marks a step of the fictitious time `s` (`in_s`: the method
+/// runs in a time transformation).
+fn control(c: Control, in_s: bool) -> String {
     match c {
+        Control::Dt(h) if in_s => format!("ds {h}"),
         Control::Dt(h) => format!("{h}"),
         Control::Tolerance(t) => format!("tol {t:e}"),
         Control::Steps(n) => n.to_string(),
@@ -100,6 +103,11 @@ impl Table {
     }
 }
 
+/// A method of the study runs in a time transformation (its labels and table say which).
+fn transforms(study: &StudyId) -> bool {
+    study.methods.iter().any(|m| m.transform.is_some())
+}
+
 /// The table of `rows`; `fits` adds a scan's fitted orders.
 fn table(study: &StudyId, rows: &[Row], fits: Option<&[Fit]>) -> Table {
     let adaptive = rows
@@ -108,6 +116,7 @@ fn table(study: &StudyId, rows: &[Row], fits: Option<&[Fit]>) -> Table {
     let failures = rows.iter().any(|r| r.failure.is_some());
     let mut headers = vec!["method"];
     match study.kind {
+        Kind::Compare if transforms(study) => headers.extend(["dt, ds in s / tol", "steps"]),
         Kind::Compare => headers.extend(["dt / tol", "steps"]),
         Kind::Scan => headers.extend(["steps", "dt"]),
     }
@@ -134,9 +143,10 @@ fn table(study: &StudyId, rows: &[Row], fits: Option<&[Fit]>) -> Table {
         .zip(&locals)
         .map(|(r, local)| {
             let job = study.jobs[r.job];
-            let mut cells = vec![study.methods[job.method].label.clone()];
+            let method = &study.methods[job.method];
+            let mut cells = vec![method.label.clone()];
             match study.kind {
-                Kind::Compare => cells.extend([control(job.control), r.steps.to_string()]),
+                Kind::Compare => cells.extend([control(job.control, method.transformed()), r.steps.to_string()]),
                 Kind::Scan => {
                     let dt = (study.t_end - study.t0) / steps_of(study, r) as f64;
                     cells.extend([r.steps.to_string(), format!("{dt:.4e}")]);
@@ -201,9 +211,15 @@ fn context(part: &Part) -> String {
         Some(event) => format!("at the {event} (where the scene's runs stop), or at the end if there is none before"),
         None => "at the end".into(),
     };
+    let transformed = if transforms(s) {
+        "; METHOD@logh and METHOD@ttl run in that time transformation (@none: untransformed), at fixed steps ds \
+         of its fictitious time s, their errors, energies and end in the physical time t"
+    } else {
+        ""
+    };
     format!(
         "{} on {} (scene file hash {}), t from {} to {}: error = max over components of |y - y_true| {end}, against {truth}; \
-         evaluations = right-hand-side (force) evaluations, counted; time = best of up to {runs} runs{}.",
+         evaluations = right-hand-side (force) evaluations, counted; time = best of up to {runs} runs{}{transformed}.",
         match s.kind {
             Kind::Compare => "compare",
             Kind::Scan => "scan",
@@ -212,10 +228,10 @@ fn context(part: &Part) -> String {
         s.scene_hash,
         s.t0,
         s.t_end,
-        if s.energy {
-            "; max |dE/E0| over about a thousand records at a fixed cadence (every step when adaptive)"
-        } else {
-            ""
+        match (s.energy, transforms(s)) {
+            (false, _) => "",
+            (true, false) => "; max |dE/E0| over about a thousand records at a fixed cadence (every step when adaptive)",
+            (true, true) => "; max |dE/E0| over every step (the largest is at the close approach)",
         }
     )
 }
@@ -225,19 +241,32 @@ fn csv(study: &StudyId, rows: &[Row], fits: Option<&[Fit]>) -> String {
     let locals = local_orders(study, rows);
     match study.kind {
         Kind::Compare => {
-            out += "method,dt,tolerance,steps,rejected,evaluations,seconds,timing_runs,error,energy_error,failure\n";
+            // the transformation's columns only in a study with one
+            let transforms = transforms(study);
+            out += if transforms {
+                "method,transform,dt,ds,"
+            } else {
+                "method,dt,"
+            };
+            out += "tolerance,steps,rejected,evaluations,seconds,timing_runs,error,energy_error,failure\n";
             for r in rows {
                 let job = study.jobs[r.job];
+                let method = &study.methods[job.method];
                 let (dt, tol) = match job.control {
                     Control::Dt(h) => (Some(h), None),
                     Control::Tolerance(t) => (None, Some(t)),
                     Control::Steps(_) => (None, None),
                 };
+                let steps = match (transforms, method.transformed()) {
+                    (false, _) => raw(dt),
+                    (true, false) => format!("{},{}", method.transform.as_deref().unwrap_or(""), raw(dt)) + ",",
+                    (true, true) => format!("{},,{}", method.transform.as_deref().unwrap_or(""), raw(dt)),
+                };
                 let _ = writeln!(
                     out,
                     "{},{},{},{},{},{},{},{},{},{},{}",
-                    csv_text(&study.methods[job.method].label),
-                    raw(dt),
+                    csv_text(&method.label),
+                    steps,
                     raw(tol),
                     r.steps,
                     r.rejected,

@@ -7,6 +7,7 @@
 //! `picture` draws, `verdict` words the findings.
 
 mod chaos;
+mod close_approach;
 mod coulomb_magnetic;
 mod exb_drift;
 mod free_kick;
@@ -49,6 +50,7 @@ const EXPERIMENTS: &[(&str, Experiment)] = &[
     ("regular or chaotic", chaos::run),
     ("stability map", stability_map::run),
     ("work-precision", work_precision::run),
+    ("an orbit that comes close", close_approach::run),
 ];
 
 /// `stormer tour`.

@@ -9,7 +9,7 @@ use anyhow::Context;
 use stormer::driver::EventHit;
 use stormer::driver::Recorder;
 use stormer::{Error, State};
-use stormer_app::scenes::{self, Scene, SceneVisitor, Setup};
+use stormer_app::scenes::{self, AnyScene, Scene, SceneVisitor, Setup};
 
 /// In-memory recorder.
 struct Memory<'a, S: Scene> {
@@ -119,14 +119,19 @@ pub(super) fn sim_alpha(
     t_end: Option<f64>,
     every: Option<u64>,
 ) -> anyhow::Result<Trace> {
-    scenes::load(scene)?
-        .visit(Sim {
-            method,
-            alpha,
-            dt,
-            t_end,
-            every,
-            section: None,
-        })
-        .with_context(|| format!("tour: {method} on {scene}"))
+    let sim = Sim {
+        method,
+        alpha,
+        dt,
+        t_end,
+        every,
+        section: None,
+    };
+    sim_on(scenes::load(scene)?, sim)
+}
+
+/// The run `sim` on `scene` (a built-in scene, changed: e.g. without its time transformation).
+pub(super) fn sim_on(scene: AnyScene, sim: Sim<'_>) -> anyhow::Result<Trace> {
+    let (method, name) = (sim.method, scene.name().to_string());
+    scene.visit(sim).with_context(|| format!("tour: {method} on {name}"))
 }

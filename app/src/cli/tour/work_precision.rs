@@ -10,6 +10,7 @@ pub(super) fn run(out: &Path) -> anyhow::Result<Section> {
         scene: "kepler".into(),
         methods: vec!["rk4".into(), "velocity_verlet_kdk".into(), "triple_jump4".into()],
         dt: vec![0.04, 0.02, 0.01, 0.005],
+        ds: vec![],
         tolerances: vec![],
         common: crate::cli::study::CommonArgs {
             t_end: Some(10.0),
@@ -21,10 +22,29 @@ pub(super) fn run(out: &Path) -> anyhow::Result<Section> {
             jobs: None,
         },
     };
-    crate::cli::study::compare(&args)?;
+    let (pictures, table) = compared(out, &args, "wp-")?;
+    let verdict = "Work-precision on Kepler over 10 years (stormer compare): the diagrams plot the final error against force evaluations and against seconds.".to_string();
+    Ok(Section {
+        title: "Work-precision diagram: Kepler".into(),
+        verdict,
+        table,
+        pictures,
+    })
+}
+
+/// Runs the comparison `args` (its outputs in `args.common.out`) and copies its diagrams
+/// into the report as `{prefix}<name>.svg`: the pictures, in the order they are read
+/// (evaluations, seconds, energy), and the table of its markdown.
+pub(super) fn compared(
+    out: &Path,
+    args: &crate::cli::study::CompareArgs,
+    prefix: &str,
+) -> anyhow::Result<(Vec<Picture>, Vec<Vec<String>>)> {
+    let dir = &args.common.out;
+    crate::cli::study::compare(args)?;
     let mut pictures = Vec::new();
     let mut table = Vec::new();
-    let mut entries: Vec<PathBuf> = std::fs::read_dir(&dir)?
+    let mut entries: Vec<PathBuf> = std::fs::read_dir(dir)?
         .filter_map(|e| e.ok().map(|e| e.path()))
         .collect();
     // the diagrams in the order they are read: evaluations, seconds, energy
@@ -44,7 +64,7 @@ pub(super) fn run(out: &Path) -> anyhow::Result<Section> {
             .map(|n| n.to_string_lossy().into_owned())
             .unwrap_or_default();
         if name.ends_with(".svg") {
-            let file = format!("wp-{name}");
+            let file = format!("{prefix}{name}");
             std::fs::copy(&path, out.join(&file))?;
             pictures.push(Picture {
                 file,
@@ -63,13 +83,7 @@ pub(super) fn run(out: &Path) -> anyhow::Result<Section> {
                 .collect();
         }
     }
-    let verdict = "Work-precision on Kepler over 10 years (stormer compare): the diagrams plot the final error against force evaluations and against seconds.".to_string();
-    Ok(Section {
-        title: "Work-precision diagram: Kepler".into(),
-        verdict,
-        table,
-        pictures,
-    })
+    Ok((pictures, table))
 }
 
 /// What a diagram of `stormer compare` shows, by its file name.
