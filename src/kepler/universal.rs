@@ -107,7 +107,7 @@ impl<T: Real> LagrangeCoefficients<T> {
         if let Some(dual) = on_dual_numbers(mu, tau, r0_2, v2, eta0) {
             return dual;
         }
-        Self::from_invariants(mu, tau, r0_2, v2, eta0, |orbit, tau, bracket| {
+        Self::from_invariants(mu, tau, (r0_2, v2, eta0), true, |orbit, tau, bracket| {
             let (s, at_root) = solve(orbit, tau, bracket);
             if carries_values_only::<T>() {
                 at_root
@@ -125,18 +125,25 @@ impl<T: Real> LagrangeCoefficients<T> {
     #[inline]
     pub fn near_root(mu: T, tau: T, q: &[T], v: &[T], s: f64) -> Self {
         let (r0_2, v2, eta0) = (dot(q, q), dot(v, v), dot(q, v));
-        Self::from_invariants(mu, tau, r0_2, v2, eta0, |orbit, tau, _| corrected(orbit, tau, lit(s)))
+        if let Some(dual) = near_root_on_dual_numbers(mu, tau, r0_2, v2, eta0, s) {
+            return dual;
+        }
+        Self::from_invariants(mu, tau, (r0_2, v2, eta0), false, |orbit, tau, _| {
+            corrected(orbit, tau, lit(s))
+        })
     }
 
     /// The coefficients from `|q|^2`, `|v|^2` and `q.v`, the root of the reduced equation
-    /// found by `root` (given the orbit, the reduced `tau` and the bracket).
+    /// found by `root` (given the orbit, the reduced `tau` and the bracket). With `reduce`
+    /// false, `tau` is not reduced modulo the period and the bracket is empty: for a `root`
+    /// that starts from an iterate of the unreduced equation ([`Self::near_root`]; a step
+    /// of at most a radian of eccentric anomaly, which reduction leaves as it is).
     #[inline(always)]
     fn from_invariants(
         mu: T,
         tau: T,
-        r0_2: T,
-        v2: T,
-        eta0: T,
+        (r0_2, v2, eta0): (T, T, T),
+        reduce: bool,
         root: impl FnOnce(&Orbit<T>, T, (T, T)) -> Stiefel<T>,
     ) -> Self {
         let r0 = r0_2.sqrt();
@@ -151,7 +158,11 @@ impl<T: Real> LagrangeCoefficients<T> {
             zeta0: mu - beta * r0,
             beta,
         };
-        let (tau, bracket) = reduced(&orbit, mu, tau);
+        let (tau, bracket) = if reduce {
+            reduced(&orbit, mu, tau)
+        } else {
+            (tau, (T::zero(), T::zero()))
+        };
         let [_, g1, g2, g3] = root(&orbit, tau, bracket).g;
         let r = orbit.r0 + orbit.eta0 * g1 + orbit.zeta0 * g2;
         LagrangeCoefficients {
@@ -168,14 +179,14 @@ impl<T: Real> LagrangeCoefficients<T> {
 /// `f64`, and one Newton correction in dual numbers from it gives the derivative of the
 /// root (that of the implicit function) together with the same values as the `f64` solve,
 /// bit for bit. Solving in dual numbers throughout would carry derivatives through every
-/// iteration only to discard them: this costs about a third as much.
+/// iteration only to discard them; the correction takes the Stiefel functions' derivative parts
+/// from the chain rule ([`corrected_on_dual_numbers`]).
 #[inline(always)]
 fn on_dual_numbers<T: Real>(mu: T, tau: T, r0_2: T, v2: T, eta0: T) -> Option<LagrangeCoefficients<T>> {
     use core::any::Any;
     let dual = |x: &T| (x as &dyn Any).downcast_ref::<Dual64>().copied();
-    let back = |x: Dual64| (&x as &dyn Any).downcast_ref::<T>().copied();
     let (mu, tau, r0_2, v2, eta0) = (dual(&mu)?, dual(&tau)?, dual(&r0_2)?, dual(&v2)?, dual(&eta0)?);
-    let c = LagrangeCoefficients::from_invariants(mu, tau, r0_2, v2, eta0, |orbit, tau, (lo, hi)| {
+    let c = LagrangeCoefficients::from_invariants(mu, tau, (r0_2, v2, eta0), true, |orbit, tau, (lo, hi)| {
         let values = Orbit {
             r0: orbit.r0.re,
             eta0: orbit.eta0.re,
@@ -183,14 +194,101 @@ fn on_dual_numbers<T: Real>(mu: T, tau: T, r0_2: T, v2: T, eta0: T) -> Option<La
             beta: orbit.beta.re,
         };
         let (s, _) = solve(&values, tau.re, (lo.re, hi.re));
-        corrected(orbit, tau, Dual64::from(s))
+        corrected_on_dual_numbers(orbit, tau, s)
     });
+    back_from_dual(c)
+}
+
+/// [`LagrangeCoefficients::near_root`] on [`Dual64`] (`None` for every other scalar).
+#[inline(always)]
+fn near_root_on_dual_numbers<T: Real>(
+    mu: T,
+    tau: T,
+    r0_2: T,
+    v2: T,
+    eta0: T,
+    s: f64,
+) -> Option<LagrangeCoefficients<T>> {
+    use core::any::Any;
+    let dual = |x: &T| (x as &dyn Any).downcast_ref::<Dual64>().copied();
+    let (mu, tau, r0_2, v2, eta0) = (dual(&mu)?, dual(&tau)?, dual(&r0_2)?, dual(&v2)?, dual(&eta0)?);
+    let c = LagrangeCoefficients::from_invariants(mu, tau, (r0_2, v2, eta0), false, |orbit, tau, _| {
+        corrected_on_dual_numbers(orbit, tau, s)
+    });
+    back_from_dual(c)
+}
+
+/// Coefficients on [`Dual64`] as the scalar `T` they are (`None` when it is not).
+#[inline(always)]
+fn back_from_dual<T: Real>(c: LagrangeCoefficients<Dual64>) -> Option<LagrangeCoefficients<T>> {
+    use core::any::Any;
+    let back = |x: Dual64| (&x as &dyn Any).downcast_ref::<T>().copied();
     Some(LagrangeCoefficients {
         f_minus_one: back(c.f_minus_one)?,
         g: back(c.g)?,
         f_dot: back(c.f_dot)?,
         g_dot_minus_one: back(c.g_dot_minus_one)?,
     })
+}
+
+/// The coefficients of `c4(z) = sum_j (-z)^j / (2j + 4)!` and of `c5` (`k = 5`), nine terms:
+/// what the derivatives of `c2` and `c3` need, for `|z| <= 1` (the first omitted term is
+/// below `1e-20` of the sum).
+const fn stumpff_terms(k: u32) -> [f64; 9] {
+    let mut c = [0.0; 9];
+    let mut factorial = 1.0;
+    let mut i = 2;
+    while i <= k {
+        factorial *= i as f64;
+        i += 1;
+    }
+    let mut j = 0;
+    while j < 9 {
+        c[j] = if j % 2 == 0 { 1.0 / factorial } else { -1.0 / factorial };
+        let n = k + 2 * j as u32;
+        factorial *= ((n + 1) * (n + 2)) as f64;
+        j += 1;
+    }
+    c
+}
+const C4: [f64; 9] = stumpff_terms(4);
+const C5: [f64; 9] = stumpff_terms(5);
+
+/// `sum_j c_j z^j` by Horner's rule.
+#[inline(always)]
+fn horner(c: &[f64; 9], z: f64) -> f64 {
+    c.iter().rev().fold(0.0, |sum, &c| sum * z + c)
+}
+
+/// [`corrected`] on [`Dual64`] from the value `s`: the Stiefel functions' values in `f64`
+/// (the same bits as on dual numbers) and their derivative parts from the chain rule,
+/// `dG_k = s^(k+2) c_k'(z) dbeta` with `c_k' = (k c_(k+2) - c_(k+1)) / 2` (`s` carries none),
+/// instead of the Stumpff series summed on dual numbers: the same result to round-off at a
+/// fraction of the cost. Beyond `|beta s^2| <= 1` (where no quartering is needed), the
+/// series on dual numbers.
+#[inline(always)]
+fn corrected_on_dual_numbers(orbit: &Orbit<Dual64>, tau: Dual64, s: f64) -> Stiefel<Dual64> {
+    let s2 = s * s;
+    let z = orbit.beta.re * s2;
+    if !(z.abs() <= 1.0) {
+        return corrected(orbit, tau, Dual64::from(s));
+    }
+    let [c0, c1, c2, c3] = stumpff(z);
+    let (c4, c5) = (horner(&C4, z), horner(&C5, z));
+    let values = [c0, s * c1, s2 * c2, s2 * s * c3];
+    let half = 0.5 * orbit.beta.eps;
+    let slopes = [
+        -c1 * s2,
+        (c3 - c2) * s2 * s,
+        (2.0 * c4 - c3) * s2 * s2,
+        (3.0 * c5 - c4) * s2 * s2 * s,
+    ];
+    let st = Stiefel {
+        g: [0, 1, 2, 3].map(|k| Dual64::new(values[k], half * slopes[k])),
+    };
+    let s = Dual64::from(s);
+    let [residual, r, ..] = orbit.residual(&st, s, tau);
+    st.shifted(orbit.beta, -residual / r)
 }
 
 /// `f64` or `f32`: a scalar without derivative parts.

@@ -226,15 +226,24 @@ fn steps_of_up_to_a_radian_are_solved_in_the_lanes_and_give_dual_numbers_the_sam
         let (q, v) = states[0];
         let q: Vec<Dual64> = q.iter().zip([0.3, -0.2, 0.1]).map(|(&x, d)| seed(x, d)).collect();
         let v: Vec<Dual64> = v.iter().zip([0.1, 0.4, -0.5]).map(|(&x, d)| seed(x, d)).collect();
-        let mu = seed(1.0, 0.7);
+        // (a direction that changes the energy: beta's derivative part 0.4, not 0)
+        let mu = seed(1.0, 0.9);
         let at_root = LagrangeCoefficients::near_root(mu, Dual64::from(tau), &q, &v, s);
         let solved = LagrangeCoefficients::new(mu, Dual64::from(tau), &q, &v);
-        for (a, b) in [
+        // and both against central differences of the f64 solve along the seeded direction
+        let at = |h: f64| {
+            let shift = |x: &[Dual64]| -> Vec<f64> { x.iter().map(|x| x.re + h * x.eps).collect() };
+            let c = LagrangeCoefficients::new(mu.re + h * mu.eps, tau, &shift(&q), &shift(&v));
+            [c.f_minus_one, c.g, c.f_dot, c.g_dot_minus_one]
+        };
+        let (plus, minus) = (at(1e-6), at(-1e-6));
+        let pairs = [
             (at_root.f_minus_one, solved.f_minus_one),
             (at_root.g, solved.g),
             (at_root.f_dot, solved.f_dot),
             (at_root.g_dot_minus_one, solved.g_dot_minus_one),
-        ] {
+        ];
+        for (k, (a, b)) in pairs.into_iter().enumerate() {
             assert!(
                 (a.re - b.re).abs() <= 4.0 * EPS * b.re.abs().max(1.0),
                 "tau {tau}: {a} vs {b}"
@@ -242,6 +251,11 @@ fn steps_of_up_to_a_radian_are_solved_in_the_lanes_and_give_dual_numbers_the_sam
             assert!(
                 (a.eps - b.eps).abs() <= 1e-13 * b.eps.abs().max(1.0),
                 "tau {tau}: {a} vs {b}"
+            );
+            let difference = (plus[k] - minus[k]) / 2e-6;
+            assert!(
+                (a.eps - difference).abs() <= 1e-7 * difference.abs().max(1.0),
+                "tau {tau}: {a} against differences {difference}"
             );
         }
     }
