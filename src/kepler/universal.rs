@@ -270,7 +270,7 @@ fn horner(c: &[f64; 9], z: f64) -> f64 {
 fn corrected_on_dual_numbers(orbit: &Orbit<Dual64>, tau: Dual64, s: f64) -> Stiefel<Dual64> {
     let s2 = s * s;
     let z = orbit.beta.re * s2;
-    if !(z.abs() <= 1.0) {
+    if z.abs() > 1.0 || z.is_nan() {
         return corrected(orbit, tau, Dual64::from(s));
     }
     let [c0, c1, c2, c3] = stumpff(z);
