@@ -9,9 +9,9 @@ use super::picture::{picture, Figure};
 use super::sim::{sim, sim_on, Sim};
 use super::trace::Trace;
 use super::verdict::{energy_table, max_rel, measured};
-use super::work_precision::compared;
+use super::work_precision::{compared, tour_study};
 use crate::cli::plot::{Chart, Scale, Series};
-use crate::cli::study::{CommonArgs, CompareArgs};
+use crate::cli::study::CompareArgs;
 use crate::cli::tour_page::Section;
 use std::f64::consts::TAU;
 use std::path::Path;
@@ -90,15 +90,7 @@ fn front(out: &Path) -> anyhow::Result<(Vec<crate::cli::tour_page::Picture>, Vec
         dt: vec![1e-3, 3e-4, 1e-4],
         ds: vec![0.2, 0.1, 0.05],
         tolerances: vec![1e-8, 1e-10, 1e-12],
-        common: CommonArgs {
-            t_end: Some(TAU),
-            out: dir.clone(),
-            shard: None,
-            cache: dir.join("references"),
-            runs: 1,
-            min_time: 0.0,
-            jobs: None,
-        },
+        common: tour_study(&dir, TAU),
     };
     let (pictures, table) = compared(out, &args, "ca-")?;
     Ok((

@@ -12,15 +12,7 @@ pub(super) fn run(out: &Path) -> anyhow::Result<Section> {
         dt: vec![0.04, 0.02, 0.01, 0.005],
         ds: vec![],
         tolerances: vec![],
-        common: crate::cli::study::CommonArgs {
-            t_end: Some(10.0),
-            out: dir.clone(),
-            shard: None,
-            cache: dir.join("references"),
-            runs: 1,
-            min_time: 0.0,
-            jobs: None,
-        },
+        common: tour_study(&dir, 10.0),
     };
     let (pictures, table) = compared(out, &args, "wp-")?;
     let verdict = "Work-precision on Kepler over 10 years (stormer compare): the diagrams plot the final error against force evaluations and against seconds.".to_string();
@@ -30,6 +22,20 @@ pub(super) fn run(out: &Path) -> anyhow::Result<Section> {
         table,
         pictures,
     })
+}
+
+/// A tour's comparison: outputs and references in `dir`, up to `t_end`, each run timed
+/// once (the tour shows the front, not a benchmark).
+pub(super) fn tour_study(dir: &std::path::Path, t_end: f64) -> crate::cli::study::CommonArgs {
+    crate::cli::study::CommonArgs {
+        t_end: Some(t_end),
+        out: dir.to_path_buf(),
+        shard: None,
+        cache: dir.join("references"),
+        runs: 1,
+        min_time: 0.0,
+        jobs: None,
+    }
 }
 
 /// Runs the comparison `args` (its outputs in `args.common.out`) and copies its diagrams
