@@ -102,12 +102,18 @@ fn a_cancelled_run_keeps_its_records() {
     let stop = AtomicBool::new(false);
     let h = 1e-3;
     let every = 100;
+    // the flag is set 200 ms after the run starts (not after the thread does: under a
+    // loaded CI the run could start later than a fixed delay, and stop before its first
+    // step); a debug build takes seconds for the 10^8 steps, so the run is still going
+    let started = std::sync::Barrier::new(2);
     let interrupted = std::thread::scope(|scope| {
         scope.spawn(|| {
-            std::thread::sleep(std::time::Duration::from_millis(50));
+            started.wait();
+            std::thread::sleep(std::time::Duration::from_millis(200));
             stop.store(true, Ordering::Relaxed);
         });
         let mut euler = ExplicitRk::<Euler, _>::new(&[1.0, 0.0]);
+        started.wait();
         Driver::fixed(h)
             .every(every)
             .cancel_when(&stop)
