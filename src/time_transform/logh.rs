@@ -9,71 +9,53 @@ use crate::hamiltonian::Hamiltonian;
 use crate::real::ops::*;
 use crate::real::to_f64;
 use crate::{Error, State};
-use core::marker::PhantomData;
 
-/// The logarithmic Hamiltonian of problem `P` on extended states `E = (q, t | p, p_t)`.
-///
-/// With `p_t = -H(q0, p0)` (so that `K = H + p_t = 0` on the orbit), the Hamiltonian
-/// `Gamma = ln(T(p) + p_t) - ln U(q)` in the fictitious time `s` has the same orbits as `H`
-/// in `t`, with `dt/ds = 1 / (T + p_t) = 1 / U` on them. It is separable, so it is a
-/// [`Hamiltonian`] of the crate, and every splitting and composition of the catalog steps it
-/// unchanged, symplectic in the extended space with its order:
-///
-/// - drift (`p`, `p_t` fixed, so `T + p_t` is constant): `q += s dT/dp / (T + p_t)`,
-///   `t += s / (T + p_t)`;
-/// - kick (`q`, `t` fixed): `p += s F(q) / U(q)`, `p_t` unchanged (the potential is autonomous).
-///
-/// On the two-body problem the leapfrog on `Gamma` follows the Kepler ellipse exactly: only
-/// the time along it has an error (`tests/physics/time_transform.rs`). Runge-Kutta-Nystrom
-/// methods are refused (the drift's `ln(T + p_t)` is not quadratic in the momenta).
-///
-/// The physical time is the last coordinate ([`super::time_of`]); output at chosen
-/// physical times and a stop at a physical end use the driver's events on it
-/// ([`super::at_physical_times`], [`super::stop_at_physical_time`]). [`crate::Problem::energy`]
-/// of the extended state is the physical energy `H(q, p)`.
-///
-/// ```
-/// use stormer::catalog::StormerVerletDkd;
-/// use stormer::models::CentralForce;
-/// use stormer::stepper::SplittingStepper;
-/// use stormer::time_transform::LogH;
-/// use stormer::{Driver, Problem};
-/// // e = 0.9, a = 1, at pericentre
-/// let kepler = CentralForce::<f64, [f64; 4]>::new(1.0);
-/// let logh = LogH::<_, [f64; 6]>::new(kepler).unwrap();
-/// let y0 = logh.extend(0.0, &[0.1, 0.0, 0.0, 19f64.sqrt()]).unwrap();
-/// let mut leapfrog = SplittingStepper::<StormerVerletDkd, [f64; 6]>::new(&y0).unwrap();
-/// // 100 steps of fictitious time: one period (s is the eccentric anomaly here)
-/// let run = Driver::fixed(std::f64::consts::TAU / 100.0)
-///     .run(&logh, &mut leapfrog, 0.0, &y0, std::f64::consts::TAU)
-///     .unwrap();
-/// let (t, y) = logh.physical(run.y.last().unwrap()).unwrap();
-/// assert!((t - std::f64::consts::TAU).abs() < 1e-2); // a period of physical time
-/// let energy = logh.energy(0.0, run.y.last().unwrap()).unwrap();
-/// assert!((energy + 0.5).abs() < 1e-13); // on the exact orbit
-/// assert!((y[0] - 0.1).abs() < 1e-4);
-/// ```
-pub struct LogH<P, E> {
-    problem: P,
-    state: PhantomData<fn() -> E>,
+super::extended_problem::extended_problem! {
+    /// The logarithmic Hamiltonian of problem `P` on extended states `E = (q, t | p, p_t)`.
+    ///
+    /// With `p_t = -H(q0, p0)` (so that `K = H + p_t = 0` on the orbit), the Hamiltonian
+    /// `Gamma = ln(T(p) + p_t) - ln U(q)` in the fictitious time `s` has the same orbits as `H`
+    /// in `t`, with `dt/ds = 1 / (T + p_t) = 1 / U` on them. It is separable, so it is a
+    /// [`Hamiltonian`] of the crate, and every splitting and composition of the catalog steps it
+    /// unchanged, symplectic in the extended space with its order:
+    ///
+    /// - drift (`p`, `p_t` fixed, so `T + p_t` is constant): `q += s dT/dp / (T + p_t)`,
+    ///   `t += s / (T + p_t)`;
+    /// - kick (`q`, `t` fixed): `p += s F(q) / U(q)`, `p_t` unchanged (the potential is autonomous).
+    ///
+    /// On the two-body problem the leapfrog on `Gamma` follows the Kepler ellipse exactly: only
+    /// the time along it has an error (`tests/physics/time_transform.rs`). Runge-Kutta-Nystrom
+    /// methods are refused (the drift's `ln(T + p_t)` is not quadratic in the momenta).
+    ///
+    /// The physical time is the last coordinate ([`super::time_of`]); output at chosen
+    /// physical times and a stop at a physical end use the driver's events on it
+    /// ([`super::at_physical_times`], [`super::stop_at_physical_time`]). [`crate::Problem::energy`]
+    /// of the extended state is the physical energy `H(q, p)`.
+    ///
+    /// ```
+    /// use stormer::catalog::StormerVerletDkd;
+    /// use stormer::models::CentralForce;
+    /// use stormer::stepper::SplittingStepper;
+    /// use stormer::time_transform::LogH;
+    /// use stormer::{Driver, Problem};
+    /// // e = 0.9, a = 1, at pericentre
+    /// let kepler = CentralForce::<f64, [f64; 4]>::new(1.0);
+    /// let logh = LogH::<_, [f64; 6]>::new(kepler).unwrap();
+    /// let y0 = logh.extend(0.0, &[0.1, 0.0, 0.0, 19f64.sqrt()]).unwrap();
+    /// let mut leapfrog = SplittingStepper::<StormerVerletDkd, [f64; 6]>::new(&y0).unwrap();
+    /// // 100 steps of fictitious time: one period (s is the eccentric anomaly here)
+    /// let run = Driver::fixed(std::f64::consts::TAU / 100.0)
+    ///     .run(&logh, &mut leapfrog, 0.0, &y0, std::f64::consts::TAU)
+    ///     .unwrap();
+    /// let (t, y) = logh.physical(run.y.last().unwrap()).unwrap();
+    /// assert!((t - std::f64::consts::TAU).abs() < 1e-2); // a period of physical time
+    /// let energy = logh.energy(0.0, run.y.last().unwrap()).unwrap();
+    /// assert!((energy + 0.5).abs() < 1e-13); // on the exact orbit
+    /// assert!((y[0] - 0.1).abs() < 1e-4);
+    /// ```
+    LogH: TimeTransformable, "the logarithmic Hamiltonian", "problem for the logarithmic Hamiltonian",
+        "the potential's depth U = -V must be positive everywhere"
 }
-
-impl<P: Clone, E> Clone for LogH<P, E> {
-    fn clone(&self) -> Self {
-        LogH {
-            problem: self.problem.clone(),
-            state: PhantomData,
-        }
-    }
-}
-
-impl<P: core::fmt::Debug, E> core::fmt::Debug for LogH<P, E> {
-    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        f.debug_struct("LogH").field("problem", &self.problem).finish()
-    }
-}
-
-const NAME: &str = "the logarithmic Hamiltonian";
 
 impl<P, E> LogH<P, E>
 where
@@ -81,28 +63,6 @@ where
     P::State: StateOfLength,
     E: StateOfLength<Scalar = P::Scalar>,
 {
-    /// The logarithmic Hamiltonian of `problem`; an error when the potential's depth can
-    /// vanish ([`TimeTransformable::depth_positive`]) or when `E` cannot be two components
-    /// longer than the physical state (both lengths known at compile time).
-    pub fn new(problem: P) -> Result<Self, Error> {
-        state::check_static_lengths::<P::State, E>(NAME)?;
-        problem.depth_positive().map_err(|reason| {
-            Error::invalid(
-                "problem for the logarithmic Hamiltonian",
-                format!("the potential's depth U = -V must be positive everywhere: {reason}"),
-            )
-        })?;
-        Ok(LogH {
-            problem,
-            state: PhantomData,
-        })
-    }
-
-    /// The physical problem.
-    pub fn problem(&self) -> &P {
-        &self.problem
-    }
-
     /// The extended state `(q, t | p, p_t)` of the physical state `y = (q | p)` at time `t`,
     /// with `p_t = -H(q, p) = U(q) - T(p)`; an error for a state of the wrong length or
     /// where `U <= 0` (or not finite).
@@ -110,19 +70,9 @@ where
         let (q, p) = crate::hamiltonian::halves(y.as_slice());
         let depth = self.problem.potential_depth(q);
         if !(depth.is_finite() && depth > P::Scalar::zero()) {
-            return Err(state::shallow(NAME, to_f64(depth)));
+            return Err(state::shallow(Self::NAME, to_f64(depth)));
         }
-        state::extend(NAME, t, y, depth - self.problem.kinetic_energy(p))
-    }
-
-    /// `(t, y)`: the physical time and state of an extended state.
-    pub fn physical(&self, extended: &E) -> Result<(P::Scalar, P::State), Error> {
-        state::physical(NAME, extended)
-    }
-
-    /// The physical time of an extended state.
-    pub fn time(&self, extended: &E) -> P::Scalar {
-        state::time_of(extended)
+        state::extend(Self::NAME, t, y, depth - self.problem.kinetic_energy(p))
     }
 }
 

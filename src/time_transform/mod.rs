@@ -18,6 +18,7 @@
 //!
 //! docs/close-approaches.md says when to use which, with the tests behind each claim.
 
+mod extended_problem;
 mod logh;
 mod output;
 mod refusal;

@@ -10,67 +10,49 @@ use crate::method::Families;
 use crate::real::ops::*;
 use crate::real::{lit, to_f64};
 use crate::{Error, Problem, State};
-use core::marker::PhantomData;
 
-/// The time-transformed leapfrog's problem (TTL) for `P` on extended states
-/// `E = (q, t | p, W)`, with `Omega = U = -V` (for bodies, `G sum m_k m_l / r_kl`).
-///
-/// The sub-flows (`s` the fictitious time of a sub-step):
-///
-/// - drift (`p`, `W` fixed): `dt = s / W`, `q += dt dT/dp`, `t += dt`;
-/// - kick (`q`, `t` fixed): `dt = s / Omega(q)`, `p += dt F(q)`,
-///   `W += dt grad Omega . (v_old + v_new) / 2`, exact because `v = dT/dp` changes linearly
-///   during the kick ([`DiagonalMass`]).
-///
-/// `W` starts at `Omega(q0)` and `dW/dt = grad Omega . v` keeps it there along the exact
-/// orbit, so `dt/ds = 1 / Omega`: the steps shrink near a close approach. Every splitting
-/// and composition of the catalog steps it (the leapfrog is TTL, Yoshida's triple jump its
-/// fourth-order version). The map is **time-reversible but not symplectic** (the kick of `W`
-/// depends on `p`; `tests/physics/time_transform.rs` measures both), and for the same
-/// reason it refuses compensated summation ([`Splittable::COMPENSATION_REFUSED`]).
-///
-/// `Omega` is the potential's depth `U` itself: its gradient is then the force, which the
-/// kick already has, so the kick needs nothing more than the force buffer the splitting
-/// steppers give it (a separate `Omega`, e.g. `sum 1 / r_kl` for very unequal masses, would
-/// need its gradient beside the force, which that buffer has no room for).
-///
-/// ```
-/// use stormer::catalog::StormerVerletDkd;
-/// use stormer::models::NBody;
-/// use stormer::stepper::SplittingStepper;
-/// use stormer::time_transform::Ttl;
-/// use stormer::{Driver, Problem};
-/// // two unit masses on a circular orbit of radius 1/2 each around their centre
-/// let pair = NBody::<f64, [f64; 8]>::new(1.0, &[1.0, 1.0], 2).unwrap();
-/// let ttl = Ttl::<_, [f64; 10]>::new(pair).unwrap();
-/// let y0 = ttl.extend(0.0, &[-0.5, 0.0, 0.5, 0.0, 0.0, -0.5f64.sqrt(), 0.0, 0.5f64.sqrt()]).unwrap();
-/// let mut leapfrog = SplittingStepper::<StormerVerletDkd, [f64; 10]>::new(&y0).unwrap();
-/// let run = Driver::fixed(0.01).run(&ttl, &mut leapfrog, 0.0, &y0, 1.0).unwrap();
-/// let end = run.y.last().unwrap();
-/// assert!((ttl.time(end) - 1.0).abs() < 1e-12); // dt/ds = 1/Omega = 1 on the circle
-/// assert!((ttl.energy(0.0, end).unwrap() + 0.5).abs() < 1e-12);
-/// ```
-pub struct Ttl<P, E> {
-    problem: P,
-    state: PhantomData<fn() -> E>,
+super::extended_problem::extended_problem! {
+    /// The time-transformed leapfrog's problem (TTL) for `P` on extended states
+    /// `E = (q, t | p, W)`, with `Omega = U = -V` (for bodies, `G sum m_k m_l / r_kl`).
+    ///
+    /// The sub-flows (`s` the fictitious time of a sub-step):
+    ///
+    /// - drift (`p`, `W` fixed): `dt = s / W`, `q += dt dT/dp`, `t += dt`;
+    /// - kick (`q`, `t` fixed): `dt = s / Omega(q)`, `p += dt F(q)`,
+    ///   `W += dt grad Omega . (v_old + v_new) / 2`, exact because `v = dT/dp` changes linearly
+    ///   during the kick ([`DiagonalMass`]).
+    ///
+    /// `W` starts at `Omega(q0)` and `dW/dt = grad Omega . v` keeps it there along the exact
+    /// orbit, so `dt/ds = 1 / Omega`: the steps shrink near a close approach. Every splitting
+    /// and composition of the catalog steps it (the leapfrog is TTL, Yoshida's triple jump its
+    /// fourth-order version). The map is **time-reversible but not symplectic** (the kick of `W`
+    /// depends on `p`; `tests/physics/time_transform.rs` measures both), and for the same
+    /// reason it refuses compensated summation ([`Splittable::COMPENSATION_REFUSED`]).
+    ///
+    /// `Omega` is the potential's depth `U` itself: its gradient is then the force, which the
+    /// kick already has, so the kick needs nothing more than the force buffer the splitting
+    /// steppers give it (a separate `Omega`, e.g. `sum 1 / r_kl` for very unequal masses, would
+    /// need its gradient beside the force, which that buffer has no room for).
+    ///
+    /// ```
+    /// use stormer::catalog::StormerVerletDkd;
+    /// use stormer::models::NBody;
+    /// use stormer::stepper::SplittingStepper;
+    /// use stormer::time_transform::Ttl;
+    /// use stormer::{Driver, Problem};
+    /// // two unit masses on a circular orbit of radius 1/2 each around their centre
+    /// let pair = NBody::<f64, [f64; 8]>::new(1.0, &[1.0, 1.0], 2).unwrap();
+    /// let ttl = Ttl::<_, [f64; 10]>::new(pair).unwrap();
+    /// let y0 = ttl.extend(0.0, &[-0.5, 0.0, 0.5, 0.0, 0.0, -0.5f64.sqrt(), 0.0, 0.5f64.sqrt()]).unwrap();
+    /// let mut leapfrog = SplittingStepper::<StormerVerletDkd, [f64; 10]>::new(&y0).unwrap();
+    /// let run = Driver::fixed(0.01).run(&ttl, &mut leapfrog, 0.0, &y0, 1.0).unwrap();
+    /// let end = run.y.last().unwrap();
+    /// assert!((ttl.time(end) - 1.0).abs() < 1e-12); // dt/ds = 1/Omega = 1 on the circle
+    /// assert!((ttl.energy(0.0, end).unwrap() + 0.5).abs() < 1e-12);
+    /// ```
+    Ttl: DiagonalMass, "the time-transformed leapfrog", "problem for the time-transformed leapfrog",
+        "Omega = U = -V must be positive everywhere"
 }
-
-impl<P: Clone, E> Clone for Ttl<P, E> {
-    fn clone(&self) -> Self {
-        Ttl {
-            problem: self.problem.clone(),
-            state: PhantomData,
-        }
-    }
-}
-
-impl<P: core::fmt::Debug, E> core::fmt::Debug for Ttl<P, E> {
-    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        f.debug_struct("Ttl").field("problem", &self.problem).finish()
-    }
-}
-
-const NAME: &str = "the time-transformed leapfrog";
 
 impl<P, E> Ttl<P, E>
 where
@@ -78,45 +60,14 @@ where
     P::State: StateOfLength,
     E: StateOfLength<Scalar = P::Scalar>,
 {
-    /// The time-transformed problem of `problem`; an error when the potential's depth can
-    /// vanish or when `E` cannot be two components longer than the physical state.
-    pub fn new(problem: P) -> Result<Self, Error> {
-        state::check_static_lengths::<P::State, E>(NAME)?;
-        problem.depth_positive().map_err(|reason| {
-            Error::invalid(
-                "problem for the time-transformed leapfrog",
-                format!("Omega = U = -V must be positive everywhere: {reason}"),
-            )
-        })?;
-        Ok(Ttl {
-            problem,
-            state: PhantomData,
-        })
-    }
-
-    /// The physical problem.
-    pub fn problem(&self) -> &P {
-        &self.problem
-    }
-
     /// The extended state `(q, t | p, W)` of `y = (q | p)` at time `t`, with
     /// `W = Omega(q)`; an error for a state of the wrong length or where `Omega <= 0`.
     pub fn extend(&self, t: P::Scalar, y: &P::State) -> Result<E, Error> {
         let omega = self.problem.potential_depth(halves(y.as_slice()).0);
         if !(omega.is_finite() && omega > P::Scalar::zero()) {
-            return Err(state::shallow(NAME, to_f64(omega)));
+            return Err(state::shallow(Self::NAME, to_f64(omega)));
         }
-        state::extend(NAME, t, y, omega)
-    }
-
-    /// `(t, y)`: the physical time and state of an extended state.
-    pub fn physical(&self, extended: &E) -> Result<(P::Scalar, P::State), Error> {
-        state::physical(NAME, extended)
-    }
-
-    /// The physical time of an extended state.
-    pub fn time(&self, extended: &E) -> P::Scalar {
-        state::time_of(extended)
+        state::extend(Self::NAME, t, y, omega)
     }
 }
 
