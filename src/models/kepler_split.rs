@@ -501,8 +501,9 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> KeplerSplit<T, S, K> {
         self.forces_to_split(f);
     }
 
-    /// The positions `q` in the split's coordinates, in the scene's, into `scene`.
-    fn positions_to_scene(&self, q: &[T], scene: &mut [T]) {
+    /// The positions `q` in the split's coordinates, in the scene's, into `scene`: the same
+    /// bits as the positions of [`KeplerSplit::to_scene`], without the momenta.
+    pub fn positions_to_scene(&self, q: &[T], scene: &mut [T]) {
         match &self.transform {
             Transform::Jacobi(j) => j.positions_from_jacobi_into(q, scene),
             Transform::Democratic(dh) => {

@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 
 use stormer::text::number;
 use stormer::{Error, Method};
-use stormer_app::scenes::{ChaosRun, ChaosSample, Scene, Setup};
+use stormer_app::scenes::{ChaosRun, ChaosSample, Scene, Setup, Watch};
 
 use super::pipeline::{Options, Steps};
 
@@ -113,12 +113,15 @@ impl IndicatorArg {
 
 /// The indicators along the run `options` describes on `setup` with `method`, sampled
 /// every `every` steps: computed before the run writes anything, so a scene or an option
-/// the indicators cannot follow is refused with no file left behind.
+/// the indicators cannot follow is refused with no file left behind. `watch` sees every
+/// step, and the run's last, shorter step to `t_end` when the step does not divide the
+/// span ([`ChaosRun::watch`]).
 pub fn follow<S: Scene>(
     setup: &Setup<S>,
     method: &Method,
     options: &Options,
     t_end: f64,
+    watch: Option<Watch<'_>>,
 ) -> Result<Vec<ChaosSample>, Error> {
     let refuse = |reason: String| Err(Error::invalid("--indicator", reason));
     if setup.model.time_of(&setup.y0).is_some() {
@@ -142,11 +145,9 @@ pub fn follow<S: Scene>(
     }
     let t0 = setup.run.t0;
     let span = (t_end - t0) / h;
-    let steps = if (span - span.round()).abs() <= 1e-9 * span.max(1.0) {
-        span.round()
-    } else {
-        span.floor()
-    };
+    // whole steps as the driver counts them (src/driver/run.rs)
+    let exact = (span - span.round()).abs() <= 1e-9 * span.max(1.0);
+    let steps = if exact { span.round() } else { span.floor() };
     let run = ChaosRun {
         method,
         implicit: &options.implicit,
@@ -155,6 +156,8 @@ pub fn follow<S: Scene>(
         steps: steps as u64,
         every: options.every.unwrap_or(setup.run.every),
         cancel: options.cancel,
+        watch,
+        finish_at: watch.filter(|_| !exact).map(|_| t_end),
     };
     match setup.model.chaos(&setup.y0, &run) {
         Some(samples) => samples,

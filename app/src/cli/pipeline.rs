@@ -212,6 +212,18 @@ pub struct Track {
 }
 
 impl Track {
+    /// Takes the energy `e` of a record into `e0` (the first) and `max_de`.
+    pub fn add_energy(&mut self, e: f64) {
+        let e0 = *self.e0.get_or_insert(e);
+        // `f64::max` would drop a NaN (inf - inf) and report no drift at all
+        let de = (e - e0).abs();
+        self.max_de = if de.is_finite() && self.max_de.is_finite() {
+            self.max_de.max(de)
+        } else {
+            f64::NAN
+        };
+    }
+
     /// The largest relative energy drift `max |E - E0| / |E0|` (absolute when `E0 = 0`),
     /// and whether it is relative.
     pub fn energy_drift(&self) -> Option<(f64, bool)> {
@@ -662,14 +674,7 @@ impl<S: Scene, R: Recorder<f64, S::State> + ?Sized> Tracking<'_, S, R> {
         self.out.record(t, y, energy)?;
         let track = &mut self.track;
         if let Some(e) = energy {
-            let e0 = *track.e0.get_or_insert(e);
-            // `f64::max` would drop a NaN (inf - inf) and report no drift at all
-            let de = (e - e0).abs();
-            track.max_de = if de.is_finite() && track.max_de.is_finite() {
-                track.max_de.max(de)
-            } else {
-                f64::NAN
-            };
+            track.add_energy(e);
         }
         if let Some(dev) = deviation(self.setup, t, y) {
             track.max_error = Some(track.max_error.map_or(dev, |m| m.max(dev)));

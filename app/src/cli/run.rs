@@ -363,7 +363,7 @@ impl SceneVisitor for Runner<'_> {
         // before any file is written
         let chaos = args
             .indicator
-            .map(|_| super::indicator::follow(&setup, &method, &options, run.t_end()))
+            .map(|_| super::indicator::follow(&setup, &method, &options, run.t_end(), None))
             .transpose()?;
         let destination = if is_stdout(&path) {
             "stdout".into()

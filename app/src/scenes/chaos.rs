@@ -16,7 +16,7 @@ use stormer::{Error, Method, Problem, SecondOrder, State};
 use super::{ChargedScene, Harmonic, HenonHeiles, Pendulum};
 
 /// The fixed steps the indicators follow.
-#[derive(Debug, Clone, Copy)]
+#[derive(Clone, Copy)]
 pub struct ChaosRun<'a> {
     /// The method, as the run's.
     pub method: &'a Method,
@@ -33,7 +33,29 @@ pub struct ChaosRun<'a> {
     /// The run stops with [`Error::Cancelled`] once this flag is set (read every 1024
     /// steps at most, as the driver's).
     pub cancel: Option<&'a AtomicBool>,
+    /// Called after every step with the state; the run ends (with the samples so far) when
+    /// it returns false. An ensemble member takes its row from the indicators' run this way
+    /// instead of running the scene a second time (cli/study/one_run.rs).
+    pub watch: Option<Watch<'a>>,
+    /// With a watch: one more step, a shorter one after the last whole step, to this end
+    /// (the scene's run lands on its end time the same way); not counted in the indicators.
+    pub finish_at: Option<f64>,
 }
+
+/// What a [`ChaosRun::watch`] sees after a step: the time, the state on dual numbers (its
+/// real parts are the run's), the right-hand-side evaluations so far.
+#[derive(Debug, Clone, Copy)]
+pub struct Watched<'s> {
+    /// The time after the step.
+    pub t: f64,
+    /// The state after the step.
+    pub y: &'s [Dual64],
+    /// Right-hand-side evaluations of the run so far.
+    pub evaluations: u64,
+}
+
+/// A watch of the indicators' run ([`ChaosRun::watch`]).
+pub type Watch<'a> = &'a dyn Fn(Watched<'_>) -> bool;
 
 /// The indicators after the steps up to `t`.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -81,7 +103,22 @@ where
         }
         // up to the next sample, in runs of at most 1024 steps between reads of the flag
         let n = (every - done % every).min(1024).min(run.steps - done);
-        tangent.steps(dual, &mut stepper, run.h, n)?;
+        match run.watch {
+            None => tangent.steps(dual, &mut stepper, run.h, n)?,
+            Some(watch) => {
+                for _ in 0..n {
+                    tangent.steps(dual, &mut stepper, run.h, 1)?;
+                    let evaluations = stepper.counters().evaluations;
+                    if !watch(Watched {
+                        t: tangent.t(),
+                        y: tangent.dual_state().as_slice(),
+                        evaluations,
+                    }) {
+                        return Ok(samples);
+                    }
+                }
+            }
+        }
         done += n;
         if done % every == 0 || done == run.steps {
             samples.push(ChaosSample {
@@ -89,6 +126,18 @@ where
                 indicators: *tangent.indicators(),
             });
         }
+    }
+    if let (Some(watch), Some(t_end)) = (run.watch, run.finish_at) {
+        // the scene's last, shorter step, from the same state with the same stepper
+        let (t, y) = (tangent.t(), tangent.dual_state());
+        let mut y_new = y.clone();
+        stepper.step(dual, Dual64::from(t), Dual64::from(t_end - t), y, &mut y_new)?;
+        let evaluations = stepper.counters().evaluations;
+        watch(Watched {
+            t: t_end,
+            y: y_new.as_slice(),
+            evaluations,
+        });
     }
     Ok(samples)
 }
@@ -183,10 +232,10 @@ fn bodies_variation(masses: &[f64], dim: usize) -> Vec<f64> {
     delta
 }
 
-/// `|(dq, dp / m)|` of the dual parts of a scene state of bodies of `masses`.
-fn scene_measure(masses: &[Dual64], dim: usize, y: &DVector<Dual64>) -> f64 {
+/// `|(dq, dp / m)|` of the dual parts of a scene state `y` of bodies of `masses`.
+fn scene_measure(masses: &[Dual64], dim: usize, y: &[Dual64]) -> f64 {
     let n = masses.len() * dim;
-    let (q, p) = y.as_slice().split_at(n);
+    let (q, p) = y.split_at(n);
     let dq = q.iter().map(|x| x.eps * x.eps);
     let dv = p.iter().enumerate().map(|(k, x)| {
         let v = x.eps / masses[k / dim].re;
@@ -195,13 +244,31 @@ fn scene_measure(masses: &[Dual64], dim: usize, y: &DVector<Dual64>) -> f64 {
     dq.chain(dv).sum::<f64>().sqrt()
 }
 
+/// [`scene_measure`] of a state in the split's coordinates: changed to the scene's in a
+/// buffer on the stack (up to 16 bodies in 3-D; the measure is taken at every step).
+fn split_measure(twin: &KeplerSplit<Dual64, DVector<Dual64>>, y: &DVector<Dual64>) -> f64 {
+    const ON_STACK: usize = 96;
+    let (bodies, len) = (twin.bodies(), y.len());
+    let measure = |scene: &mut [Dual64]| {
+        scene.copy_from_slice(y.as_slice());
+        twin.split_to_scene(scene);
+        scene_measure(bodies.masses(), bodies.dim(), scene)
+    };
+    if len <= ON_STACK {
+        measure(&mut [Dual64::from(0.0); ON_STACK][..len])
+    } else {
+        measure(&mut vec![Dual64::from(0.0); len])
+    }
+}
+
 /// Gravitating bodies' twin.
 pub(crate) fn n_body(
     model: &NBody<f64, DVector<f64>>,
     y0: &DVector<f64>,
     run: &ChaosRun<'_>,
 ) -> Result<Vec<ChaosSample>, Error> {
-    let measure: Measure<NBody<Dual64, DVector<Dual64>>> = |twin, y| scene_measure(twin.masses(), twin.dim(), y);
+    let measure: Measure<NBody<Dual64, DVector<Dual64>>> =
+        |twin, y| scene_measure(twin.masses(), twin.dim(), y.as_slice());
     let delta0 = bodies_variation(model.masses(), model.dim());
     follow(
         &bodies_twin(model)?,
@@ -226,7 +293,6 @@ pub(crate) fn kepler_split(
     let delta = bodies_variation(bodies.masses(), bodies.dim());
     let seeded = DVector::from_iterator(scene.len(), scene.iter().zip(&delta).map(|(&y, &d)| Dual64::new(y, d)));
     let delta0: Vec<f64> = twin.from_scene(&seeded).iter().map(|x| x.eps).collect();
-    let measure: Measure<KeplerSplit<Dual64, DVector<Dual64>>> =
-        |twin, y| scene_measure(twin.bodies().masses(), twin.bodies().dim(), &twin.to_scene(y));
+    let measure: Measure<KeplerSplit<Dual64, DVector<Dual64>>> = split_measure;
     follow(&twin, &dual_vector(y0), run, (Some(delta0), Some(measure)))
 }

@@ -8,8 +8,8 @@ use stormer::models::NBody;
 
 use super::{Scene, Stop};
 
-/// The body farthest from the centre of mass of the bodies in the scene state `y`
-/// (positions then momenta), its index and its distance.
+/// The body farthest from the centre of mass of the bodies whose positions `y` begins
+/// with (momenta may follow), its index and its distance.
 pub fn farthest(bodies: &NBody<f64, DVector<f64>>, y: &[f64]) -> (usize, f64) {
     let (d, masses) = (bodies.dim(), bodies.masses());
     let total: f64 = masses.iter().sum();
@@ -35,7 +35,7 @@ pub fn farthest(bodies: &NBody<f64, DVector<f64>>, y: &[f64]) -> (usize, f64) {
 pub fn stop<S: Scene>(distance: f64) -> Stop<S> {
     Stop {
         event: "escape",
-        g: |model, _, y| escaped(model, y).map_or(0.0, |(_, r)| -r),
+        g: |model, _, y| farthest_in(model, y).map_or(0.0, |(_, r)| -r),
         level: -distance,
         report: |model, t, y| match escaped(model, y) {
             Some((name, r)) => format!(
@@ -51,10 +51,29 @@ pub fn stop<S: Scene>(distance: f64) -> Stop<S> {
 /// The farthest body of the scene state of `y` (the model's own state, in the scene's
 /// coordinates first), its name and distance; `None` for a model without bodies.
 fn escaped<S: Scene>(model: &S, y: &S::State) -> Option<(String, f64)> {
+    let (k, r) = farthest_in(model, y)?;
+    let names = model.bodies()?.names();
+    Some((names.get(k).cloned().unwrap_or_else(|| format!("body {k}")), r))
+}
+
+/// [`farthest`] of the scene state of `y`, with no allocation for up to 16 bodies in 3-D.
+fn farthest_in<S: Scene>(model: &S, y: &S::State) -> Option<(usize, f64)> {
     let bodies = model.bodies()?;
-    let scene = model.scene_state(y);
-    let (k, r) = farthest(bodies, stormer::State::as_slice(scene.as_ref()));
-    Some((bodies.names().get(k).cloned().unwrap_or_else(|| format!("body {k}")), r))
+    Some(with_positions(bodies.masses().len() * bodies.dim(), |q| {
+        model.scene_positions(y, q);
+        farthest(bodies, q)
+    }))
+}
+
+/// `f` on a buffer of `len` zeros: on the stack up to 16 bodies in 3-D (the check runs
+/// at every step of a stability map's members), on the heap beyond.
+fn with_positions<R>(len: usize, f: impl FnOnce(&mut [f64]) -> R) -> R {
+    const ON_STACK: usize = 48;
+    if len <= ON_STACK {
+        f(&mut [0.0; ON_STACK][..len])
+    } else {
+        f(&mut vec![0.0; len])
+    }
 }
 
 #[cfg(test)]

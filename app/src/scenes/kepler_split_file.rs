@@ -48,6 +48,10 @@ impl Scene for SplitBodies {
         Cow::Owned(self.to_scene(y))
     }
 
+    fn scene_positions(&self, y: &DVector<f64>, q: &mut [f64]) {
+        self.positions_to_scene(&y.as_slice()[..q.len()], q);
+    }
+
     super::chaos::chaos_twin!(kepler_split);
 
     fn bodies(&self) -> Option<&NBody<f64, DVector<f64>>> {

@@ -67,7 +67,7 @@ mod time_transformed;
 pub use arenstorf::{RestrictedThreeBody, ThreeBodyInitial, ThreeBodyParameters};
 pub use builtin::{builtin, load, parse, source, BuiltinScene, SceneSource, BUILTIN};
 pub use central_force_file::{CentralForceInitial, CentralForceParameters};
-pub use chaos::{ChaosRun, ChaosSample};
+pub use chaos::{ChaosRun, ChaosSample, Watch, Watched};
 pub use charged_file::{BottleTable, ChargedParameters, ChargedScene, DipoleTable, ParticleEntry};
 pub use damped::{DampedOscillator, DampedParameters};
 pub use file::{Number, RunSettings, Source, Units};
@@ -149,6 +149,13 @@ pub trait Scene: Problem<Scalar = f64> + Sized + 'static {
     /// Wisdom-Holman split, [`SplitBodies`]).
     fn scene_state<'a>(&self, y: &'a Self::State) -> std::borrow::Cow<'a, Self::State> {
         std::borrow::Cow::Borrowed(y)
+    }
+
+    /// The positions of the scene state of `y` (its first `q.len()` components) into `q`:
+    /// [`Scene::scene_state`]'s, without building the whole state where the model can (an
+    /// escape is checked at every step).
+    fn scene_positions(&self, y: &Self::State, q: &mut [f64]) {
+        q.copy_from_slice(&stormer::State::as_slice(self.scene_state(y).as_ref())[..q.len()]);
     }
 
     /// The stepper of `method` on this model: a catalog method's stepper built from its

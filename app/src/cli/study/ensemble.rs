@@ -9,12 +9,13 @@
 
 use super::ensemble_part::{self, EnsembleId, EnsemblePart, Member};
 use super::job::{self, SceneText};
+use super::one_run::OneRun;
 use super::scene_numbers::{self, Numbers};
 use super::transform;
 use super::vary::{self, Axis, Vary};
 use crate::cli::indicator::IndicatorArg;
 use crate::cli::output::one_line;
-use crate::cli::pipeline::{Options, SceneRun, Steps};
+use crate::cli::pipeline::{Options, Outcome, SceneRun, Steps};
 use crate::cli::scene_overrides::SceneOverrides;
 use anyhow::{anyhow, bail, Context};
 use rayon::prelude::*;
@@ -23,7 +24,7 @@ use std::io::Write as _;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 use stormer::{Error, Method, State};
-use stormer_app::scenes::{self, Scene, SceneVisitor, Setup, Units};
+use stormer_app::scenes::{self, ChaosSample, Scene, SceneVisitor, Setup, Units, Watched};
 
 /// Arguments of `stormer ensemble`.
 #[derive(Debug, clap::Args)]
@@ -127,58 +128,92 @@ impl SceneVisitor for Flight<'_> {
         };
         let mut run = SceneRun::new(&setup, self.method, &options)?;
         run.check_span()?;
-        // the indicator first: a scene it cannot follow refuses the ensemble (member 0 is
-        // refused with the reason) before any file is written
-        // (a run the indicator cannot finish, an orbit thrown out, is this member's failure)
-        let indicator = match self.indicator {
-            Some(i) => match crate::cli::indicator::follow(&setup, self.method, &options, run.t_end()) {
-                Ok(samples) => Some((i, Ok(samples))),
-                Err(e @ Error::InvalidArgument { .. }) => return Err(e),
-                Err(e) => Some((i, Err(e))),
-            },
-            None => None,
-        };
-        let outcome = run.measure();
-        let mut member = Member {
+        let member = Member {
             member: self.member,
             values: self.values,
             t: None,
             state: Vec::new(),
-            stopped: outcome.stopped.is_some(),
+            stopped: false,
             energy_error: None,
             indicator: None,
-            steps: outcome.stats.steps,
-            evaluations: outcome.stats.evaluations,
-            failure: outcome.error.as_ref().map(|e| one_line(&e.to_string())),
+            steps: 0,
+            evaluations: 0,
+            failure: None,
         };
-        if member.failure.is_some() {
-            return Ok(member);
-        }
-        let (t, state) = match &outcome.stopped {
-            Some(event) => (Some(event.t), event.y.as_slice().to_vec()),
-            None => (outcome.track.last_t, outcome.track.last.clone()),
+        let Some(i) = self.indicator else {
+            return Ok(scene_row(member, run.measure(), None));
         };
-        if t.iter().chain(&state).any(|x| !x.is_finite()) {
-            member.failure = Some("the final state is not finite".into());
-            return Ok(member);
+        // the indicator first: a scene it cannot follow refuses the ensemble (member 0 is
+        // refused with the reason) before any file is written; its run gives the row too
+        let one = OneRun::new(&setup, options.every.unwrap_or(setup.run.every));
+        let watch = |w: Watched<'_>| one.watch(w);
+        let t_end = run.t_end();
+        let follow = |watch| crate::cli::indicator::follow(&setup, self.method, &options, t_end, watch);
+        let samples = match follow(Some(&watch)) {
+            Err(e @ Error::InvalidArgument { .. }) => return Err(e),
+            samples => samples,
+        };
+        let stop_reached = one.stop_reached();
+        if let (Ok(samples), Some(row)) = (&samples, one.row()) {
+            return Ok(Member {
+                t: Some(row.t),
+                state: row.state,
+                energy_error: row.energy_error,
+                indicator: samples.last().map(|last| i.value(last)).filter(|x| x.is_finite()),
+                steps: row.steps,
+                evaluations: row.evaluations,
+                ..member
+            });
         }
-        (member.t, member.state) = (t, state);
-        member.energy_error = outcome
-            .track
-            .energy_drift()
-            .map(|(drift, _)| drift)
-            .filter(|d| d.is_finite());
-        match indicator {
-            // an orbit its stop condition ended (a body escaped) has no indicator at the end
-            Some(_) if member.stopped => {}
-            Some((i, Ok(samples))) => {
-                member.indicator = samples.last().map(|last| i.value(last)).filter(|x| x.is_finite())
-            }
-            Some((i, Err(e))) => member.failure = Some(format!("the {} run: {}", i.name(), one_line(&e.to_string()))),
-            None => {}
-        }
-        Ok(member)
+        // the scene's own run decides: where the stop condition ends it (an escape), where
+        // it fails; a stop the watch feared and the run did not meet needs the whole
+        // indicators' run (a run the indicator cannot finish, an orbit thrown out, is this
+        // member's failure)
+        let outcome = run.measure();
+        let samples = if stop_reached && outcome.stopped.is_none() && outcome.error.is_none() {
+            follow(None)
+        } else {
+            samples
+        };
+        Ok(scene_row(member, outcome, Some((i, samples))))
     }
+}
+
+/// A member's row from the scene's own run, and the indicator's samples when it has them.
+fn scene_row<S: Scene>(
+    mut member: Member,
+    outcome: Outcome<S>,
+    indicator: Option<(IndicatorArg, Result<Vec<ChaosSample>, Error>)>,
+) -> Member {
+    member.stopped = outcome.stopped.is_some();
+    member.steps = outcome.stats.steps;
+    member.evaluations = outcome.stats.evaluations;
+    member.failure = outcome.error.as_ref().map(|e| one_line(&e.to_string()));
+    if member.failure.is_some() {
+        return member;
+    }
+    let (t, state) = match &outcome.stopped {
+        Some(event) => (Some(event.t), event.y.as_slice().to_vec()),
+        None => (outcome.track.last_t, outcome.track.last.clone()),
+    };
+    if t.iter().chain(&state).any(|x| !x.is_finite()) {
+        member.failure = Some("the final state is not finite".into());
+        return member;
+    }
+    (member.t, member.state) = (t, state);
+    member.energy_error = outcome
+        .track
+        .energy_drift()
+        .map(|(drift, _)| drift)
+        .filter(|d| d.is_finite());
+    match indicator {
+        // an orbit its stop condition ended (a body escaped) has no indicator at the end
+        Some(_) if member.stopped => {}
+        Some((i, Ok(samples))) => member.indicator = samples.last().map(|last| i.value(last)).filter(|x| x.is_finite()),
+        Some((i, Err(e))) => member.failure = Some(format!("the {} run: {}", i.name(), one_line(&e.to_string()))),
+        None => {}
+    }
+    member
 }
 
 /// The axis label of a column: with the scene's unit of time or of length (for `x`, `y`,
@@ -364,4 +399,128 @@ pub fn merge(texts: &[(&PathBuf, String)], out: &Path) -> anyhow::Result<()> {
         crate::cli::output::refuse_overwriting(&output, &inputs)?;
     }
     super::ensemble_report::write(&whole, out, &format!("{} runs merged", whole.rows.len()))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::cli::indicator::{self, IndicatorArg};
+
+    /// Member `(a, e)` of the two-planet map, or a built-in scene as it is, run with `method`
+    /// for `t_end`, with and without the indicator.
+    fn both(scene: &str, orbit: Option<(f64, f64)>, method: &str, t_end: Option<f64>) -> (Member, Member) {
+        let source = scenes::source(scene).unwrap();
+        let text = match orbit {
+            Some((a, e)) => source
+                .text
+                .replace("a = 7.5, e = 0.1", &format!("a = {a:?}, e = {e:?}")),
+            None => source.text.clone(),
+        };
+        assert!(orbit.is_none_or(|(a, e)| text.contains(&format!("a = {a:?}, e = {e:?}, omega"))));
+        let method = Method::resolve(method).unwrap();
+        let flight = |indicator| Flight {
+            method: &method,
+            dt: None,
+            t_end,
+            indicator,
+            member: 0,
+            values: vec![],
+        };
+        let run = |indicator| {
+            let scene = scenes::parse(&text, &source.origin, &source.name).unwrap();
+            scene.visit(flight(indicator)).unwrap()
+        };
+        (run(Some(IndicatorArg::Megno)), run(None))
+    }
+
+    /// Whether the indicators' run alone gave the row (no run of the scene after it).
+    struct RowFromIndicators<'m>(&'m Method, Option<f64>);
+
+    impl SceneVisitor for RowFromIndicators<'_> {
+        type Output = bool;
+        fn visit<S: Scene>(self, setup: Setup<S>) -> bool {
+            let options = Options {
+                t_end: self.1,
+                ..Options::default()
+            };
+            let t_end = self.1.unwrap_or(setup.run.t_end);
+            let one = OneRun::new(&setup, setup.run.every);
+            let watch = |w: Watched<'_>| one.watch(w);
+            indicator::follow(&setup, self.0, &options, t_end, Some(&watch)).unwrap();
+            one.row().is_some()
+        }
+    }
+
+    /// The rows agree in everything but the state's and the energy drift's rounding; the
+    /// final states within `tol` of the largest component where the orbit is regular.
+    fn assert_same_row(with: &Member, without: &Member, tol: Option<f64>) {
+        let counts = |m: &Member| {
+            (
+                m.t.map(f64::to_bits),
+                m.steps,
+                m.evaluations,
+                m.stopped,
+                m.failure.clone(),
+            )
+        };
+        assert_eq!(counts(with), counts(without));
+        assert_eq!(with.state.len(), without.state.len());
+        if let Some(tol) = tol {
+            let scale = without.state.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+            let worst = stormer_max_difference(&with.state, &without.state);
+            assert!(worst <= tol * scale, "{worst:e} of {scale}");
+            let (a, b) = (with.energy_error.unwrap(), without.energy_error.unwrap());
+            assert!(
+                (a - b).abs() <= 1e-3 * b.abs() + 1e-15,
+                "energy drift {a:e} against {b:e}"
+            );
+        }
+    }
+
+    fn stormer_max_difference(a: &[f64], b: &[f64]) -> f64 {
+        crate::cli::pipeline::max_difference(a, b)
+    }
+
+    #[test]
+    fn the_row_from_the_indicators_run_is_the_scenes_run_to_round_off() {
+        // other models and methods, a whole number of steps or not, records every 8 or 10
+        for (scene, method, t_end) in [
+            ("kepler", "triple_jump4", Some(10.0)),
+            ("henon-heiles", "rk4", Some(50.3)),
+            ("pendulum", "yoshida6a", None),
+        ] {
+            let (with, without) = both(scene, None, method, t_end);
+            assert_same_row(&with, &without, Some(1e-12));
+            assert!(with.indicator.is_some() && without.indicator.is_none(), "{scene}");
+            let method = Method::resolve(method).unwrap();
+            assert!(
+                scenes::load(scene).unwrap().visit(RowFromIndicators(&method, t_end)),
+                "{scene}"
+            );
+        }
+        // the two-planet map's members: regular, chaotic (the span is not a whole number of
+        // steps: the last step is shorter), and one whose outer planet escapes at t = 429
+        for (orbit, escapes, tol) in [
+            ((7.5, 0.1), false, Some(1e-10)),
+            ((7.857142857142857, 0.35714285714285715), false, None),
+            ((7.428571428571429, 0.2857142857142857), true, Some(0.0)),
+        ] {
+            let (with, without) = both("two-planets", Some(orbit), "velocity_verlet_kdk", None);
+            assert_same_row(&with, &without, tol);
+            assert_eq!(with.stopped, escapes, "{orbit:?}");
+            assert_eq!(with.indicator.is_some(), !escapes, "{orbit:?}");
+            let scene = scenes::parse(
+                &scenes::source("two-planets")
+                    .unwrap()
+                    .text
+                    .replace("a = 7.5, e = 0.1", &format!("a = {:?}, e = {:?}", orbit.0, orbit.1)),
+                "built-in",
+                "two-planets",
+            )
+            .unwrap();
+            let method = Method::resolve("velocity_verlet_kdk").unwrap();
+            // where nothing escapes the row came from the indicators' run alone
+            assert_eq!(scene.visit(RowFromIndicators(&method, None)), !escapes, "{orbit:?}");
+        }
+    }
 }

@@ -12,6 +12,7 @@ mod ensemble_part;
 mod ensemble_report;
 mod fit;
 mod job;
+mod one_run;
 mod part;
 mod part_check;
 #[cfg(test)]
