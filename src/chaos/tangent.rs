@@ -6,6 +6,7 @@ use crate::real::ops::*;
 use crate::real::{lit, to_f64};
 use crate::verify::DualScalar;
 use crate::{Error, Problem, State, Stepper};
+use std::sync::Arc;
 
 /// The real scalar under a dual one (`f64` under `Dual64`).
 type Re<P> = <<P as Problem>::Scalar as DualScalar>::Re;
@@ -54,8 +55,32 @@ where
 pub type Rate<P> = fn(&P, &<P as Problem>::State, &<P as Problem>::State) -> f64;
 
 /// A measure of the variation held in the dual parts of a state of `P` (a norm of them:
-/// linear in them up to sign, e.g. their length after a linear change of coordinates).
-pub type Measure<P> = fn(&P, &<P as Problem>::State) -> f64;
+/// linear in them up to sign, e.g. their length after a linear change of coordinates): a
+/// function or a closure (which may hold what the measure needs, such as the change of
+/// coordinates on `f64`), shared between clones of a [`Tangent`].
+#[derive(Clone)]
+pub struct Measure<P: Problem>(Arc<MeasureFn<P>>);
+
+/// The function of a [`Measure`].
+type MeasureFn<P> = dyn Fn(&P, &<P as Problem>::State) -> f64 + Send + Sync;
+
+impl<P: Problem> Measure<P> {
+    /// The measure `f(problem, state)`.
+    pub fn new(f: impl Fn(&P, &P::State) -> f64 + Send + Sync + 'static) -> Self {
+        Measure(Arc::new(f))
+    }
+
+    /// The measure of the dual parts of `y`.
+    pub fn of(&self, problem: &P, y: &P::State) -> f64 {
+        (self.0)(problem, y)
+    }
+}
+
+impl<P: Problem> core::fmt::Debug for Measure<P> {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.write_str("Measure")
+    }
+}
 
 impl<P: Problem> Tangent<P>
 where
@@ -128,8 +153,8 @@ where
             self.origin = (self.t, self.steps, Some(h));
         }
         let (origin, origin_step, _) = self.origin;
-        if let (Some(measure), None) = (self.measure, self.log_measure0) {
-            self.log_measure0 = Some(measure(problem, &self.y).ln());
+        if let (Some(measure), None) = (&self.measure, self.log_measure0) {
+            self.log_measure0 = Some(measure.of(problem, &self.y).ln());
         }
         for _ in 0..n {
             let t = origin + lit::<Re<P>>((self.steps - origin_step) as f64) * h;
@@ -149,8 +174,8 @@ where
             core::mem::swap(&mut self.y, &mut self.y_new);
             self.steps += 1;
             self.t = origin + lit::<Re<P>>((self.steps - origin_step) as f64) * h;
-            let log_length = match (self.measure, self.log_measure0) {
-                (Some(measure), Some(log0)) => measure(problem, &self.y).ln() - log0,
+            let log_length = match (&self.measure, self.log_measure0) {
+                (Some(measure), Some(log0)) => measure.of(problem, &self.y).ln() - log0,
                 _ => length.ln(),
             };
             let elapsed = to_f64(self.t - self.t0);

@@ -5,7 +5,7 @@
 
 use num_dual::Dual64;
 use stormer::catalog;
-use stormer::chaos::{final_state_derivative, Tangent};
+use stormer::chaos::{final_state_derivative, Measure, Tangent};
 use stormer::magnetic::Charged;
 use stormer::models::{CentralForce, ChargedParticles, KeplerCoordinates, KeplerSplit, MagneticField, NBody};
 
@@ -452,7 +452,7 @@ fn a_measure_of_the_variation_changes_the_indicators_transient_not_their_limit()
     let kepler = CentralForce::<Dual64, [Dual64; 4]>::new(Dual64::from(1.0));
     let y0 = [0.5, 0.0, 0.0, 3.0f64.sqrt()].map(Dual64::from);
     let method = Method::named("velocity_verlet_kdk").unwrap();
-    let run = |measure: Option<stormer::chaos::Measure<CentralForce<Dual64, [Dual64; 4]>>>| {
+    let run = |measure: Option<Measure<CentralForce<Dual64, [Dual64; 4]>>>| {
         let mut stepper = method.stepper_for(&kepler, &y0, &Default::default()).unwrap();
         let mut tangent = Tangent::new(0.0, &y0, &[1.0, 0.3, 0.3, 0.3]).unwrap();
         if let Some(measure) = measure {
@@ -463,7 +463,11 @@ fn a_measure_of_the_variation_changes_the_indicators_transient_not_their_limit()
             .unwrap();
         *tangent.indicators()
     };
-    let (euclid, three, other) = (run(None), run(Some(three_lengths)), run(Some(weighted)));
+    let (euclid, three, other) = (
+        run(None),
+        run(Some(Measure::new(three_lengths))),
+        run(Some(Measure::new(weighted))),
+    );
     assert!(
         (euclid.mean_megno() - three.mean_megno()).abs() < 1e-9,
         "{euclid:?} {three:?}"

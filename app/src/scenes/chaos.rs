@@ -5,7 +5,9 @@
 use nalgebra::DVector;
 use std::sync::atomic::{AtomicBool, Ordering};
 use stormer::chaos::{Indicators, Measure, Tangent};
+use stormer::flows::Splittable;
 use stormer::magnetic::Charged;
+use stormer::method::StepperResult;
 use stormer::models::{CentralForce, KeplerSplit, NBody, SplitMix64};
 use stormer::stepper::ImplicitOptions;
 use stormer::verify::problems::HenonHeiles as HenonHeilesTwin;
@@ -72,6 +74,21 @@ fn initial_variation(dim: usize) -> Vec<f64> {
     SplitMix64::new(2026).take(dim).collect()
 }
 
+/// How a twin's stepper is built, when not by [`Method::stepper_for`]: the generated
+/// steppers of release builds for the models whose maps users time
+/// ([`crate::compiled_in_release!`]).
+type BuildStepper<D> = fn(&Method, &D, &<D as Problem>::State, &ImplicitOptions) -> StepperResult<D>;
+
+/// The generated steppers of every catalog splitting and composition for `D` in release
+/// builds; `None` (the steppers built from data) in debug builds, which compile no
+/// catalog-wide dispatch (docs/build-shape.md).
+fn compiled_in_release<D: Splittable + 'static>() -> Option<BuildStepper<D>> {
+    #[cfg(not(debug_assertions))]
+    return Some(|method, dual, y0, implicit| method.compiled_stepper_for_splittable(dual, y0, implicit));
+    #[cfg(debug_assertions)]
+    None
+}
+
 /// The indicators along `run` of the dual problem `dual` from `y0` (the dual form of the
 /// scene's initial state), the variation starting along `delta0` (by default
 /// [`initial_variation`]) and measured by `measure` (by default its Euclidean length).
@@ -80,12 +97,16 @@ pub fn follow<D>(
     y0: &D::State,
     run: &ChaosRun<'_>,
     (delta0, measure): (Option<Vec<f64>>, Option<Measure<D>>),
+    build: Option<BuildStepper<D>>,
 ) -> Result<Vec<ChaosSample>, Error>
 where
     D: Problem<Scalar = Dual64> + 'static,
     D::State: 'static,
 {
-    let mut stepper = run.method.stepper_for(dual, y0, run.implicit)?;
+    let mut stepper = match build {
+        Some(build) => build(run.method, dual, y0, run.implicit)?,
+        None => run.method.stepper_for(dual, y0, run.implicit)?,
+    };
     let delta0 = delta0.unwrap_or_else(|| initial_variation(y0.dim()));
     let mut tangent = Tangent::new(run.t0, y0, &delta0)?;
     if let Some(measure) = measure {
@@ -186,17 +207,17 @@ pub(crate) fn harmonic(model: &Harmonic, y0: &[f64; 2], run: &ChaosRun<'_>) -> R
     let twin = Oscillator {
         w0_squared: Dual64::from(model.w0 * model.w0),
     };
-    follow(&twin, &dual(y0), run, (None, None))
+    follow(&twin, &dual(y0), run, (None, None), None)
 }
 
 /// The pendulum's twin.
 pub(crate) fn pendulum(_model: &Pendulum, y0: &[f64; 2], run: &ChaosRun<'_>) -> Result<Vec<ChaosSample>, Error> {
-    follow(&PendulumTwin::<Dual64>::new(), &dual(y0), run, (None, None))
+    follow(&PendulumTwin::<Dual64>::new(), &dual(y0), run, (None, None), None)
 }
 
 /// Henon-Heiles's twin.
 pub(crate) fn henon_heiles(_model: &HenonHeiles, y0: &[f64; 4], run: &ChaosRun<'_>) -> Result<Vec<ChaosSample>, Error> {
-    follow(&HenonHeilesTwin::<Dual64>::new(), &dual(y0), run, (None, None))
+    follow(&HenonHeilesTwin::<Dual64>::new(), &dual(y0), run, (None, None), None)
 }
 
 /// A central force's twin.
@@ -206,13 +227,13 @@ pub(crate) fn central_force(
     run: &ChaosRun<'_>,
 ) -> Result<Vec<ChaosSample>, Error> {
     let twin = CentralForce::<Dual64, DVector<Dual64>>::new(Dual64::from(model.mu));
-    follow(&twin, &dual_vector(y0), run, (None, None))
+    follow(&twin, &dual_vector(y0), run, (None, None), None)
 }
 
 /// Charged particles' twin: the same particles and fields on dual numbers.
 pub(crate) fn charged(model: &ChargedScene, y0: &DVector<f64>, run: &ChaosRun<'_>) -> Result<Vec<ChaosSample>, Error> {
     let twin = Charged(model.0.converted::<Dual64, DVector<Dual64>>());
-    follow(&twin, &dual_vector(y0), run, (None, None))
+    follow(&twin, &dual_vector(y0), run, (None, None), None)
 }
 
 /// The same bodies on dual numbers (the same pulling ones).
@@ -232,32 +253,37 @@ fn bodies_variation(masses: &[f64], dim: usize) -> Vec<f64> {
     delta
 }
 
-/// `|(dq, dp / m)|` of the dual parts of a scene state `y` of bodies of `masses`.
-fn scene_measure(masses: &[Dual64], dim: usize, y: &[Dual64]) -> f64 {
+/// `|(dq, dp / m)|` of the variation `delta` (positions then momenta, in the scene's
+/// coordinates) of bodies of `masses`.
+fn scene_measure(masses: &[f64], dim: usize, delta: impl Iterator<Item = f64>) -> f64 {
     let n = masses.len() * dim;
-    let (q, p) = y.split_at(n);
-    let dq = q.iter().map(|x| x.eps * x.eps);
-    let dv = p.iter().enumerate().map(|(k, x)| {
-        let v = x.eps / masses[k / dim].re;
-        v * v
-    });
-    dq.chain(dv).sum::<f64>().sqrt()
+    let sum: f64 = delta
+        .enumerate()
+        .map(|(i, d)| {
+            let v = if i < n { d } else { d / masses[(i - n) / dim] };
+            v * v
+        })
+        .sum();
+    sum.sqrt()
 }
 
-/// [`scene_measure`] of a state in the split's coordinates: changed to the scene's in a
-/// buffer on the stack (up to 16 bodies in 3-D; the measure is taken at every step).
-fn split_measure(twin: &KeplerSplit<Dual64, DVector<Dual64>>, y: &DVector<Dual64>) -> f64 {
+/// [`scene_measure`] of the dual parts of a state in the split's coordinates: changed to
+/// the scene's (the change is linear) by `split`, the same split on `f64`, in a buffer on
+/// the stack up to 16 bodies in 3-D (the measure is taken at every step).
+fn split_measure(split: &KeplerSplit<f64, DVector<f64>>, y: &DVector<Dual64>) -> f64 {
     const ON_STACK: usize = 96;
-    let (bodies, len) = (twin.bodies(), y.len());
-    let measure = |scene: &mut [Dual64]| {
-        scene.copy_from_slice(y.as_slice());
-        twin.split_to_scene(scene);
-        scene_measure(bodies.masses(), bodies.dim(), scene)
+    let bodies = split.bodies();
+    let measure = |delta: &mut [f64]| {
+        for (d, y) in delta.iter_mut().zip(y.iter()) {
+            *d = y.eps;
+        }
+        split.split_to_scene(delta);
+        scene_measure(bodies.masses(), bodies.dim(), delta.iter().copied())
     };
-    if len <= ON_STACK {
-        measure(&mut [Dual64::from(0.0); ON_STACK][..len])
+    if y.len() <= ON_STACK {
+        measure(&mut [0.0; ON_STACK][..y.len()])
     } else {
-        measure(&mut vec![Dual64::from(0.0); len])
+        measure(&mut vec![0.0; y.len()])
     }
 }
 
@@ -267,14 +293,17 @@ pub(crate) fn n_body(
     y0: &DVector<f64>,
     run: &ChaosRun<'_>,
 ) -> Result<Vec<ChaosSample>, Error> {
-    let measure: Measure<NBody<Dual64, DVector<Dual64>>> =
-        |twin, y| scene_measure(twin.masses(), twin.dim(), y.as_slice());
+    let (masses, dim) = (model.masses().to_vec(), model.dim());
+    let measure = Measure::new(move |_: &NBody<Dual64, DVector<Dual64>>, y: &DVector<Dual64>| {
+        scene_measure(&masses, dim, y.iter().map(|x| x.eps))
+    });
     let delta0 = bodies_variation(model.masses(), model.dim());
     follow(
         &bodies_twin(model)?,
         &dual_vector(y0),
         run,
         (Some(delta0), Some(measure)),
+        compiled_in_release(),
     )
 }
 
@@ -293,6 +322,14 @@ pub(crate) fn kepler_split(
     let delta = bodies_variation(bodies.masses(), bodies.dim());
     let seeded = DVector::from_iterator(scene.len(), scene.iter().zip(&delta).map(|(&y, &d)| Dual64::new(y, d)));
     let delta0: Vec<f64> = twin.from_scene(&seeded).iter().map(|x| x.eps).collect();
-    let measure: Measure<KeplerSplit<Dual64, DVector<Dual64>>> = split_measure;
-    follow(&twin, &dual_vector(y0), run, (Some(delta0), Some(measure)))
+    let split = model.clone();
+    let measure =
+        Measure::new(move |_: &KeplerSplit<Dual64, DVector<Dual64>>, y: &DVector<Dual64>| split_measure(&split, y));
+    follow(
+        &twin,
+        &dual_vector(y0),
+        run,
+        (Some(delta0), Some(measure)),
+        compiled_in_release(),
+    )
 }
