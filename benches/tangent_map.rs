@@ -20,6 +20,7 @@ use std::hint::black_box;
 use criterion::{criterion_group, Criterion};
 use num_dual::Dual64;
 use stormer::chaos::Tangent;
+use stormer::flows::Splittable;
 use stormer::magnetic::Charged;
 use stormer::models::{ChargedParticles, KeplerCoordinates, KeplerSplit, MagneticField, NBody};
 use stormer::real::lit;
@@ -47,15 +48,32 @@ fn coulomb_magnetic<T: Real>() -> Charged<ChargedParticles<T, [T; 6]>> {
     )
 }
 
-/// `steps` plain steps of `method` on `problem` from `y0`.
-fn plain<P: Problem<Scalar = f64> + 'static>(problem: &P, method: &str, steps: usize, h: f64, y0: P::State) -> P::State
-where
-    P::State: 'static,
-{
-    let mut stepper = Method::resolve(method)
+/// How a kernel's stepper is built: from the method's data (`Method::stepper_for`, what a
+/// library user's `stepper_for` runs) or generated (`compiled_stepper_for_splittable`, the
+/// application's release route for the n-body and split scenes and their variations).
+type Build<P> = fn(&str, &P, &<P as Problem>::State) -> Box<dyn Stepper<P>>;
+
+fn from_data<P: Problem + 'static>(method: &str, problem: &P, y0: &P::State) -> Box<dyn Stepper<P>> {
+    let method = Method::resolve(method).unwrap();
+    method.stepper_for(problem, y0, &Default::default()).unwrap()
+}
+
+fn generated<P: Splittable + 'static>(method: &str, problem: &P, y0: &P::State) -> Box<dyn Stepper<P>> {
+    let method = Method::resolve(method).unwrap();
+    method
+        .compiled_stepper_for_splittable(problem, y0, &Default::default())
         .unwrap()
-        .stepper_for(problem, &y0, &Default::default())
-        .unwrap();
+}
+
+/// `steps` plain steps of `method` on `problem` from `y0`.
+fn plain<P: Problem<Scalar = f64> + 'static>(
+    (problem, build): (&P, Build<P>),
+    method: &str,
+    steps: usize,
+    h: f64,
+    y0: P::State,
+) -> P::State {
+    let mut stepper = build(method, problem, &y0);
     let (mut y, mut y_new) = (y0.clone(), y0);
     for i in 0..steps {
         stepper.step(problem, i as f64 * h, h, &y, &mut y_new).unwrap();
@@ -67,19 +85,13 @@ where
 
 /// The same steps on dual numbers with one variation, the indicators updated every step.
 fn with_variation<P: Problem<Scalar = Dual64> + 'static>(
-    problem: &P,
+    (problem, build): (&P, Build<P>),
     method: &str,
     steps: usize,
     h: f64,
     y0: P::State,
-) -> f64
-where
-    P::State: 'static,
-{
-    let mut stepper = Method::resolve(method)
-        .unwrap()
-        .stepper_for(problem, &y0, &Default::default())
-        .unwrap();
+) -> f64 {
+    let mut stepper = build(method, problem, &y0);
     let delta: Vec<f64> = (0..stormer::State::dim(&y0)).map(|i| 1.0 + i as f64).collect();
     let mut tangent = Tangent::new(0.0, &y0, &delta).unwrap();
     tangent.steps(problem, &mut stepper, h, steps as u64).unwrap();
@@ -103,10 +115,18 @@ fn plain_and_variation<R, D, const N: usize>(
 {
     let mut group = c.benchmark_group(format!("tangent_map_1000_steps/{name}"));
     group.bench_function("plain", |b| {
-        b.iter(|| plain(real, "velocity_verlet_kdk", STEPS, black_box(h), y0))
+        b.iter(|| plain((real, from_data), "velocity_verlet_kdk", STEPS, black_box(h), y0))
     });
     group.bench_function("variation", |b| {
-        b.iter(|| with_variation(dual, "velocity_verlet_kdk", STEPS, black_box(h), y0.map(Dual64::from)))
+        b.iter(|| {
+            with_variation(
+                (dual, from_data),
+                "velocity_verlet_kdk",
+                STEPS,
+                black_box(h),
+                y0.map(Dual64::from),
+            )
+        })
     });
     group.finish();
 }
@@ -123,40 +143,53 @@ fn interleaved_ratios() {
     let (split, split_dual) = (kepler_split::<f64>(), kepler_split::<Dual64>());
     let (charged, charged_dual) = (coulomb_magnetic::<f64>(), coulomb_magnetic::<Dual64>());
     let (y_outer, y_charged) = (outer_start(), [1.0, 1.0, 1.0, 0.0, 0.0, 0.0]);
-    println!("\nthe Wisdom-Holman step (velocity Verlet in the Kepler split), outer solar system:");
-    interleaved::print_ratios(
-        &[
-            interleaved::kernel(
-                "plain",
-                |n, h, y| plain(&split, "velocity_verlet_kdk", n, h, y)[0],
-                STEPS,
-                10.0,
-                y_outer,
-            ),
-            interleaved::kernel(
-                "one variation",
-                |n, h, y: [f64; 24]| with_variation(&split_dual, "velocity_verlet_kdk", n, h, y.map(Dual64::from)),
-                STEPS,
-                10.0,
-                y_outer,
-            ),
-        ],
-        STEPS,
-    );
+    for (route, build, build_dual) in [
+        ("from data", from_data as Build<_>, from_data as Build<_>),
+        ("generated", generated, generated),
+    ] {
+        println!("\nthe Wisdom-Holman step (velocity Verlet in the Kepler split), outer solar system, {route}:");
+        interleaved::print_ratios(
+            &[
+                interleaved::kernel(
+                    "plain",
+                    |n, h, y| plain((&split, build), "velocity_verlet_kdk", n, h, y)[0],
+                    STEPS,
+                    10.0,
+                    y_outer,
+                ),
+                interleaved::kernel(
+                    "one variation",
+                    |n, h, y: [f64; 24]| {
+                        with_variation(
+                            (&split_dual, build_dual),
+                            "velocity_verlet_kdk",
+                            n,
+                            h,
+                            y.map(Dual64::from),
+                        )
+                    },
+                    STEPS,
+                    10.0,
+                    y_outer,
+                ),
+            ],
+            STEPS,
+        );
+    }
     for method in ["velocity_verlet_kdk", "boris"] {
         println!("\n{method} on the charged particle of coulomb-magnetic:");
         interleaved::print_ratios(
             &[
                 interleaved::kernel(
                     "plain",
-                    |n, h, y| plain(&charged, method, n, h, y)[0],
+                    |n, h, y| plain((&charged, from_data), method, n, h, y)[0],
                     STEPS,
                     0.01,
                     y_charged,
                 ),
                 interleaved::kernel(
                     "one variation",
-                    |n, h, y: [f64; 6]| with_variation(&charged_dual, method, n, h, y.map(Dual64::from)),
+                    |n, h, y: [f64; 6]| with_variation((&charged_dual, from_data), method, n, h, y.map(Dual64::from)),
                     STEPS,
                     0.01,
                     y_charged,

@@ -254,36 +254,47 @@ fn bodies_variation(masses: &[f64], dim: usize) -> Vec<f64> {
 }
 
 /// `|(dq, dp / m)|` of the variation `delta` (positions then momenta, in the scene's
-/// coordinates) of bodies of `masses`.
-fn scene_measure(masses: &[f64], dim: usize, delta: impl Iterator<Item = f64>) -> f64 {
-    let n = masses.len() * dim;
-    let sum: f64 = delta
-        .enumerate()
-        .map(|(i, d)| {
-            let v = if i < n { d } else { d / masses[(i - n) / dim] };
-            v * v
-        })
+/// coordinates) of bodies of inverse masses `inverse_masses` in `dim` dimensions.
+fn scene_measure(inverse_masses: &[f64], dim: usize, delta: &[f64]) -> f64 {
+    let (dq, dp) = delta.split_at(inverse_masses.len() * dim);
+    let positions: f64 = dq.iter().map(|d| d * d).sum();
+    let velocities: f64 = dp
+        .chunks_exact(dim)
+        .zip(inverse_masses)
+        .map(|(p, w)| p.iter().map(|d| (d * w) * (d * w)).sum::<f64>())
         .sum();
-    sum.sqrt()
+    (positions + velocities).sqrt()
 }
 
-/// [`scene_measure`] of the dual parts of a state in the split's coordinates: changed to
-/// the scene's (the change is linear) by `split`, the same split on `f64`, in a buffer on
-/// the stack up to 16 bodies in 3-D (the measure is taken at every step).
-fn split_measure(split: &KeplerSplit<f64, DVector<f64>>, y: &DVector<Dual64>) -> f64 {
-    const ON_STACK: usize = 96;
-    let bodies = split.bodies();
-    let measure = |delta: &mut [f64]| {
-        for (d, y) in delta.iter_mut().zip(y.iter()) {
+/// The inverse masses of `bodies`.
+fn inverse_masses(bodies: &NBody<f64, DVector<f64>>) -> Vec<f64> {
+    bodies.masses().iter().map(|m| m.recip()).collect()
+}
+
+/// `f` on the dual parts of `y`, copied to a buffer on the stack up to 16 bodies in 3-D
+/// (a measure is taken at every step), on the heap beyond.
+fn with_dual_parts<R>(y: &[Dual64], f: impl FnOnce(&mut [f64]) -> R) -> R {
+    let fill = |buffer: &mut [f64]| {
+        for (d, y) in buffer.iter_mut().zip(y) {
             *d = y.eps;
         }
-        split.split_to_scene(delta);
-        scene_measure(bodies.masses(), bodies.dim(), delta.iter().copied())
     };
-    if y.len() <= ON_STACK {
-        measure(&mut [0.0; ON_STACK][..y.len()])
-    } else {
-        measure(&mut vec![0.0; y.len()])
+    match y.len() {
+        n @ 0..=24 => {
+            let mut buffer = [0.0; 24];
+            fill(&mut buffer[..n]);
+            f(&mut buffer[..n])
+        }
+        n @ 25..=96 => {
+            let mut buffer = [0.0; 96];
+            fill(&mut buffer[..n]);
+            f(&mut buffer[..n])
+        }
+        n => {
+            let mut buffer = vec![0.0; n];
+            fill(&mut buffer);
+            f(&mut buffer)
+        }
     }
 }
 
@@ -293,9 +304,9 @@ pub(crate) fn n_body(
     y0: &DVector<f64>,
     run: &ChaosRun<'_>,
 ) -> Result<Vec<ChaosSample>, Error> {
-    let (masses, dim) = (model.masses().to_vec(), model.dim());
+    let (inverse, dim) = (inverse_masses(model), model.dim());
     let measure = Measure::new(move |_: &NBody<Dual64, DVector<Dual64>>, y: &DVector<Dual64>| {
-        scene_measure(&masses, dim, y.iter().map(|x| x.eps))
+        with_dual_parts(y.as_slice(), |delta| scene_measure(&inverse, dim, delta))
     });
     let delta0 = bodies_variation(model.masses(), model.dim());
     follow(
@@ -322,9 +333,14 @@ pub(crate) fn kepler_split(
     let delta = bodies_variation(bodies.masses(), bodies.dim());
     let seeded = DVector::from_iterator(scene.len(), scene.iter().zip(&delta).map(|(&y, &d)| Dual64::new(y, d)));
     let delta0: Vec<f64> = twin.from_scene(&seeded).iter().map(|x| x.eps).collect();
-    let split = model.clone();
-    let measure =
-        Measure::new(move |_: &KeplerSplit<Dual64, DVector<Dual64>>, y: &DVector<Dual64>| split_measure(&split, y));
+    // the change of coordinates is linear: made on the dual parts alone, on f64
+    let (split, inverse, dim) = (model.clone(), inverse_masses(bodies), bodies.dim());
+    let measure = Measure::new(move |_: &KeplerSplit<Dual64, DVector<Dual64>>, y: &DVector<Dual64>| {
+        with_dual_parts(y.as_slice(), |delta| {
+            split.split_to_scene(delta);
+            scene_measure(&inverse, dim, delta)
+        })
+    });
     follow(
         &twin,
         &dual_vector(y0),

@@ -14,20 +14,21 @@ pub fn farthest(bodies: &NBody<f64, DVector<f64>>, y: &[f64]) -> (usize, f64) {
     let (d, masses) = (bodies.dim(), bodies.masses());
     let total: f64 = masses.iter().sum();
     let mut centre = [0.0; 3];
-    for (k, &m) in masses.iter().enumerate() {
-        for c in 0..d {
-            centre[c] += m * y[k * d + c] / total;
-        }
+    for (c, centre) in centre[..d].iter_mut().enumerate() {
+        let moment: f64 = masses.iter().enumerate().map(|(k, &m)| m * y[k * d + c]).sum();
+        *centre = moment / total;
     }
+    // the largest squared distance, its root taken once (the root is monotonic: the same
+    // body, the same bits)
     let mut out = (0, 0.0);
-    for k in 0..masses.len() {
-        let r = (0..d).map(|c| (y[k * d + c] - centre[c]).powi(2)).sum::<f64>().sqrt();
+    for (k, q) in y[..masses.len() * d].chunks_exact(d).enumerate() {
+        let r2: f64 = q.iter().zip(&centre).map(|(x, c)| (x - c) * (x - c)).sum();
         // a body that is no longer finite is the farthest
-        if r > out.1 || r.is_nan() {
-            out = (k, r);
+        if r2 > out.1 || r2.is_nan() {
+            out = (k, r2);
         }
     }
-    out
+    (out.0, out.1.sqrt())
 }
 
 /// The stop of an n-body scene whose runs end at `distance` from the centre of mass: `g`
