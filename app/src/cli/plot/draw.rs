@@ -210,6 +210,22 @@ mod tests {
     }
 
     #[test]
+    fn a_decade_on_a_short_log_axis_is_labelled_once() {
+        let dir = scratch("decade");
+        let path = dir.join("decade.svg");
+        // a work-precision diagram's evaluations: 628 to 10056, under two decades
+        let points = vec![(628.0, 7e-3), (1257.0, 1.8e-3), (2514.0, 4.6e-3), (10056.0, 1.1e-8)];
+        let chart = Chart::new("work-precision", "evaluations", "error").scales(Scale::Log, Scale::Log);
+        draw(&path, &chart, &[Series::marked("rk4", points)]).unwrap();
+        let svg = std::fs::read_to_string(&path).unwrap();
+        assert_eq!(svg.matches("\n10000\n").count(), 1, "{svg}");
+        for label in ["1000", "2000", "5000", "1e-8", "0.01"] {
+            assert_eq!(svg.matches(&format!("\n{label}\n")).count(), 1, "{label} in {svg}");
+        }
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
     fn charts_of_extreme_data_draw() {
         let dir = scratch("extreme");
         let path = dir.join("extreme.svg");

@@ -54,6 +54,10 @@ pub(crate) struct Ticks {
     /// ([`label_count`]): only 1, 2 and 5 times a decade are labelled, so that the labels
     /// do not run into each other.
     dense_log: bool,
+    /// The last value labelled: plotters gives a short log axis' decade twice (ten times
+    /// the decade below, and the decade itself), and a label drawn twice over itself reads
+    /// bold.
+    last: core::cell::Cell<f64>,
 }
 
 impl Ticks {
@@ -62,11 +66,15 @@ impl Ticks {
         Ticks {
             step: (scale == Scale::Linear && step.is_finite() && step > 0.0).then_some(step),
             dense_log: label_count(scale, (lo, hi)) > 8,
+            last: core::cell::Cell::new(f64::NAN),
         }
     }
 
     pub(crate) fn label(&self, v: f64) -> String {
         let Some(step) = self.step else {
+            if self.last.replace(v).to_bits() == v.to_bits() {
+                return String::new();
+            }
             let mantissa = v / 10f64.powf(v.log10().floor());
             let round = [1.0, 2.0, 5.0, 10.0].iter().any(|m| (mantissa - m).abs() < 1e-6 * m);
             return if self.dense_log && !round {

@@ -372,14 +372,18 @@ fn draw(part: &Part, out: &Path, fits: Option<&[Fit]>) -> anyhow::Result<Vec<Pat
     } else {
         "exact solution"
     };
+    // short enough for the axis: the end time to 6 digits, what it is measured against in
+    // the title
+    let t_end = stormer::text::number(s.t_end).significant(6);
     let error_label = match &s.stop {
-        Some(event) => format!("error at the {event} or t = {} (max norm, vs {truth})", s.t_end),
-        None => format!("error at t = {} (max norm, vs {truth})", s.t_end),
+        Some(event) => format!("max-norm error at the {event} or t = {t_end}"),
+        None => format!("max-norm error at t = {t_end}"),
     };
+    let against = format!("errors against the {truth}");
     let mut files = Vec::new();
     match s.kind {
         Kind::Compare => {
-            let title = format!("work-precision: {}", s.scene);
+            let title = format!("work-precision: {}, {against}", s.scene);
             let evals = |r: &Row| Some(r.evaluations as f64);
             let error = |r: &Row| r.error;
             let [evaluations, seconds, energy] = COMPARE_CHARTS;
@@ -433,7 +437,7 @@ fn draw(part: &Part, out: &Path, fits: Option<&[Fit]>) -> anyhow::Result<Vec<Pat
                     Series::marked(format!("{} (order {}, observed {order})", m.label, m.order), points)
                 })
                 .collect();
-            let chart = Chart::new(format!("convergence: {}", s.scene), "steps", &error_label);
+            let chart = Chart::new(format!("convergence: {}, {against}", s.scene), "steps", &error_label);
             let path = out.join(format!("{prefix}.svg"));
             plot::draw(&path, &chart.scales(Scale::Log, Scale::Log), &series)?;
             files.push(path);
