@@ -246,3 +246,23 @@ fn time_transform_refusals_in_compare_are_one_line_and_write_nothing() {
         assert!(!dir.join("out").exists(), "{args:?} wrote out/: {}", stderr(&out));
     }
 }
+
+/// `scan` takes a time-transformed method too: the LogH leapfrog's steps of `s` over one
+/// orbit of kepler-e099 converge at its order, 2 (measured 2.00002 at 200, 400, 800 steps).
+#[test]
+fn a_scan_of_the_logh_leapfrog_measures_order_two() {
+    let dir = workdir("compare_time_transforms", "scan");
+    let steps = ["--steps", "200,400,800", "--t-end", ORBIT];
+    stormer_ok(
+        &dir,
+        &[
+            &["scan", "kepler-e099", "--method", "velocity_verlet_kdk@logh"],
+            &steps[..],
+        ]
+        .concat(),
+    );
+    let (header, rows) = table(&dir.join("out/scan-kepler-e099-velocity_verlet_kdk_logh.csv"));
+    assert_eq!(rows.len(), 3);
+    let fitted: f64 = rows[0][column(&header, "fitted_order")].parse().unwrap();
+    assert!((fitted - 2.0).abs() < 0.05, "order {fitted}");
+}
