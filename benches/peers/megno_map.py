@@ -2,6 +2,8 @@
 # years) timed with REBOUND on 2 processes and compared, point by point, with the table of
 #   stormer ensemble two-planets --vary bodies.2.orbit.a=7:10:80 --vary bodies.2.orbit.e=0:0.5:80 --indicator megno
 # Run: target/peers/venv/bin/python benches/peers/megno_map.py out/ensemble-two-planets-a+e.csv
+# or, both maps timed side by side in one command (alternately, best of ROUNDS each; the table
+# compared is the one this run writes): bash benches/peers/run.sh megno --rounds 3
 import csv, math, os, sys, time
 # this folder's rebound.py (the other comparison) would shadow the package
 sys.path = [p for p in sys.path if os.path.abspath(p or ".") != os.path.dirname(os.path.abspath(__file__))]
@@ -45,12 +47,37 @@ def megno(par):
         return sim.megno()
     except rebound.Escape:
         return 10.
-if __name__ == "__main__":
-    grid = [(val(7, 10, i), val(0, 0.5, j)) for i in range(N) for j in range(N)]
+STORMER_MAP = ["ensemble", "two-planets", "--vary", "bodies.2.orbit.a=7:10:80", "--vary",
+               "bodies.2.orbit.e=0:0.5:80", "--indicator", "megno"]
+def rebound_map(grid):
     start = time.time()
     with Pool(2) as pool:
         res = pool.map(megno, [(a, e, 1) for a, e in grid])
-    secs = time.time() - start
+    return res, time.time() - start
+def stormer_map(binary, out):
+    """Our map, by the command a user runs (both cores), writing its table under `out`."""
+    import subprocess
+    start = time.time()
+    subprocess.run([binary] + STORMER_MAP + ["--out", out], check=True, stdout=subprocess.DEVNULL)
+    return time.time() - start
+if __name__ == "__main__":
+    grid = [(val(7, 10, i), val(0, 0.5, j)) for i in range(N) for j in range(N)]
+    # with --stormer BINARY: both maps timed side by side, alternately, best of --rounds each
+    if "--stormer" in sys.argv:
+        binary = sys.argv[sys.argv.index("--stormer") + 1]
+        rounds = int(sys.argv[sys.argv.index("--rounds") + 1]) if "--rounds" in sys.argv else 3
+        out = "out/peers/megno_map"
+        ours_s, theirs_s = [], []
+        for _ in range(rounds):
+            ours_s.append(stormer_map(binary, out))
+            res, secs = rebound_map(grid)
+            theirs_s.append(secs)
+        print(f"stormer {N}x{N} map: best {min(ours_s):.3f} s of {', '.join(f'{t:.3f}' for t in ours_s)}")
+        print(f"REBOUND {rebound.__version__} {N}x{N} map on 2 processes: best {min(theirs_s):.3f} s of "
+              f"{', '.join(f'{t:.3f}' for t in theirs_s)}")
+        print(f"stormer / REBOUND: {min(ours_s) / min(theirs_s):.3f} (REBOUND {min(theirs_s) / min(ours_s):.2f}x stormer's time)")
+        sys.argv[1:] = [os.path.join(out, "ensemble-two-planets-a+e.csv")]
+    res, secs = rebound_map(grid)
     # REBOUND against itself, another random variation: how far its own maps agree
     with Pool(2) as pool:
         again = pool.map(megno, [(a, e, 2) for a, e in grid])

@@ -6,6 +6,8 @@
 #                                           # the options after it are whfast_step.py's)
 #   bash benches/peers/run.sh nbody         # REBOUND vs stormer on 10 to 3000 bodies (nbody.py)
 #   bash benches/peers/run.sh nbody --sizes 1000 --rounds 5
+#   bash benches/peers/run.sh megno         # the two-planet MEGNO map, REBOUND's tutorial vs ours,
+#                                           # timed alternately (megno_map.py; --rounds)
 #   bash benches/peers/run.sh pythagorean   # REBOUND IAS15 vs stormer's TTL on Burrau's problem
 #                                           # (pythagorean.py; --method, --dt, --rounds)
 # Installs what it needs: a virtual environment under target/peers/venv with REBOUND
@@ -27,6 +29,11 @@ if [ "${1:-}" = nbody ]; then
     shift
     cargo build --release --example nbody_timing --features parallel
     exec "$venv/bin/python" benches/peers/nbody.py "$@"
+fi
+if [ "${1:-}" = megno ]; then
+    shift
+    cargo build --release -p stormer-app
+    exec "$venv/bin/python" benches/peers/megno_map.py --stormer target/release/stormer "$@"
 fi
 if [ "${1:-}" = pythagorean ]; then
     shift
