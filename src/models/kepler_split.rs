@@ -453,6 +453,20 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> KeplerSplit<T, S, K> {
             };
         }
         super::nbody_shape::unrolled_shapes!(static_shapes);
+        // a dynamic state (a scene file's bodies) of one of those shapes: the same kernel,
+        // chosen at run time (the same sums in the same order as the loops below)
+        macro_rules! run_time_shapes {
+            ($(($d:literal, $n:literal)),*) => {
+                $(
+                    if d == $d && n == $n {
+                        return self.jacobi_interaction_shaped::<$d, $n>(jacobi, t, q, f);
+                    }
+                )*
+            };
+        }
+        if S::LEN.is_none() {
+            super::nbody_shape::unrolled_shapes!(run_time_shapes);
+        }
         self.scene_forces(t, q, f);
         self.add_kepler_forces(-T::one(), q, f);
     }
@@ -721,6 +735,25 @@ mod tests {
                 assert_eq!(moved_p[i].to_bits(), (p[i] + dp[i]).to_bits(), "tau {tau}, p[{i}]");
             }
         }
+    }
+
+    #[test]
+    fn a_dynamic_state_takes_the_unrolled_interaction_with_the_same_bits() {
+        let mut y = DVector::zeros(24);
+        let split = split(&mut y);
+        let (q, _) = y.as_slice().split_at(12);
+        let Transform::Jacobi(jacobi) = &split.transform else {
+            unreachable!()
+        };
+        // four bodies in 3-D: the unrolled kernel, chosen at run time
+        let mut unrolled = [0.0; 12];
+        split.jacobi_interaction(jacobi, 0.0, q, &mut unrolled);
+        // the loops over any number of bodies
+        let mut looped = [0.0; 12];
+        split.scene_forces(0.0, q, &mut looped);
+        split.add_kepler_forces(-1.0, q, &mut looped);
+        assert!(unrolled.iter().any(|f| *f != 0.0));
+        assert_eq!(unrolled.map(f64::to_bits), looped.map(f64::to_bits));
     }
 
     #[test]
