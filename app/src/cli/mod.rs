@@ -1,5 +1,6 @@
 //! Argument parsing and dispatch to the subcommands.
 
+mod checkpoint;
 mod choice;
 mod finite_number;
 mod heat_map;

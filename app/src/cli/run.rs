@@ -1,14 +1,16 @@
 //! `stormer run SCENE`: integrate a scene, stream the records to CSV, summarize on stderr.
 
+use super::checkpoint::{self, Checkpoint, Interval};
 use super::choice;
 use super::output::{csv_header, file_safe, is_stdout, CsvRecorder};
-use super::pipeline::{Options, SceneRun, Steps, Track};
+use super::pipeline::{Options, Resume, SceneRun, Steps, Track};
 use super::scene_overrides::SceneOverrides;
 use super::section::{Section, WithSection};
 use anyhow::anyhow;
 use std::io::Write;
 use std::path::{Path, PathBuf};
-use stormer::driver::Stats;
+use std::sync::atomic::Ordering;
+use stormer::driver::{RunState, Stats};
 use stormer::models::KeplerCoordinates;
 use stormer::stepper::{ImplicitOptions, Tolerances};
 use stormer::text::number;
@@ -20,9 +22,23 @@ use stormer_app::scenes::{self, Scene, SceneVisitor, Setup};
 #[derive(Debug, clap::Args)]
 pub struct RunArgs {
     /// A built-in scene (see `stormer scene list`) or a path to a scene file (.toml).
-    pub scene: String,
+    #[arg(required_unless_present = "resume")]
+    pub scene: Option<String>,
     #[command(flatten)]
     pub overrides: SceneOverrides,
+    /// Write a checkpoint beside the CSV (FILE.csv.checkpoint) every N steps, every T
+    /// seconds of wall time, or at the first record after every T of the scene's time (T y:
+    /// years), and when a signal stops the run; `stormer run --resume FILE.csv.checkpoint`
+    /// then continues the run bit for bit (docs/reproducibility.md). Removed when the run
+    /// ends [default interval: every=60s].
+    #[arg(long, value_name = "every=N steps|T s|T|T y", num_args = 0..=1,
+          default_missing_value = checkpoint::DEFAULT_INTERVAL, allow_hyphen_values = true)]
+    pub checkpoint: Option<String>,
+    /// Continue the run a checkpoint holds, with the settings it began with (give no
+    /// other option), from the directory it began in: its CSV is cut to the checkpoint's
+    /// last row and appended to, and the run ends as it would have without stopping.
+    #[arg(long, value_name = "CHECKPOINT")]
+    pub resume: Option<PathBuf>,
     /// Write one record every N steps (the first and last are always written)
     /// [default: the scene's].
     #[arg(long, value_name = "N")]
@@ -165,7 +181,34 @@ fn check(args: &RunArgs) -> Result<(), Error> {
     if args.adaptive_reversible.is_some() {
         check_reversible(args)?;
     }
+    if let Some(spec) = &args.checkpoint {
+        Interval::parse(spec)?;
+        if args.out.as_deref().is_some_and(is_stdout) {
+            return Err(Error::invalid(
+                "--checkpoint",
+                "a resumed run cuts its CSV back to the checkpoint and appends to it, which standard output cannot                  do: write to a file (--out FILE.csv)",
+            ));
+        }
+        if args.indicator.is_some() {
+            return Err(Error::invalid(
+                "--checkpoint",
+                "a chaos indicator (--indicator) is computed in a run of its own, which does not write checkpoints:                  drop one of them",
+            ));
+        }
+    }
     Ok(())
+}
+
+/// `stormer run` parsed from its arguments (a checkpoint's command line).
+#[derive(Debug, clap::Parser)]
+struct RunCommand {
+    #[command(flatten)]
+    args: RunArgs,
+}
+
+fn parse_args<I: IntoIterator<Item = String>>(args: I) -> Result<RunArgs, clap::Error> {
+    use clap::Parser as _;
+    RunCommand::try_parse_from(std::iter::once("stormer run".to_string()).chain(args)).map(|c| c.args)
 }
 
 /// What `--adaptive-reversible` does not combine with: the other ways of choosing the steps.
@@ -204,12 +247,57 @@ fn flag_hint(e: Error) -> anyhow::Error {
     }
 }
 
-/// Runs a scene.
+/// Runs a scene, or continues the run of a checkpoint.
 pub fn run(args: &RunArgs) -> anyhow::Result<()> {
+    let Some(file) = &args.resume else {
+        return run_from(args, None);
+    };
+    let alone = parse_args(["--resume".to_string(), file.display().to_string()])?;
+    if format!("{alone:?}") != format!("{args:?}") {
+        return Err(Error::invalid(
+            "--resume",
+            "the run goes on with the settings it began with, which the checkpoint holds: give --resume CHECKPOINT              alone",
+        )
+        .into());
+    }
+    let saved = Checkpoint::read(file)?;
+    let stored = parse_args(saved.args.iter().cloned())
+        .ok()
+        .filter(|a| a.resume.is_none() && a.checkpoint.is_some())
+        .ok_or_else(|| {
+            Error::invalid(
+                "--resume",
+                format!(
+                    "{}: its command line is not one of `stormer run --checkpoint`",
+                    file.display()
+                ),
+            )
+        })?;
+    run_from(&stored, Some((file.clone(), saved)))
+}
+
+/// The arguments of `stormer run` as the user gave them (a checkpoint keeps them).
+fn command_line() -> Vec<String> {
+    std::env::args().skip(1).skip_while(|a| a != "run").skip(1).collect()
+}
+
+/// Runs a scene from its start, or from the checkpoint `resumed` (its file and contents).
+fn run_from(args: &RunArgs, resumed: Option<(PathBuf, Checkpoint)>) -> anyhow::Result<()> {
     check(args)?;
     // counted and refused before the scene is read, when there are too many
     let save_at = args.save_at.as_deref().map(super::save_at::parse).transpose()?;
-    let mut scene = scenes::load(&args.scene)?;
+    let scene_arg = args.scene.as_deref().unwrap_or_default();
+    let source = scenes::source(scene_arg)?;
+    let scene_hash = checkpoint::hash(&source.text);
+    if let Some((file, saved)) = &resumed {
+        saved.check_same(
+            "scene file",
+            &saved.scene_hash,
+            &scene_hash,
+            &file.display().to_string(),
+        )?;
+    }
+    let mut scene = scenes::parse(&source.text, &source.origin, &source.name)?;
     // the file's transformation is replaced by the option's, or dropped for a split or a
     // corrector asked for; the split is chosen on the physical scene
     let transform = match args.time_transform {
@@ -267,6 +355,8 @@ pub fn run(args: &RunArgs) -> anyhow::Result<()> {
         args,
         save_at,
         transform,
+        scene_hash,
+        resumed,
     })
 }
 
@@ -277,6 +367,10 @@ struct Runner<'a> {
     save_at: Option<Vec<f64>>,
     /// The time transformation the scene runs in.
     transform: Option<Transform>,
+    /// The hash of the scene file's text.
+    scene_hash: String,
+    /// The checkpoint the run continues from, and its file.
+    resumed: Option<(PathBuf, Checkpoint)>,
 }
 
 impl Runner<'_> {
@@ -312,7 +406,12 @@ impl Runner<'_> {
             max_steps: args.max_steps,
             implicit,
             compensated: args.compensated,
-            cancel: Some(super::interrupt::flag()),
+            // a run writing checkpoints stops on the flag that also says one is due
+            cancel: Some(if args.checkpoint.is_some() {
+                super::interrupt::pause_flag()
+            } else {
+                super::interrupt::flag()
+            }),
         }
     }
 }
@@ -324,6 +423,11 @@ impl SceneVisitor for Runner<'_> {
         let args = self.args;
         let method_name = args.overrides.method.as_deref().unwrap_or(&setup.run.method);
         let method = choice::resolve(method_name, args.alpha)?;
+        let method_hash = checkpoint::hash(&format!("{method:?}"));
+        let resumed = self.resumed.take();
+        if let Some((file, saved)) = &resumed {
+            saved.check_same("method", &saved.method_hash, &method_hash, &file.display().to_string())?;
+        }
         let mut options = self.options();
         let section = args
             .section
@@ -332,10 +436,11 @@ impl SceneVisitor for Runner<'_> {
             .transpose()?;
         options.section = section.clone();
         let mut run = SceneRun::new(&setup, &method, &options)?;
+        run.resumed_steps = resumed.as_ref().and_then(|(_, saved)| saved.step_range);
         let default_path =
             PathBuf::from("out").join(format!("{}-{}.csv", file_safe(&setup.name), file_safe(method.name())));
         let path = args.out.clone().unwrap_or_else(|| default_path.clone());
-        let inputs: Vec<&Path> = [Some(args.scene.as_str()), args.overrides.method.as_deref()]
+        let inputs: Vec<&Path> = [args.scene.as_deref(), args.overrides.method.as_deref()]
             .into_iter()
             .flatten()
             .map(Path::new)
@@ -355,6 +460,16 @@ impl SceneVisitor for Runner<'_> {
         let indicator_path = args.indicator.map(|i| i.path(&stem));
         outputs.extend(indicator_path.clone());
         outputs.extend(super::pictures::run_pictures(&header, &stem));
+        let checkpoints = args
+            .checkpoint
+            .as_deref()
+            .map(|spec| -> Result<_, Error> {
+                let interval = Interval::parse(spec)?;
+                let scene_time = interval.scene_time(setup.units.time.as_deref())?;
+                Ok((interval, scene_time, checkpoint::path_beside(&path)))
+            })
+            .transpose()?;
+        outputs.extend(checkpoints.as_ref().map(|(_, _, file)| file.clone()));
         for output in &outputs {
             super::output::refuse_overwriting(output, &inputs)?;
         }
@@ -376,20 +491,134 @@ impl SceneVisitor for Runner<'_> {
         {
             let _ = writeln!(std::io::stderr(), "{note}");
         }
-        let mut csv = CsvRecorder::create(&path, &setup)?;
-        csv.progress = Some(super::progress::Progress::new(run.t0(), run.t_end()));
-        let (outcome, mut crossings) = match &section {
-            Some(_) => {
-                let mut with = WithSection {
-                    run: &mut csv,
-                    crossings: CsvRecorder::create(&section_path, &setup)?,
-                    setup: &setup,
-                    count: 0,
+        let (mut csv, mut crossings) = match &resumed {
+            Some((file, saved)) => {
+                // everything checked before anything is cut
+                let kept = CsvRecorder::check_kept(&path, &setup, &saved.csv)?;
+                let kept_section = match (&section, &saved.section) {
+                    (Some(_), Some(at)) => Some(CsvRecorder::check_kept(&section_path, &setup, at)?),
+                    (None, None) => None,
+                    _ => {
+                        return Err(Error::invalid(
+                            "--resume",
+                            format!("{}: the run's section is not the checkpoint's", file.display()),
+                        )
+                        .into())
+                    }
                 };
-                let outcome = run.run_into(&mut with);
-                (outcome, Some((with.crossings, with.count)))
+                let crossings = kept_section
+                    .map(|k| k.reopen().map(|c| (c, saved.section.as_ref().map_or(0, |at| at.rows))))
+                    .transpose()?;
+                (kept.reopen()?, crossings)
             }
-            None => (run.run_into(&mut csv), None),
+            None => {
+                let csv = CsvRecorder::create(&path, &setup)?;
+                let crossings = match &section {
+                    Some(_) => Some((CsvRecorder::create(&section_path, &setup)?, 0)),
+                    None => None,
+                };
+                (csv, crossings)
+            }
+        };
+        csv.progress = Some(super::progress::Progress::new(run.t0(), run.t_end()));
+        let mut from: Option<RunState> = resumed.as_ref().map(|(_, saved)| saved.run.clone());
+        let mut track = resumed
+            .as_ref()
+            .map(|(_, saved)| Track::from(&saved.track))
+            .unwrap_or_default();
+        if let Some((interval, scene_time, _)) = &checkpoints {
+            let pause = super::interrupt::pause_flag();
+            if let Some(every) = scene_time {
+                let now = from.as_ref().map_or(run.t0(), |s| track.last_t.unwrap_or(s.time()));
+                csv.due = Some(checkpoint::Due::new(run.t0(), run.t_end(), *every, now, pause));
+            }
+            if let Interval::Seconds(seconds) = *interval {
+                // detached: it only raises the flag, and ends with the process
+                std::thread::spawn(move || loop {
+                    std::thread::sleep(std::time::Duration::from_secs_f64(seconds));
+                    pause.store(true, Ordering::Relaxed);
+                });
+            }
+        }
+        let checkpoint_of =
+            |state: RunState, track: &Track, csv: &CsvRecorder, section: Option<&CsvRecorder>| Checkpoint {
+                format: checkpoint::FORMAT.into(),
+                version: checkpoint::VERSION.into(),
+                args: resumed
+                    .as_ref()
+                    .map_or_else(command_line, |(_, saved)| saved.args.clone()),
+                scene: setup.name.clone(),
+                scene_hash: self.scene_hash.clone(),
+                method: method.name().to_string(),
+                method_hash: method_hash.clone(),
+                csv: csv.position(),
+                section: section.map(CsvRecorder::position),
+                track: track.into(),
+                step_range: None,
+                run: state,
+                checksum: String::new(),
+            };
+        let mut checkpointed = false;
+        let outcome = loop {
+            let pause_at = match checkpoints {
+                Some((Interval::Steps(n), ..)) => from.as_ref().map_or(0, |s| s.step).saturating_add(n),
+                _ => u64::MAX,
+            };
+            let resume = Resume {
+                from: from.as_ref(),
+                pause_at,
+                track: std::mem::take(&mut track),
+            };
+            let (mut outcome, paused) = match crossings.take() {
+                Some((c, count)) => {
+                    let mut with = WithSection {
+                        run: &mut csv,
+                        crossings: c,
+                        setup: &setup,
+                        count,
+                    };
+                    let outcome = run.run_resumable(&mut with, resume);
+                    crossings = Some((with.crossings, with.count));
+                    outcome
+                }
+                None => run.run_resumable(&mut csv, resume),
+            };
+            let (Some(state), Some((_, _, file))) = (paused, &checkpoints) else {
+                break outcome;
+            };
+            let written = csv
+                .flush()
+                .and_then(|()| crossings.as_mut().map_or(Ok(()), |(c, _)| c.flush()))
+                .and_then(|()| {
+                    let mut saved =
+                        checkpoint_of(state.clone(), &outcome.track, &csv, crossings.as_ref().map(|c| &c.0));
+                    saved.step_range = run.step_range_state();
+                    saved.write(file)
+                });
+            if let Err(e) = written {
+                outcome.error = Some(e);
+                break outcome;
+            }
+            checkpointed = true;
+            // lowered before the signal's flag is read: a signal after this raises it again
+            super::interrupt::pause_flag().store(false, Ordering::Relaxed);
+            if super::interrupt::flag().load(Ordering::Relaxed) {
+                break outcome;
+            }
+            track = outcome.track;
+            from = Some(state);
+        };
+        if let (None, Some((_, _, file))) = (&outcome.error, &checkpoints) {
+            // the run is whole: nothing is left to resume
+            let _ = std::fs::remove_file(file);
+            let _ = std::fs::remove_file(checkpoint::temporary(file));
+        }
+        let resume_hint = match &checkpoints {
+            Some((_, _, file)) if checkpointed || resumed.is_some() => format!(
+                "; checkpoint in {f}: continue with `stormer run --resume {f}`",
+                f = file.display()
+            ),
+            _ => String::new(),
         };
         // kept whatever happened to the run
         let section_flushed = crossings.as_mut().map_or(Ok(()), |(c, _)| c.flush());
@@ -418,7 +647,7 @@ impl SceneVisitor for Runner<'_> {
             let signal = super::interrupt::received();
             return Err(super::interrupt::StoppedByUser {
                 message: format!(
-                    "stopped by {} at t = {} after {} steps, {kept}{last}",
+                    "stopped by {} at t = {} after {} steps, {kept}{last}{resume_hint}",
                     signal.name(),
                     number(t),
                     stats.steps
@@ -441,7 +670,10 @@ impl SceneVisitor for Runner<'_> {
             } else {
                 ""
             };
-            return Err(anyhow!("{e}{hint}; stopped after {} steps{kept}", stats.steps));
+            return Err(anyhow!(
+                "{e}{hint}; stopped after {} steps{kept}{resume_hint}",
+                stats.steps
+            ));
         }
         flushed?;
         section_flushed?;

@@ -33,7 +33,8 @@ use args::{check_common, parse_shard, positive_list};
 pub use args::{CommonArgs, CompareArgs, MergeArgs, ScanArgs};
 pub use ensemble::{ensemble, EnsembleArgs};
 pub use job::SceneText;
-use part::{fnv1a, Control, Job, Kind, MethodEntry, Part, ReferenceInfo, Row, StudyId, FORMAT};
+pub use part::fnv1a;
+use part::{Control, Job, Kind, MethodEntry, Part, ReferenceInfo, Row, StudyId, FORMAT};
 use shards::{join, parse_part, read_text, shard_jobs, write_json, Sharded};
 
 /// `stormer compare`.
