@@ -82,6 +82,19 @@ where
             return Ok(None);
         };
         let y = state.state(y0)?;
+        // nothing in a saved state is trusted (it may come from a file): a value that
+        // would make the loop run forever or step outside the run is refused
+        let t: T = state.time();
+        if !y.is_finite() || !t.is_finite() {
+            return Err(not_this_run("its time or state is not finite".into()));
+        }
+        // (with output times the count runs on unread)
+        if self.driver.save_at.is_none() && state.since_record >= self.driver.every {
+            return Err(not_this_run(format!(
+                "it is {} steps after a record, and this run records every {}",
+                state.since_record, self.driver.every
+            )));
+        }
         if self.driver.stop.is_some() != state.stop_g.is_some() {
             return Err(not_this_run("one has a stop condition and the other not".into()));
         }
@@ -332,8 +345,19 @@ where
                     state.control
                 )));
             };
-            controller.restore(from_bits(err_old), last_rejected);
-            let resumed = (state.time(), y, from_bits(h), state.since_record, g_old);
+            let (h, err_old, t): (T, T, T) = (from_bits(h), from_bits(err_old), state.time());
+            let inside = (t - t0) * dir >= T::zero() && (t_end - t) * dir >= T::zero();
+            if !(h.is_finite() && h * dir > T::zero() && h.abs() <= h_max && err_old.is_finite() && inside) {
+                return Err(not_this_run(format!(
+                    "its time {} and next step {} are not of a run from {} to {}",
+                    to_f64(t),
+                    to_f64(h),
+                    to_f64(t0),
+                    to_f64(t_end)
+                )));
+            }
+            controller.restore(err_old, last_rejected);
+            let resumed = (t, y, h, state.since_record, g_old);
             return self.adaptive_from(resumed, t_end, tol, controller, save);
         }
         let h = match h0 {
@@ -480,7 +504,18 @@ where
                         state.control
                     )));
                 };
-                (state.time(), y, from_bits(z), from_bits(g), state.since_record, g_stop)
+                let (t, z, g): (T, T, T) = (state.time(), from_bits(z), from_bits(g));
+                let inside = (t - t0) * dir >= T::zero() && (t_end - t) * dir >= T::zero();
+                if !(z.is_finite() && z > T::zero() && g.is_finite() && inside) {
+                    return Err(not_this_run(format!(
+                        "its time {} and control variable z = {} are not of a run from {} to {}",
+                        to_f64(t),
+                        to_f64(z),
+                        to_f64(t0),
+                        to_f64(t_end)
+                    )));
+                }
+                (t, y, z, g, state.since_record, g_stop)
             }
             None => {
                 if let Some(f) = slope.as_mut() {

@@ -1,6 +1,8 @@
 //! Argument parsing and dispatch to the subcommands.
 
 mod checkpoint;
+#[cfg(test)]
+mod checkpoint_mutations;
 mod choice;
 mod finite_number;
 mod heat_map;

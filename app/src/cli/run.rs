@@ -186,13 +186,15 @@ fn check(args: &RunArgs) -> Result<(), Error> {
         if args.out.as_deref().is_some_and(is_stdout) {
             return Err(Error::invalid(
                 "--checkpoint",
-                "a resumed run cuts its CSV back to the checkpoint and appends to it, which standard output cannot                  do: write to a file (--out FILE.csv)",
+                "a resumed run cuts its CSV back to the checkpoint and appends to it, which standard output cannot \
+                 do: write to a file (--out FILE.csv)",
             ));
         }
         if args.indicator.is_some() {
             return Err(Error::invalid(
                 "--checkpoint",
-                "a chaos indicator (--indicator) is computed in a run of its own, which does not write checkpoints:                  drop one of them",
+                "a chaos indicator (--indicator) is computed in a run of its own, which does not write checkpoints: \
+                 drop one of them",
             ));
         }
     }
@@ -256,7 +258,8 @@ pub fn run(args: &RunArgs) -> anyhow::Result<()> {
     if format!("{alone:?}") != format!("{args:?}") {
         return Err(Error::invalid(
             "--resume",
-            "the run goes on with the settings it began with, which the checkpoint holds: give --resume CHECKPOINT              alone",
+            "the run goes on with the settings it began with, which the checkpoint holds: give --resume CHECKPOINT \
+             alone",
         )
         .into());
     }

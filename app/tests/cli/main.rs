@@ -5,6 +5,7 @@
 //! One test binary (one link) with a module per concept (docs/test-layout.md).
 
 mod bad_input;
+mod checkpoint;
 mod cli;
 mod compare_time_transforms;
 mod ensemble;
