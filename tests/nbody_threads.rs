@@ -198,7 +198,11 @@ fn a_run_on_two_threads_resumed_on_one_ends_bitwise_equal() {
     let stepper = || SplittingStepper::<VelocityVerletKdk, DVector<f64>>::new(&y0).unwrap();
     let driver = || Driver::fixed(1e-3).every(1000);
     let mut whole = Solution::default();
-    pool(2).install(|| driver().run_into(&nb, &mut stepper(), 0.0, &y0, t_end, &mut whole).unwrap());
+    pool(2).install(|| {
+        driver()
+            .run_into(&nb, &mut stepper(), 0.0, &y0, t_end, &mut whole)
+            .unwrap()
+    });
     // paused half way on 2 threads, its state through JSON, resumed on 1
     let mut first = Solution::default();
     let paused = pool(2).install(|| {
@@ -215,5 +219,8 @@ fn a_run_on_two_threads_resumed_on_one_ends_bitwise_equal() {
     });
     let (a, b) = (whole.y.last().unwrap(), rest.y.last().unwrap());
     assert!(a.iter().all(|x| x.is_finite()));
-    assert!(a.iter().zip(b).all(|(a, b)| a.to_bits() == b.to_bits()), "the resumed run differs");
+    assert!(
+        a.iter().zip(b).all(|(a, b)| a.to_bits() == b.to_bits()),
+        "the resumed run differs"
+    );
 }

@@ -8,6 +8,7 @@
 
 mod args;
 mod ensemble;
+mod ensemble_journal;
 mod ensemble_part;
 mod ensemble_report;
 mod fit;

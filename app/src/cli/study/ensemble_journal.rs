@@ -1,0 +1,182 @@
+//! The journal of an ensemble in progress (docs/ensembles.md, docs/reproducibility.md):
+//! beside the table it will write, a line of JSON for the ensemble (its identity and shard,
+//! as a partial table without rows) then one line per finished member, flushed at least
+//! every half second. An ensemble started again with the same command reads it and runs
+//! only the members it does not hold; the table is then the same bytes as the one an
+//! uninterrupted ensemble writes (each member is computed alone, from its own file). The
+//! journal is removed once the table is written. A last line cut by a kill is dropped;
+//! anything else wrong in it refuses the ensemble with one line, nothing written.
+
+use super::ensemble_part::{self, EnsemblePart, Member};
+use super::Sharded;
+use anyhow::anyhow;
+use std::collections::BTreeSet;
+use std::fs::File;
+use std::io::{BufWriter, Write};
+use std::path::{Path, PathBuf};
+use std::sync::Mutex;
+use std::time::{Duration, Instant};
+
+/// How long finished members may wait in the buffer before they are in the file.
+const FLUSH_INTERVAL: Duration = Duration::from_millis(500);
+
+/// An open journal: members are added from the worker threads.
+pub struct Journal {
+    path: PathBuf,
+    file: Mutex<(BufWriter<File>, Instant)>,
+    /// The file did not exist before this run, nor did its directory when `Some(dir)`:
+    /// removed again when the ensemble is refused ([`Journal::abandon`]).
+    fresh: Option<Option<PathBuf>>,
+    /// The test suite's pause after each member (`STORMER_CHECKPOINT_PAUSE_MS`), so that a
+    /// kill lands in the middle of an ensemble.
+    pause: Option<Duration>,
+}
+
+/// `out/PREFIX.journal` (`PREFIX.shard-I-of-N.journal` for a shard).
+pub fn path(out: &Path, header: &EnsemblePart) -> PathBuf {
+    let (i, n) = header.shard;
+    let stem = header.ensemble.prefix();
+    match n {
+        1 => out.join(format!("{stem}.journal")),
+        _ => out.join(format!("{stem}.shard-{i}-of-{n}.journal")),
+    }
+}
+
+/// Opens the journal of the ensemble `header` (its rows empty) at `path`, whose members
+/// are `mine`: the members it already holds (checked), or none when it is new.
+pub fn open(path: &Path, header: &EnsemblePart, mine: &[usize]) -> anyhow::Result<(Journal, Vec<Member>)> {
+    let done = match std::fs::read(path) {
+        Ok(bytes) => read(path, &bytes, header, mine)?,
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => Vec::new(),
+        Err(e) => return Err(anyhow!("{}: cannot read the ensemble's journal: {e}", path.display())),
+    };
+    let io = |e: std::io::Error| anyhow!("{}: cannot write the ensemble's journal: {e}", path.display());
+    let fresh = if path.exists() {
+        None
+    } else {
+        Some(
+            path.parent()
+                .filter(|d| !d.as_os_str().is_empty() && !d.exists())
+                .map(Path::to_path_buf),
+        )
+    };
+    if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
+        std::fs::create_dir_all(dir).map_err(io)?;
+    }
+    // written again whole: the header and the members kept, without a line a kill cut
+    let mut file = BufWriter::new(File::create(path).map_err(io)?);
+    writeln!(file, "{}", serde_json::to_string(header)?).map_err(io)?;
+    for member in &done {
+        writeln!(file, "{}", serde_json::to_string(member)?).map_err(io)?;
+    }
+    file.flush().map_err(io)?;
+    let pause = std::env::var(crate::cli::checkpoint::PAUSE_ENV)
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .map(Duration::from_millis);
+    let journal = Journal {
+        path: path.to_path_buf(),
+        file: Mutex::new((file, Instant::now())),
+        fresh,
+        pause,
+    };
+    Ok((journal, done))
+}
+
+/// The members a journal holds, each checked as `merge` checks a part's rows.
+fn read(path: &Path, bytes: &[u8], header: &EnsemblePart, mine: &[usize]) -> anyhow::Result<Vec<Member>> {
+    let file = path.display();
+    let text = String::from_utf8_lossy(bytes);
+    // a last line without its newline was cut by a kill: dropped, its member runs again
+    let whole = &text[..text.rfind('\n').map_or(0, |i| i + 1)];
+    let mut lines = whole.lines();
+    let first = lines.next().unwrap_or_default();
+    let saved: EnsemblePart = serde_json::from_str(first)
+        .map_err(|e| anyhow!("{file}: line 1 is not the header of an ensemble's journal: {e}"))?;
+    if saved.format != ensemble_part::FORMAT {
+        return Err(anyhow!(
+            "{file}: format '{}', expected '{}'",
+            saved.format,
+            ensemble_part::FORMAT
+        ));
+    }
+    let field = saved
+        .differing_field(header)
+        .or((saved.ensemble != header.ensemble).then_some("ensemble"))
+        .or((saved.shard != header.shard).then_some("shard"));
+    if let Some(field) = field {
+        return Err(anyhow!(
+            "{file} is the journal of another ensemble (its {field} differs): remove it to run this one from the \
+             start, or run the ensemble it belongs to"
+        ));
+    }
+    let mut rows = Vec::new();
+    for (k, line) in lines.enumerate() {
+        let member: Member =
+            serde_json::from_str(line).map_err(|e| anyhow!("{file}: line {} is not a member's row: {e}", k + 2))?;
+        rows.push(member);
+    }
+    let part = EnsemblePart { rows, ..saved };
+    ensemble_part::check(&part).map_err(|reason| anyhow!("{file}: {reason}"))?;
+    let mine: BTreeSet<usize> = mine.iter().copied().collect();
+    let mut seen = BTreeSet::new();
+    let mut done = Vec::new();
+    for row in part.rows {
+        if !mine.contains(&row.member) {
+            return Err(anyhow!("{file}: member {} is not one of this shard's", row.member));
+        }
+        if seen.insert(row.member) {
+            done.push(row);
+        }
+    }
+    Ok(done)
+}
+
+impl Journal {
+    /// Adds a finished member (a member that cannot be written is run again next time).
+    pub fn add(&self, member: &Member) {
+        let Ok(line) = serde_json::to_string(member) else {
+            return;
+        };
+        if let Ok(mut guard) = self.file.lock() {
+            let (file, last_flush) = &mut *guard;
+            let _ = writeln!(file, "{line}");
+            if last_flush.elapsed() >= FLUSH_INTERVAL {
+                let _ = file.flush();
+                *last_flush = Instant::now();
+            }
+        }
+        if let Some(pause) = self.pause {
+            std::thread::sleep(pause);
+        }
+    }
+
+    /// Where it is.
+    pub fn path(&self) -> &Path {
+        &self.path
+    }
+
+    /// The ensemble is refused (a member's file): a journal this run created is removed
+    /// with the directory it created, so that a refused ensemble writes nothing; one that
+    /// was there before keeps what it held.
+    pub fn abandon(self) {
+        let Some(dir) = self.fresh.clone() else {
+            return;
+        };
+        self.remove_file();
+        if let Some(dir) = dir {
+            // only if empty: never anything else
+            let _ = std::fs::remove_dir(dir);
+        }
+    }
+
+    fn remove_file(self) {
+        drop(self.file);
+        let _ = std::fs::remove_file(&self.path);
+    }
+
+    /// The table is written: the journal is no longer needed.
+    pub fn remove(self) {
+        self.remove_file();
+    }
+}
