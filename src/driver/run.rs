@@ -30,6 +30,10 @@ pub(super) struct Run<'r, 'd, T: Real, S, P, St: ?Sized, R: ?Sized> {
     pub paused: Option<RunState>,
 }
 
+/// Where a resumed run starts: its saved state, the state `y` read from it, and the stop
+/// condition's last value.
+type Resumed<'s, T, S> = Option<(&'s RunState, S, Option<T>)>;
+
 /// The error for a saved run state that is not of this run.
 fn not_this_run(why: String) -> Error {
     Error::invalid("run state", format!("is not of this run: {why}"))
@@ -73,11 +77,7 @@ where
     /// Where a resumed run starts, checked against this run: the state, the stop
     /// condition's last value and the output bookkeeping (restored into `between`);
     /// `None` for a run from its start.
-    fn resume_from(
-        &self,
-        y0: &S,
-        between: Option<&mut Between<'_, '_, T, S>>,
-    ) -> Result<Option<(&RunState, S, Option<T>)>, Error> {
+    fn resume_from(&self, y0: &S, between: Option<&mut Between<'_, '_, T, S>>) -> Result<Resumed<'_, T, S>, Error> {
         let Some(state) = self.from else {
             return Ok(None);
         };

@@ -145,7 +145,7 @@ fn output_times_on_the_hermite_interpolants_resume_bitwise() {
 fn implicit_steps_resume_with_their_starting_guess() {
     let newton = ImplicitOptions::newton();
     let fixed = || Driver::fixed(0.02).every(4);
-    for (method, implicit) in [("gauss_legendre4", Default::default()), ("radau_iia5", newton.clone())] {
+    for (method, implicit) in [("gauss_legendre4", Default::default()), ("radau_iia5", newton)] {
         let stats = whole_and_cut(method, &implicit, fixed, 2.0, &[1, 2, 33, 99]);
         assert!(stats.solver_iterations > 0);
     }

@@ -5,13 +5,10 @@
 //! forger would, handed to the driver: a run that goes on or an error, never a panic nor a
 //! hang. 2000 cases each; the `#[ignore]`d long runs 10^5.
 
-#[path = "../../tests/support/mutate.rs"]
-mod mutate;
-
 use super::checkpoint::{Checkpoint, SavedTrack};
 use super::output::CsvPosition;
 use super::pipeline::Track;
-use mutate::{apply, edits};
+use super::study::part_mutations::mutate::{self, apply, edits};
 use proptest::prelude::*;
 use std::time::{Duration, Instant};
 use stormer::driver::{Crossing, RunState, Solution};

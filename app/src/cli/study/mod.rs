@@ -16,7 +16,7 @@ mod job;
 mod part;
 mod part_check;
 #[cfg(test)]
-mod part_mutations;
+pub(crate) mod part_mutations;
 mod report;
 mod scene_numbers;
 mod shards;
