@@ -71,7 +71,7 @@ fn good_checkpoint() -> (Checkpoint, String) {
         csv: CsvPosition {
             bytes: 4096,
             rows: 11,
-            last_row: "0.5,1,2,3,4,-0.5\n".into(),
+            last_row_hash: super::checkpoint::hash("0.5,1,2,3,4,-0.5\n"),
         },
         section: None,
         track: SavedTrack::from(&track),

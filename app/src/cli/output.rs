@@ -95,16 +95,16 @@ pub struct CsvRecorder {
     pub due: Option<super::checkpoint::Due>,
 }
 
-/// How far a CSV has been written: its length in bytes, its rows, and its last row (to
-/// find the same place again before a resumed run appends to it).
+/// How far a CSV has been written: its length in bytes, its rows, and a hash of its last
+/// row (to find the same place again before a resumed run appends to it).
 #[derive(Debug, Clone, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub struct CsvPosition {
     /// Bytes, the header included.
     pub bytes: u64,
     /// Rows after the header.
     pub rows: u64,
-    /// The last row, its newline included; empty before the first.
-    pub last_row: String,
+    /// FNV-1a hash of the last row, its newline included (of nothing before the first).
+    pub last_row_hash: String,
 }
 
 /// How long written records may wait in the buffer.
@@ -122,7 +122,11 @@ impl CsvRecorder {
             Box::new(File::create(path).map_err(|e| io_error(path, &e))?)
         };
         let header = csv_header(setup);
-        let mut rec = CsvRecorder::over(sink, path, Sample::new(header.clone()), CsvPosition::default());
+        let written = CsvPosition {
+            last_row_hash: super::checkpoint::hash(""),
+            ..CsvPosition::default()
+        };
+        let mut rec = CsvRecorder::over(sink, path, Sample::new(header.clone()), written, String::new());
         let header_line = header.join(",") + "\n";
         rec.write(&header_line)?;
         rec.written.bytes = header_line.len() as u64;
@@ -131,13 +135,13 @@ impl CsvRecorder {
         Ok(rec)
     }
 
-    fn over(sink: Box<dyn Write>, path: &Path, sample: Sample, written: CsvPosition) -> Self {
+    fn over(sink: Box<dyn Write>, path: &Path, sample: Sample, written: CsvPosition, last_row: String) -> Self {
         CsvRecorder {
             out: BufWriter::new(sink),
             path: path.to_path_buf(),
             progress: None,
             sample,
-            line: written.last_row.clone(),
+            line: last_row,
             last_flush: Instant::now(),
             written,
             due: None,
@@ -146,12 +150,9 @@ impl CsvRecorder {
 
     /// How far the file has been written (flush first for the file to hold it).
     pub fn position(&self) -> CsvPosition {
+        let last_row = if self.written.rows == 0 { "" } else { self.line.as_str() };
         CsvPosition {
-            last_row: if self.written.rows == 0 {
-                String::new()
-            } else {
-                self.line.clone()
-            },
+            last_row_hash: super::checkpoint::hash(last_row),
             ..self.written
         }
     }
@@ -194,7 +195,7 @@ impl CsvRecorder {
             rows += 1;
             last = line;
         }
-        if rows != at.rows || last != at.last_row {
+        if rows != at.rows || super::checkpoint::hash(last) != at.last_row_hash {
             return Err(changed(format!(
                 "its first {} bytes hold {rows} rows, not the {} rows the checkpoint recorded: the file was changed",
                 at.bytes, at.rows
@@ -204,6 +205,7 @@ impl CsvRecorder {
             path: path.to_path_buf(),
             sample,
             at: at.clone(),
+            last_row: last.to_string(),
         })
     }
 
@@ -272,6 +274,7 @@ pub struct Kept {
     path: PathBuf,
     sample: Sample,
     at: CsvPosition,
+    last_row: String,
 }
 
 impl Kept {
@@ -286,7 +289,13 @@ impl Kept {
         file.set_len(self.at.bytes).map_err(|e| io_error(path, &e))?;
         let mut file = file;
         io::Seek::seek(&mut file, io::SeekFrom::End(0)).map_err(|e| io_error(path, &e))?;
-        Ok(CsvRecorder::over(Box::new(file), path, self.sample, self.at))
+        Ok(CsvRecorder::over(
+            Box::new(file),
+            path,
+            self.sample,
+            self.at,
+            self.last_row,
+        ))
     }
 }
 
