@@ -146,12 +146,11 @@ impl Due {
 }
 
 /// What a run's records told so far ([`Track`]), its numbers as bits (an energy drift may
-/// be NaN, which JSON has no number for).
+/// be NaN, which JSON has no number for); the last record is the CSV's last row, read
+/// back from it on resuming ([`SavedTrack::with_last`]).
 #[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
 pub struct SavedTrack {
     records: u64,
-    last_t: Option<u64>,
-    last: Vec<u64>,
     e0: Option<u64>,
     max_de: u64,
     max_error: Option<u64>,
@@ -161,8 +160,6 @@ impl From<&Track> for SavedTrack {
     fn from(t: &Track) -> Self {
         SavedTrack {
             records: t.records,
-            last_t: t.last_t.map(f64::to_bits),
-            last: t.last.iter().map(|x| x.to_bits()).collect(),
             e0: t.e0.map(f64::to_bits),
             max_de: t.max_de.to_bits(),
             max_error: t.max_error.map(f64::to_bits),
@@ -170,15 +167,16 @@ impl From<&Track> for SavedTrack {
     }
 }
 
-impl From<&SavedTrack> for Track {
-    fn from(t: &SavedTrack) -> Self {
+impl SavedTrack {
+    /// The track, its last record `(t, state)` the CSV's last row.
+    pub fn with_last(&self, last: Option<(f64, &[f64])>) -> Track {
         Track {
-            records: t.records,
-            last_t: t.last_t.map(f64::from_bits),
-            last: t.last.iter().map(|&b| f64::from_bits(b)).collect(),
-            e0: t.e0.map(f64::from_bits),
-            max_de: f64::from_bits(t.max_de),
-            max_error: t.max_error.map(f64::from_bits),
+            records: self.records,
+            last_t: last.map(|(t, _)| t),
+            last: last.map_or_else(Vec::new, |(_, y)| y.to_vec()),
+            e0: self.e0.map(f64::from_bits),
+            max_de: f64::from_bits(self.max_de),
+            max_error: self.max_error.map(f64::from_bits),
         }
     }
 }

@@ -179,11 +179,13 @@ impl CsvRecorder {
         let mut sample = Sample::new(header.clone());
         let mut rows = 0u64;
         let mut last = "";
+        let mut last_cells = Vec::new();
         for line in lines {
             let cells: Result<Vec<f64>, _> = line.trim_end_matches('\n').split(',').map(str::parse).collect();
             match cells {
                 Ok(cells) if line.ends_with('\n') && cells.len() == header.len() => {
                     sample.push(cells[0], &cells[1..], None);
+                    last_cells = cells;
                 }
                 _ => {
                     return Err(changed(format!(
@@ -206,6 +208,7 @@ impl CsvRecorder {
             sample,
             at: at.clone(),
             last_row: last.to_string(),
+            last_cells,
         })
     }
 
@@ -275,9 +278,17 @@ pub struct Kept {
     sample: Sample,
     at: CsvPosition,
     last_row: String,
+    /// The last row's numbers (none before the first row).
+    last_cells: Vec<f64>,
 }
 
 impl Kept {
+    /// The last row's time and state (`components` numbers after the time), if any.
+    pub fn last(&self, components: usize) -> Option<(f64, &[f64])> {
+        let (t, rest) = self.last_cells.split_first()?;
+        Some((*t, rest.get(..components)?))
+    }
+
     /// Cuts the file to the checkpoint's length (a row written after it, or cut short by a
     /// kill, is dropped) and opens it to append the rows that follow.
     pub fn reopen(self) -> Result<CsvRecorder, Error> {

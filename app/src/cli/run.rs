@@ -494,10 +494,14 @@ impl SceneVisitor for Runner<'_> {
         {
             let _ = writeln!(std::io::stderr(), "{note}");
         }
+        let mut track = Track::default();
         let (mut csv, mut crossings) = match &resumed {
             Some((file, saved)) => {
                 // everything checked before anything is cut
                 let kept = CsvRecorder::check_kept(&path, &setup, &saved.csv)?;
+                // the last record is the CSV's last row: t, the components, the energy
+                let components = header.len() - 1 - usize::from(setup.initial_energy().is_some());
+                track = saved.track.with_last(kept.last(components));
                 let kept_section = match (&section, &saved.section) {
                     (Some(_), Some(at)) => Some(CsvRecorder::check_kept(&section_path, &setup, at)?),
                     (None, None) => None,
@@ -525,10 +529,6 @@ impl SceneVisitor for Runner<'_> {
         };
         csv.progress = Some(super::progress::Progress::new(run.t0(), run.t_end()));
         let mut from: Option<RunState> = resumed.as_ref().map(|(_, saved)| saved.run.clone());
-        let mut track = resumed
-            .as_ref()
-            .map(|(_, saved)| Track::from(&saved.track))
-            .unwrap_or_default();
         if let Some((interval, scene_time, _)) = &checkpoints {
             let pause = super::interrupt::pause_flag();
             if let Some(every) = scene_time {

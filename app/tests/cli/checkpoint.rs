@@ -222,7 +222,7 @@ fn a_charged_particle_pusher_killed_and_resumed_is_the_whole_run() {
 }
 
 #[test]
-fn runs_with_events_a_section_and_reversible_steps_killed_and_resumed_are_the_whole_runs() {
+fn runs_with_events_a_section_output_times_and_other_steps_killed_and_resumed_are_the_whole_runs() {
     // the free kick: adaptive steps, its landing an event located on the dense output
     let run = ["free-kick", "--method", "dormand_prince5", "--rtol", "1e-12"];
     killed_and_resumed("free-kick", &run, 3, 18);
@@ -236,6 +236,10 @@ fn runs_with_events_a_section_and_reversible_steps_killed_and_resumed_are_the_wh
         "velocity_verlet_kdk",
     ];
     killed_and_resumed("reversible", &run, 1000, 20);
+    // output times between the steps, and a time-transformed run (its outputs are events)
+    let run = ["kepler", "--method", "rk4", "--t-end", "40", "--save-at", "0:0.05:40"];
+    killed_and_resumed("save-at", &run, 100, 21);
+    killed_and_resumed("time-transform", &["pythagorean", "--t-end", "3"], 300, 22);
 }
 
 #[test]
