@@ -379,3 +379,75 @@ fn checkpoint_intervals_are_checked() {
         "left after the run"
     );
 }
+
+/// A study (`compare`) killed after some of its jobs, started again with the same command,
+/// runs only the jobs its journal does not hold; its table has the rows of the study never
+/// stopped (all but the timings, which no two runs share).
+#[test]
+fn an_interrupted_comparison_resumed_runs_only_the_missing_jobs() {
+    let study = [
+        "compare",
+        "kepler",
+        "--methods",
+        "rk4,velocity_verlet_kdk",
+        "--dt",
+        "0.1,0.05,0.02,0.01",
+        "--t-end",
+        "10",
+        "--runs",
+        "1",
+        "--jobs",
+        "1",
+    ];
+    let whole = workdir("checkpoint", "compare-whole");
+    stormer_ok(&whole, &study);
+    let dir = workdir("checkpoint", "compare-resumed");
+    let journal = dir.join("out/compare-kepler.journal");
+    let child = Command::new(env!("CARGO_BIN_EXE_stormer"))
+        .args(study)
+        .current_dir(&dir)
+        // each job waits 300 ms after its row is journaled: the kill lands half way
+        .env("STORMER_CHECKPOINT_PAUSE_MS", "300")
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let start = Instant::now();
+    let lines = || std::fs::read_to_string(&journal).map_or(0, |t| t.lines().count());
+    while lines() < 3 {
+        assert!(start.elapsed() < Duration::from_secs(60), "no journal after a minute");
+        std::thread::sleep(Duration::from_millis(5));
+    }
+    let (status, err) = binary::signal(child, "-KILL", start, Duration::from_secs(60));
+    assert!(status.code().is_none(), "finished before the kill: {err}");
+    let resumed = stderr(&stormer_ok(&dir, &study));
+    let done = lines_done(&resumed);
+    assert!((2..8).contains(&done), "{resumed}");
+    assert!(
+        resumed.contains(&format!(
+            "{done} of the 8 jobs were done; running the other {}",
+            8 - done
+        )),
+        "{resumed}"
+    );
+    // the rows without their timings (seconds, timing_runs)
+    let untimed = |d: &Path| -> Vec<String> {
+        let text = std::fs::read_to_string(d.join("out/compare-kepler.csv")).unwrap();
+        text.lines()
+            .map(|l| {
+                let cells: Vec<&str> = l.split(',').collect();
+                [&cells[..6], &cells[8..]].concat().join(",")
+            })
+            .collect()
+    };
+    assert_eq!(untimed(&dir), untimed(&whole));
+    assert!(!journal.exists(), "the journal is removed once the table is written");
+}
+
+/// `K` of `resumed from ...: K of the N jobs were done`.
+fn lines_done(err: &str) -> usize {
+    err.split(" of the ")
+        .next()
+        .and_then(|s| s.rsplit(' ').next())
+        .and_then(|n| n.parse().ok())
+        .unwrap_or_else(|| panic!("{err}"))
+}

@@ -304,6 +304,6 @@ fn an_interrupted_ensemble_resumed_runs_only_the_missing_members_and_writes_the_
     // a journal of another ensemble is refused, and left as it is
     std::fs::write(&journal, "{\"format\":\"stormer-ensemble/1\"}\n").unwrap();
     let out = stormer(&dir, &STUDY);
-    binary::assert_error(&out, "is not the header of an ensemble's journal");
+    binary::assert_error(&out, "line 1 is not the header of a journal of members");
     assert_eq!(read(&journal), "{\"format\":\"stormer-ensemble/1\"}\n");
 }

@@ -7,9 +7,9 @@
 //! model, any number of the file can be varied, and the member's run stops and is measured
 //! as `stormer run` would (the free kick at its landing).
 
-use super::ensemble_journal;
 use super::ensemble_part::{self, EnsembleId, EnsemblePart, Member};
 use super::job::{self, SceneText};
+use super::journal;
 use super::scene_numbers::{self, Numbers};
 use super::transform;
 use super::vary::{self, Axis, Vary};
@@ -274,7 +274,7 @@ pub fn ensemble(args: &EnsembleArgs) -> anyhow::Result<()> {
         rows: Vec::new(),
     };
     let id = &header.ensemble;
-    let journal_path = ensemble_journal::path(&args.out, &header);
+    let journal_path = journal::path(&args.out, &header);
     let mut outputs = match shard {
         (1, 1) => super::ensemble_report::outputs(id, &args.out),
         _ => vec![part_path(id, &args.out, shard)],
@@ -296,7 +296,7 @@ pub fn ensemble(args: &EnsembleArgs) -> anyhow::Result<()> {
     };
     let mine = super::shard_jobs(size, shard);
     // the members an interrupted run of the same command finished are not run again
-    let (journal, done) = ensemble_journal::open(&journal_path, &header, &mine)?;
+    let (journal, done) = journal::open(&journal_path, &header, &mine)?;
     let finished: std::collections::BTreeSet<usize> = done.iter().map(|m| m.member).collect();
     let todo: Vec<usize> = mine.iter().copied().filter(|m| !finished.contains(m)).collect();
     if !done.is_empty() {
