@@ -561,7 +561,6 @@ impl SceneVisitor for Runner<'_> {
                 run: state,
                 checksum: String::new(),
             };
-        let mut checkpointed = false;
         let outcome = loop {
             let pause_at = match checkpoints {
                 Some((Interval::Steps(n), ..)) => from.as_ref().map_or(0, |s| s.step).saturating_add(n),
@@ -602,7 +601,6 @@ impl SceneVisitor for Runner<'_> {
                 outcome.error = Some(e);
                 break outcome;
             }
-            checkpointed = true;
             // lowered before the signal's flag is read: a signal after this raises it again
             super::interrupt::pause_flag().store(false, Ordering::Relaxed);
             if super::interrupt::flag().load(Ordering::Relaxed) {
@@ -617,7 +615,8 @@ impl SceneVisitor for Runner<'_> {
             let _ = std::fs::remove_file(checkpoint::temporary(file));
         }
         let resume_hint = match &checkpoints {
-            Some((_, _, file)) if checkpointed || resumed.is_some() => format!(
+            // a run whole when the signal came has no checkpoint left
+            Some((_, _, file)) if file.exists() => format!(
                 "; checkpoint in {f}: continue with `stormer run --resume {f}`",
                 f = file.display()
             ),
@@ -674,7 +673,7 @@ impl SceneVisitor for Runner<'_> {
                 ""
             };
             return Err(anyhow!(
-                "{e}{hint}; stopped after {} steps{kept}{resume_hint}",
+                "{e}{hint}; stopped after {} steps{kept}",
                 stats.steps
             ));
         }
