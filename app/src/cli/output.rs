@@ -162,25 +162,33 @@ impl CsvRecorder {
     /// numbers; returns them as a sample for the pictures. Nothing is changed.
     pub fn check_kept<S: Scene>(path: &Path, setup: &Setup<S>, at: &CsvPosition) -> Result<Kept, Error> {
         let changed = |why: String| Error::invalid("--resume", format!("{}: {why}", path.display()));
-        let bytes = std::fs::read(path).map_err(|e| io_error(path, &e))?;
-        let Some(kept) = usize::try_from(at.bytes).ok().and_then(|n| bytes.get(..n)) else {
+        let io = |e: io::Error| io_error(path, &e);
+        let file = File::open(path).map_err(io)?;
+        let length = file.metadata().map_err(io)?.len();
+        if length < at.bytes {
             return Err(changed(format!(
-                "it has {} bytes, fewer than the {} the checkpoint recorded: the file was cut or replaced",
-                bytes.len(),
+                "it has {length} bytes, fewer than the {} the checkpoint recorded: the file was cut or replaced",
                 at.bytes
             )));
-        };
-        let text = std::str::from_utf8(kept).map_err(|_| changed("it is not text".into()))?;
+        }
+        // read as a stream, up to the checkpoint's length: the file may be far larger than memory
+        let mut reader = io::BufReader::new(io::Read::take(file, at.bytes));
+        let mut line = String::new();
+        let not_text = |_| changed("it is not text".into());
+        io::BufRead::read_line(&mut reader, &mut line).map_err(not_text)?;
         let header = csv_header(setup);
-        let mut lines = text.split_inclusive('\n');
-        if lines.next().map(str::trim_end) != Some(header.join(",").as_str()) {
+        if line.trim_end() != header.join(",") {
             return Err(changed(format!("its header is not this run's ({})", header.join(","))));
         }
         let mut sample = Sample::new(header.clone());
         let mut rows = 0u64;
-        let mut last = "";
+        let mut last = String::new();
         let mut last_cells = Vec::new();
-        for line in lines {
+        loop {
+            line.clear();
+            if io::BufRead::read_line(&mut reader, &mut line).map_err(not_text)? == 0 {
+                break;
+            }
             let cells: Result<Vec<f64>, _> = line.trim_end_matches('\n').split(',').map(str::parse).collect();
             match cells {
                 Ok(cells) if line.ends_with('\n') && cells.len() == header.len() => {
@@ -195,9 +203,9 @@ impl CsvRecorder {
                 }
             }
             rows += 1;
-            last = line;
+            std::mem::swap(&mut last, &mut line);
         }
-        if rows != at.rows || super::checkpoint::hash(last) != at.last_row_hash {
+        if rows != at.rows || super::checkpoint::hash(&last) != at.last_row_hash {
             return Err(changed(format!(
                 "its first {} bytes hold {rows} rows, not the {} rows the checkpoint recorded: the file was changed",
                 at.bytes, at.rows
@@ -207,7 +215,7 @@ impl CsvRecorder {
             path: path.to_path_buf(),
             sample,
             at: at.clone(),
-            last_row: last.to_string(),
+            last_row: last,
             last_cells,
         })
     }

@@ -672,10 +672,7 @@ impl SceneVisitor for Runner<'_> {
             } else {
                 ""
             };
-            return Err(anyhow!(
-                "{e}{hint}; stopped after {} steps{kept}",
-                stats.steps
-            ));
+            return Err(anyhow!("{e}{hint}; stopped after {} steps{kept}", stats.steps));
         }
         flushed?;
         section_flushed?;
