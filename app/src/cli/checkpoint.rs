@@ -212,6 +212,51 @@ pub struct Checkpoint {
     pub checksum: String,
 }
 
+/// What every checkpoint of a run shares: the command line that began it, its scene and
+/// method with their checksums.
+#[derive(Debug, Clone)]
+pub struct Identity {
+    /// The arguments of `stormer run`.
+    pub args: Vec<String>,
+    /// The scene's name.
+    pub scene: String,
+    /// Hash of the scene file's text.
+    pub scene_hash: String,
+    /// The method's name.
+    pub method: String,
+    /// Hash of the method as resolved.
+    pub method_hash: String,
+}
+
+impl Identity {
+    /// The checkpoint of this run at `run`, its records' `track`, its CSVs written to
+    /// `csv` and `section`, its reversible steps `step_range`.
+    pub fn checkpoint(
+        &self,
+        run: RunState,
+        track: &Track,
+        csv: CsvPosition,
+        section: Option<CsvPosition>,
+        step_range: Option<StepRange>,
+    ) -> Checkpoint {
+        Checkpoint {
+            format: FORMAT.into(),
+            version: VERSION.into(),
+            args: self.args.clone(),
+            scene: self.scene.clone(),
+            scene_hash: self.scene_hash.clone(),
+            method: self.method.clone(),
+            method_hash: self.method_hash.clone(),
+            csv,
+            section,
+            track: track.into(),
+            step_range,
+            run,
+            checksum: String::new(),
+        }
+    }
+}
+
 /// FNV-1a, 64 bits, as hex.
 pub fn hash(text: &str) -> String {
     format!("{:016x}", super::study::fnv1a(text.as_bytes()))

@@ -22,6 +22,7 @@ mod save_at;
 mod scene;
 mod scene_overrides;
 mod section;
+mod segments;
 mod study;
 mod tour;
 mod tour_page;

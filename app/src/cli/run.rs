@@ -3,14 +3,14 @@
 use super::checkpoint::{self, Checkpoint, Interval};
 use super::choice;
 use super::output::{csv_header, file_safe, is_stdout, CsvRecorder};
-use super::pipeline::{Options, Resume, SceneRun, Steps, Track};
+use super::pipeline::{Options, SceneRun, Steps, Track};
 use super::scene_overrides::SceneOverrides;
-use super::section::{Section, WithSection};
+use super::section::Section;
+use super::segments::{self, Checkpoints};
 use anyhow::anyhow;
 use std::io::Write;
 use std::path::{Path, PathBuf};
-use std::sync::atomic::Ordering;
-use stormer::driver::{RunState, Stats};
+use stormer::driver::Stats;
 use stormer::models::KeplerCoordinates;
 use stormer::stepper::{ImplicitOptions, Tolerances};
 use stormer::text::number;
@@ -528,95 +528,33 @@ impl SceneVisitor for Runner<'_> {
             }
         };
         csv.progress = Some(super::progress::Progress::new(run.t0(), run.t_end()));
-        let mut from: Option<RunState> = resumed.as_ref().map(|(_, saved)| saved.run.clone());
-        if let Some((interval, scene_time, _)) = &checkpoints {
-            let pause = super::interrupt::pause_flag();
-            if let Some(every) = scene_time {
-                let now = from.as_ref().map_or(run.t0(), |s| track.last_t.unwrap_or(s.time()));
-                csv.due = Some(checkpoint::Due::new(run.t0(), run.t_end(), *every, now, pause));
-            }
-            if let Interval::Seconds(seconds) = *interval {
-                // detached: it only raises the flag, and ends with the process
-                std::thread::spawn(move || loop {
-                    std::thread::sleep(std::time::Duration::from_secs_f64(seconds));
-                    pause.store(true, Ordering::Relaxed);
-                });
-            }
-        }
-        let checkpoint_of =
-            |state: RunState, track: &Track, csv: &CsvRecorder, section: Option<&CsvRecorder>| Checkpoint {
-                format: checkpoint::FORMAT.into(),
-                version: checkpoint::VERSION.into(),
-                args: resumed
-                    .as_ref()
-                    .map_or_else(command_line, |(_, saved)| saved.args.clone()),
-                scene: setup.name.clone(),
-                scene_hash: self.scene_hash.clone(),
-                method: method.name().to_string(),
-                method_hash: method_hash.clone(),
-                csv: csv.position(),
-                section: section.map(CsvRecorder::position),
-                track: track.into(),
-                step_range: None,
-                run: state,
-                checksum: String::new(),
-            };
-        let outcome = loop {
-            let pause_at = match checkpoints {
-                Some((Interval::Steps(n), ..)) => from.as_ref().map_or(0, |s| s.step).saturating_add(n),
-                _ => u64::MAX,
-            };
-            let resume = Resume {
-                from: from.as_ref(),
-                pause_at,
-                track: std::mem::take(&mut track),
-            };
-            let (mut outcome, paused) = match crossings.take() {
-                Some((c, count)) => {
-                    let mut with = WithSection {
-                        run: &mut csv,
-                        crossings: c,
-                        setup: &setup,
-                        count,
-                    };
-                    let outcome = run.run_resumable(&mut with, resume);
-                    crossings = Some((with.crossings, with.count));
-                    outcome
-                }
-                None => run.run_resumable(&mut csv, resume),
-            };
-            let (Some(state), Some((_, _, file))) = (paused, &checkpoints) else {
-                break outcome;
-            };
-            let written = csv
-                .flush()
-                .and_then(|()| crossings.as_mut().map_or(Ok(()), |(c, _)| c.flush()))
-                .and_then(|()| {
-                    let mut saved =
-                        checkpoint_of(state.clone(), &outcome.track, &csv, crossings.as_ref().map(|c| &c.0));
-                    saved.step_range = run.step_range_state();
-                    saved.write(file)
-                });
-            if let Err(e) = written {
-                outcome.error = Some(e);
-                break outcome;
-            }
-            // lowered before the signal's flag is read: a signal after this raises it again
-            super::interrupt::pause_flag().store(false, Ordering::Relaxed);
-            if super::interrupt::flag().load(Ordering::Relaxed) {
-                break outcome;
-            }
-            track = outcome.track;
-            from = Some(state);
+        let from = resumed.as_ref().map(|(_, saved)| saved.run.clone());
+        let identity = checkpoint::Identity {
+            args: resumed
+                .as_ref()
+                .map_or_else(command_line, |(_, saved)| saved.args.clone()),
+            scene: setup.name.clone(),
+            scene_hash: self.scene_hash.clone(),
+            method: method.name().to_string(),
+            method_hash: method_hash.clone(),
         };
-        if let (None, Some((_, _, file))) = (&outcome.error, &checkpoints) {
-            // the run is whole: nothing is left to resume
-            let _ = std::fs::remove_file(file);
-            let _ = std::fs::remove_file(checkpoint::temporary(file));
-        }
+        let checkpoints = checkpoints.map(|(interval, scene_time, file)| Checkpoints {
+            interval,
+            scene_time,
+            file,
+            identity,
+        });
+        let outcome = segments::run(
+            &mut run,
+            &setup,
+            (&mut csv, &mut crossings),
+            from,
+            track,
+            checkpoints.as_ref(),
+        );
         let resume_hint = match &checkpoints {
             // a run whole when the signal came has no checkpoint left
-            Some((_, _, file)) if file.exists() => format!(
+            Some(Checkpoints { file, .. }) if file.exists() => format!(
                 "; checkpoint in {f}: continue with `stormer run --resume {f}`",
                 f = file.display()
             ),
