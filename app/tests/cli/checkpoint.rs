@@ -451,3 +451,49 @@ fn lines_done(err: &str) -> usize {
         .and_then(|n| n.parse().ok())
         .unwrap_or_else(|| panic!("{err}"))
 }
+
+/// The scene file edited between the stop and the resumption (a number changed, as a user
+/// would): refused, naming the scene, and the CSV left as it was.
+#[test]
+fn a_scene_file_edited_after_the_checkpoint_is_refused() {
+    let dir = workdir("checkpoint", "edited-scene");
+    let toml = binary::stdout(&stormer_ok(&dir, &["scene", "show", "pendulum"]));
+    std::fs::write(dir.join("mine.toml"), &toml).unwrap();
+    let args = [
+        "run",
+        "mine.toml",
+        "--t-end",
+        "1e5",
+        "--out",
+        "run.csv",
+        "--checkpoint",
+        "every=500steps",
+    ];
+    let child = Command::new(env!("CARGO_BIN_EXE_stormer"))
+        .args(args)
+        .current_dir(&dir)
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let start = Instant::now();
+    while !dir.join("run.csv.checkpoint").exists() {
+        assert!(
+            start.elapsed() < Duration::from_secs(60),
+            "no checkpoint after a minute"
+        );
+        std::thread::sleep(Duration::from_millis(5));
+    }
+    let (status, err) = binary::signal(child, "-TERM", start, Duration::from_secs(60));
+    assert_eq!(status.code(), Some(143), "{err}");
+    let csv = std::fs::read(dir.join("run.csv")).unwrap();
+    // one more digit in a number of the file
+    let edited = toml.replacen("dt = 0.01", "dt = 0.011", 1);
+    assert_ne!(edited, toml, "the scene has no `dt = 0.01` line:\n{toml}");
+    std::fs::write(dir.join("mine.toml"), edited).unwrap();
+    let out = stormer(&dir, &["run", "--resume", "run.csv.checkpoint"]);
+    assert_error(&out, "the scene file is not the one the checkpoint's run began with");
+    assert!(
+        std::fs::read(dir.join("run.csv")).unwrap() == csv,
+        "the CSV was changed"
+    );
+}
