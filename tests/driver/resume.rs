@@ -194,3 +194,64 @@ fn a_state_of_another_run_is_refused() {
     let Err((_, e)) = run.outcome else { panic!("accepted") };
     assert!(e.to_string().contains("dormand_prince5"), "{e}");
 }
+
+/// A saved state is not trusted (it may come from a file): one whose time, step or state
+/// would make the loop run forever or step outside the run is refused, within a second.
+#[test]
+fn states_that_would_hang_or_leave_the_run_are_refused() {
+    use stormer::driver::ControlState;
+    let p = Kepler::new(1.0);
+    let adaptive = || Driver::adaptive(Tolerances::new(1e-8, 1e-8));
+    let mut s = stepper("dormand_prince5", &Default::default());
+    let run = adaptive()
+        .pause_at(5)
+        .run_resumable(&p, &mut s, 0.0, &Y0, 5.0, &mut Solution::default(), None);
+    let good = run.paused.unwrap();
+    let ControlState::Adaptive { err_old, .. } = good.control else {
+        panic!("{:?}", good.control)
+    };
+    let with_h = |h: f64| RunState {
+        control: ControlState::Adaptive {
+            h: h.to_bits(),
+            err_old,
+            last_rejected: false,
+        },
+        ..good.clone()
+    };
+    let mut bad = vec![
+        ("a step that is NaN", with_h(f64::NAN)),
+        ("a step of 0", with_h(0.0)),
+        ("a step backwards", with_h(-0.01)),
+        ("a step longer than the span", with_h(100.0)),
+    ];
+    bad.push((
+        "a time that is NaN",
+        RunState {
+            t: f64::NAN.to_bits(),
+            ..good.clone()
+        },
+    ));
+    bad.push((
+        "a time after the end",
+        RunState {
+            t: 7f64.to_bits(),
+            ..good.clone()
+        },
+    ));
+    let mut y = good.y.clone();
+    y[2] = f64::INFINITY.to_bits();
+    bad.push(("a state that is not finite", RunState { y, ..good.clone() }));
+    for (what, state) in bad {
+        let (send, receive) = std::sync::mpsc::channel();
+        std::thread::spawn(move || {
+            let (p, mut s) = (Kepler::new(1.0), stepper("dormand_prince5", &Default::default()));
+            let run = adaptive().run_resumable(&p, &mut s, 0.0, &Y0, 5.0, &mut Solution::default(), Some(&state));
+            let _ = send.send(run.outcome.map(|_| ()).map_err(|(_, e)| e.to_string()));
+        });
+        let outcome = receive
+            .recv_timeout(std::time::Duration::from_secs(10))
+            .unwrap_or_else(|_| panic!("{what}: the resumed run did not end"));
+        let message = outcome.expect_err(what);
+        assert!(message.contains("is not of this run"), "{what}: {message}");
+    }
+}
