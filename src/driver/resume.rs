@@ -2,11 +2,11 @@
 //! need to go on exactly as if the run had not stopped. A run hands it back when it stops
 //! on its cancel flag or at [`super::Driver::pause_at`] ([`super::Driver::run_resumable`]),
 //! and continues from it when given it back; serde writes and reads it (scalars as `f64`
-//! bit patterns, exact in any format), so it can go to a file and the run go on in another
+//! bit patterns, [`Bits`], exact in any format), so it can go to a file and the run go on in another
 //! process (docs/reproducibility.md).
 
 use super::Stats;
-use crate::stepper::snapshot::{bits, from_bits};
+use crate::stepper::snapshot::{bits, from_bits, Bits};
 use crate::stepper::StepperState;
 use crate::{Error, Real, State};
 use serde::{Deserialize, Serialize};
@@ -19,13 +19,13 @@ pub struct RunState {
     /// Accepted steps so far (the index of the next step).
     pub step: u64,
     /// The time reached (bits).
-    pub t: u64,
+    pub t: Bits,
     /// The state reached (bits of each component).
-    pub y: Vec<u64>,
+    pub y: Vec<Bits>,
     /// Steps since the last record (records every N steps).
     pub since_record: u64,
     /// The stop condition's value at `(t, y)` as the loop last computed it (bits).
-    pub stop_g: Option<u64>,
+    pub stop_g: Option<Bits>,
     /// The output times' and events' bookkeeping, when the run has them.
     pub between: Option<BetweenState>,
     /// The work done so far.
@@ -43,18 +43,18 @@ pub enum ControlState {
     /// whether the last try was rejected.
     Adaptive {
         /// The next step to try (bits).
-        h: u64,
+        h: Bits,
         /// The previous accepted step's error norm (bits).
-        err_old: u64,
+        err_old: Bits,
         /// The last step was rejected (no growth on the next).
         last_rejected: bool,
     },
     /// Reversible steps: the control variable and its rate.
     Reversible {
         /// `z = 1 / s` (bits).
-        z: u64,
+        z: Bits,
         /// Its rate `G` (bits).
-        g: u64,
+        g: Bits,
     },
 }
 
@@ -64,20 +64,20 @@ pub struct BetweenState {
     /// The first output time not yet recorded.
     pub next: usize,
     /// Each event function at the current state (bits).
-    pub g_old: Vec<u64>,
+    pub g_old: Vec<Bits>,
     /// The slope at the current state when the driver evaluated it, and where (bits).
-    pub f1: Option<(u64, Vec<u64>)>,
+    pub f1: Option<(Bits, Vec<Bits>)>,
     /// The second derivative there, when the quintic Hermite made it, and where (bits).
-    pub d1: Option<(u64, Vec<u64>)>,
+    pub d1: Option<(Bits, Vec<Bits>)>,
 }
 
 /// A state's components as bits.
-pub(super) fn state_bits<S: State>(y: &S) -> Vec<u64> {
+pub(super) fn state_bits<S: State>(y: &S) -> Vec<Bits> {
     y.as_slice().iter().map(|&x| bits(x)).collect()
 }
 
 /// Writes the bits `b` into `y` (same shape), or says what does not fit.
-pub(super) fn read_state<S: State>(what: &str, b: &[u64], y: &mut S) -> Result<(), Error> {
+pub(super) fn read_state<S: State>(what: &str, b: &[Bits], y: &mut S) -> Result<(), Error> {
     if b.len() != y.dim() {
         return Err(Error::invalid(
             "run state",

@@ -2,9 +2,10 @@
 //! what the next step reads besides the state `y`, so that a run continued from a saved
 //! snapshot takes bit for bit the steps it would have taken without stopping.
 //!
-//! Scalars are kept as the bit patterns of their `f64` values (`u64`), which every format
-//! serde writes (JSON, TOML, binary) reads back exactly; that is exact for `f32` and `f64`
-//! states. Caches that only remember a value a step would compute again the same way (a
+//! Scalars are kept as the bit patterns of their `f64` values ([`Bits`], written as 16 hex
+//! digits), which every format serde writes (JSON, TOML, binary) reads back exactly, even
+//! where numbers are 64-bit floats or signed integers (JavaScript, TOML); that is exact for
+//! `f32` and `f64` states. Caches that only remember a value a step would compute again the same way (a
 //! gyration's rotation for a step size, an extrapolation's coefficients for a step ratio)
 //! are not kept: recomputing them gives the same bits.
 //!
@@ -13,7 +14,43 @@
 
 use crate::real::{lit, to_f64};
 use crate::{Error, Real, State};
-use serde::{Deserialize, Serialize};
+use serde::{Deserialize, Deserializer, Serialize, Serializer};
+
+/// The bit pattern of an `f64`, written and read as 16 hex digits (`"3ff0000000000000"` for
+/// 1.0): exact in any format, and the same bits in any reader.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct Bits(pub u64);
+
+impl Bits {
+    /// The bits of `x`.
+    pub fn of(x: f64) -> Self {
+        Bits(x.to_bits())
+    }
+
+    /// The `f64` of these bits.
+    pub fn value(self) -> f64 {
+        f64::from_bits(self.0)
+    }
+}
+
+impl Serialize for Bits {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(&format!("{:016x}", self.0))
+    }
+}
+
+impl<'de> Deserialize<'de> for Bits {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        let text = String::deserialize(d)?;
+        let hex = text.len() == 16 && text.bytes().all(|b| b.is_ascii_hexdigit());
+        match u64::from_str_radix(&text, 16) {
+            Ok(b) if hex => Ok(Bits(b)),
+            _ => Err(serde::de::Error::custom(format!(
+                "'{text}' is not the 16 hex digits of an f64's bits"
+            ))),
+        }
+    }
+}
 
 /// Named parts of a stepper's internal state: flags and vectors of scalars (as `f64` bit
 /// patterns), in the order the stepper wrote them. Empty for a stepper that keeps nothing
@@ -32,17 +69,17 @@ pub enum Part {
     /// A flag.
     Flag(bool),
     /// Scalars, as the bit patterns of their `f64` values.
-    Values(Vec<u64>),
+    Values(Vec<Bits>),
 }
 
 /// The bit pattern of a scalar's `f64` value.
-pub fn bits<T: Real>(x: T) -> u64 {
-    to_f64(x).to_bits()
+pub fn bits<T: Real>(x: T) -> Bits {
+    Bits::of(to_f64(x))
 }
 
 /// The scalar of a bit pattern written by [`bits`].
-pub fn from_bits<T: Real>(b: u64) -> T {
-    lit(f64::from_bits(b))
+pub fn from_bits<T: Real>(b: Bits) -> T {
+    lit(b.value())
 }
 
 impl StepperState {

@@ -200,6 +200,7 @@ fn a_state_of_another_run_is_refused() {
 #[test]
 fn states_that_would_hang_or_leave_the_run_are_refused() {
     use stormer::driver::ControlState;
+    use stormer::stepper::snapshot::Bits;
     let p = Kepler::new(1.0);
     let adaptive = || Driver::adaptive(Tolerances::new(1e-8, 1e-8));
     let mut s = stepper("dormand_prince5", &Default::default());
@@ -212,7 +213,7 @@ fn states_that_would_hang_or_leave_the_run_are_refused() {
     };
     let with_h = |h: f64| RunState {
         control: ControlState::Adaptive {
-            h: h.to_bits(),
+            h: Bits::of(h),
             err_old,
             last_rejected: false,
         },
@@ -227,19 +228,19 @@ fn states_that_would_hang_or_leave_the_run_are_refused() {
     bad.push((
         "a time that is NaN",
         RunState {
-            t: f64::NAN.to_bits(),
+            t: Bits::of(f64::NAN),
             ..good.clone()
         },
     ));
     bad.push((
         "a time after the end",
         RunState {
-            t: 7f64.to_bits(),
+            t: Bits::of(7.0),
             ..good.clone()
         },
     ));
     let mut y = good.y.clone();
-    y[2] = f64::INFINITY.to_bits();
+    y[2] = Bits::of(f64::INFINITY);
     bad.push(("a state that is not finite", RunState { y, ..good.clone() }));
     for (what, state) in bad {
         let (send, receive) = std::sync::mpsc::channel();
@@ -254,4 +255,33 @@ fn states_that_would_hang_or_leave_the_run_are_refused() {
         let message = outcome.expect_err(what);
         assert!(message.contains("is not of this run"), "{what}: {message}");
     }
+}
+
+/// The state is written exactly by any serde format: JSON (the checkpoint's) and TOML, whose
+/// integers are signed (an `f64`'s bits as an integer would not fit) and whose readers in
+/// other languages may read numbers as `f64`: the bits are hex strings.
+#[test]
+fn a_run_state_round_trips_exactly_through_json_and_toml() {
+    let p = Kepler::new(1.0);
+    // compensated (a carry), FSAL (a slope), events (their bookkeeping), a negative state
+    let driver = || {
+        Driver::adaptive(Tolerances::new(1e-8, 1e-8)).compensated().event(
+            |_t, y: &[f64; 4]| y[1],
+            Crossing::Either,
+            false,
+        )
+    };
+    let mut s = stepper("dormand_prince5", &Default::default());
+    let run = driver()
+        .pause_at(30)
+        .run_resumable(&p, &mut s, 0.0, &Y0, 5.0, &mut Solution::default(), None);
+    let state = run.paused.unwrap();
+    assert!(!state.stepper.is_empty());
+    let json: RunState = serde_json::from_str(&serde_json::to_string(&state).unwrap()).unwrap();
+    assert_eq!(json, state);
+    let text = toml::to_string(&state).unwrap();
+    let read: RunState = toml::from_str(&text).unwrap();
+    assert_eq!(read, state, "{text}");
+    // and the bits are hex digits, not numbers
+    assert!(text.contains(&format!("\"{:016x}\"", state.y[0].0)), "{text}");
 }
