@@ -15,6 +15,7 @@ use std::io::Write as _;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicBool, Ordering};
 use stormer::driver::RunState;
+use stormer::stepper::snapshot::Bits;
 use stormer::Error;
 
 /// The version of the checkpoint format.
@@ -151,18 +152,18 @@ impl Due {
 #[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
 pub struct SavedTrack {
     records: u64,
-    e0: Option<u64>,
-    max_de: u64,
-    max_error: Option<u64>,
+    e0: Option<Bits>,
+    max_de: Bits,
+    max_error: Option<Bits>,
 }
 
 impl From<&Track> for SavedTrack {
     fn from(t: &Track) -> Self {
         SavedTrack {
             records: t.records,
-            e0: t.e0.map(f64::to_bits),
-            max_de: t.max_de.to_bits(),
-            max_error: t.max_error.map(f64::to_bits),
+            e0: t.e0.map(Bits::of),
+            max_de: Bits::of(t.max_de),
+            max_error: t.max_error.map(Bits::of),
         }
     }
 }
@@ -174,9 +175,9 @@ impl SavedTrack {
             records: self.records,
             last_t: last.map(|(t, _)| t),
             last: last.map_or_else(Vec::new, |(_, y)| y.to_vec()),
-            e0: self.e0.map(f64::from_bits),
-            max_de: f64::from_bits(self.max_de),
-            max_error: self.max_error.map(f64::from_bits),
+            e0: self.e0.map(Bits::value),
+            max_de: self.max_de.value(),
+            max_error: self.max_error.map(Bits::value),
         }
     }
 }
