@@ -184,6 +184,21 @@ fn an_implicit_run_killed_and_resumed_is_the_whole_run() {
         "10",
     ];
     killed_and_resumed("gauss", &run, 50, 13);
+    // adaptive, Newton: the starting guess extrapolated from the last step's stages
+    let run = [
+        "pendulum",
+        "--method",
+        "lobatto_iiia4",
+        "--solver",
+        "newton",
+        "--rtol",
+        "1e-8",
+        "--t-end",
+        "20",
+        "--every",
+        "10",
+    ];
+    killed_and_resumed("lobatto-newton", &run, 100, 23);
 }
 
 #[test]
