@@ -32,7 +32,7 @@ pub struct RunArgs {
     /// then continues the run bit for bit (docs/reproducibility.md). Removed when the run
     /// ends [default interval: every=60s].
     #[arg(long, value_name = "every=N steps|T s|T|T y", num_args = 0..=1,
-          default_missing_value = checkpoint::DEFAULT_INTERVAL, allow_hyphen_values = true)]
+          default_missing_value = checkpoint::DEFAULT_INTERVAL)]
     pub checkpoint: Option<String>,
     /// Continue the run a checkpoint holds, with the settings it began with (give no
     /// other option), from the directory it began in: its CSV is cut to the checkpoint's
@@ -279,9 +279,20 @@ pub fn run(args: &RunArgs) -> anyhow::Result<()> {
     run_from(&stored, Some((file.clone(), saved)))
 }
 
-/// The arguments of `stormer run` as the user gave them (a checkpoint keeps them).
-fn command_line() -> Vec<String> {
-    std::env::args().skip(1).skip_while(|a| a != "run").skip(1).collect()
+/// The arguments of `stormer run` as the user gave them (a checkpoint keeps them, as text).
+fn command_line() -> Result<Vec<String>, Error> {
+    let args = std::env::args_os().skip(1).skip_while(|a| a != "run").skip(1);
+    args.map(|a| {
+        a.into_string().map_err(|a| {
+            Error::invalid(
+                "--checkpoint",
+                format!(
+                    "the argument {a:?} is not UTF-8 text, which a checkpoint cannot keep: name the files in UTF-8"
+                ),
+            )
+        })
+    })
+    .collect()
 }
 
 /// Runs a scene from its start, or from the checkpoint `resumed` (its file and contents).
@@ -473,6 +484,12 @@ impl SceneVisitor for Runner<'_> {
             })
             .transpose()?;
         outputs.extend(checkpoints.as_ref().map(|(_, _, file)| file.clone()));
+        // what each checkpoint keeps of the command line, refused before anything is written
+        let command = match &resumed {
+            Some((_, saved)) => saved.args.clone(),
+            None if checkpoints.is_some() => command_line()?,
+            None => Vec::new(),
+        };
         for output in &outputs {
             super::output::refuse_overwriting(output, &inputs)?;
         }
@@ -530,9 +547,7 @@ impl SceneVisitor for Runner<'_> {
         csv.progress = Some(super::progress::Progress::new(run.t0(), run.t_end()));
         let from = resumed.as_ref().map(|(_, saved)| saved.run.clone());
         let identity = checkpoint::Identity {
-            args: resumed
-                .as_ref()
-                .map_or_else(command_line, |(_, saved)| saved.args.clone()),
+            args: command,
             scene: setup.name.clone(),
             scene_hash: self.scene_hash.clone(),
             method: method.name().to_string(),

@@ -7,6 +7,7 @@
 //! with, foreign, of another scene, method or version: one line, nothing overwritten.
 #![cfg(unix)]
 
+use std::os::unix::ffi::OsStrExt;
 use std::path::Path;
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
@@ -387,6 +388,16 @@ fn checkpoint_intervals_are_checked() {
     assert_error(&out, "this scene's time is in");
     let out = stormer(&dir, &["run", "pendulum", "--out", "-", "--checkpoint"]);
     assert_error(&out, "standard output");
+    // a checkpoint keeps the command line as text: a file name that is not UTF-8 is refused
+    let name = std::ffi::OsStr::from_bytes(b"r\xffn.csv");
+    let out = Command::new(env!("CARGO_BIN_EXE_stormer"))
+        .args(["run", "kepler", "--t-end", "1", "--checkpoint", "--out"])
+        .arg(name)
+        .current_dir(&dir)
+        .output()
+        .unwrap();
+    assert_error(&out, "is not UTF-8 text, which a checkpoint cannot keep");
+    assert!(!dir.join(name).exists(), "the CSV was created");
     // the scene's time: kepler is in years
     stormer_ok(&dir, &["run", "kepler", "--t-end", "1", "--checkpoint", "every=0.1y"]);
     assert!(
