@@ -84,20 +84,25 @@ fn start_and_kill(dir: &Path, args: &[&str], ms: u64, torn: &mut u32) -> Option<
 /// both directories must then hold the same bytes, and the runs print the same result.
 /// Returns the kills that landed during a checkpoint's write.
 fn killed_and_resumed(name: &str, run: &[&str], every: u64, seed: u64) -> u32 {
+    killed_and_resumed_at(name, run, &format!("every={every}steps"), seed)
+}
+
+/// [`killed_and_resumed`] with checkpoints at `interval` (`every=...`).
+fn killed_and_resumed_at(name: &str, run: &[&str], interval: &str, seed: u64) -> u32 {
     let whole_dir = workdir("checkpoint", &format!("{name}-whole"));
     let cut_dir = workdir("checkpoint", &format!("{name}-cut"));
     let mut args = vec!["run"];
     args.extend_from_slice(run);
     args.extend(["--out", "run.csv"]);
     let whole = stormer_ok(&whole_dir, &args);
-    let interval = format!("every={every}steps");
-    args.extend(["--checkpoint", interval.as_str()]);
+    args.extend(["--checkpoint", interval]);
     let resume = ["run", "--resume", "run.csv.checkpoint"];
     let mut moments = Moments(seed);
-    let (mut torn, mut kills) = (0, 0);
+    let (mut torn, mut kills, mut resumes) = (0, 0, 0);
     let mut finished = None;
     for attempt in 0..200 {
         let resumed = cut_dir.join("run.csv.checkpoint").exists();
+        resumes += u32::from(resumed);
         let args: &[&str] = if resumed { &resume } else { &args };
         // the first attempts short, so that some kills land before the first checkpoint
         let ms = 20 + moments.next_ms(if attempt < 2 { 60 } else { 400 });
@@ -111,6 +116,10 @@ fn killed_and_resumed(name: &str, run: &[&str], every: u64, seed: u64) -> u32 {
     // the summary (steps, evaluations, the energy drift, the records) is the whole run's
     assert_eq!(result_lines(&finished), result_lines(&stderr(&whole)), "{name}");
     assert!(kills >= 2, "{name}: killed only {kills} times: the test kills too late");
+    assert!(
+        resumes >= 2,
+        "{name}: resumed only {resumes} times: no checkpoint before the kills"
+    );
     let whole_files = files(&whole_dir);
     let cut_files = files(&cut_dir);
     let names = |f: &[(String, Vec<u8>)]| f.iter().map(|(n, _)| n.clone()).collect::<Vec<_>>();
@@ -522,4 +531,24 @@ fn a_scene_file_edited_after_the_checkpoint_is_refused() {
         std::fs::read(dir.join("run.csv")).unwrap() == csv,
         "the CSV was changed"
     );
+}
+
+/// Checkpoints every T seconds of wall time (a timer raises the pause) and every T of the
+/// scene's time (the record that passes it does) fall between any two steps: the runs
+/// killed and resumed are still the whole runs.
+#[test]
+fn wall_time_and_scene_time_intervals_resume_bitwise() {
+    let run = ["kepler", "--method", "rk4", "--t-end", "200", "--every", "10"];
+    killed_and_resumed_at("every-seconds", &run, "every=0.03s", 24);
+    killed_and_resumed_at("every-years", &run, "every=2.5y", 25);
+    let run = [
+        "kepler",
+        "--method",
+        "dormand_prince5",
+        "--rtol",
+        "1e-11",
+        "--t-end",
+        "100",
+    ];
+    killed_and_resumed_at("adaptive-every-time", &run, "every=1.5", 26);
 }
