@@ -189,16 +189,9 @@ pub struct Checkpoint {
     pub format: String,
     /// The program's version ([`VERSION`]).
     pub version: String,
-    /// The arguments of `stormer run` that began the run.
-    pub args: Vec<String>,
-    /// The scene's name and FNV-1a hash of its file's text.
-    pub scene: String,
-    /// Hash of the scene file's text.
-    pub scene_hash: String,
-    /// The method's name.
-    pub method: String,
-    /// Hash of the method as resolved (its coefficients: a method file edited changes it).
-    pub method_hash: String,
+    /// The run's command line, scene and method.
+    #[serde(flatten)]
+    pub identity: Identity,
     /// How far the run's CSV was written.
     pub csv: CsvPosition,
     /// How far the section's CSV was written, for a run with a section.
@@ -215,17 +208,17 @@ pub struct Checkpoint {
 
 /// What every checkpoint of a run shares: the command line that began it, its scene and
 /// method with their checksums.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
 pub struct Identity {
-    /// The arguments of `stormer run`.
+    /// The arguments of `stormer run` that began the run.
     pub args: Vec<String>,
     /// The scene's name.
     pub scene: String,
-    /// Hash of the scene file's text.
+    /// FNV-1a hash of the scene file's text.
     pub scene_hash: String,
     /// The method's name.
     pub method: String,
-    /// Hash of the method as resolved.
+    /// Hash of the method as resolved (its coefficients: a method file edited changes it).
     pub method_hash: String,
 }
 
@@ -243,11 +236,7 @@ impl Identity {
         Checkpoint {
             format: FORMAT.into(),
             version: VERSION.into(),
-            args: self.args.clone(),
-            scene: self.scene.clone(),
-            scene_hash: self.scene_hash.clone(),
-            method: self.method.clone(),
-            method_hash: self.method_hash.clone(),
+            identity: self.clone(),
             csv,
             section,
             track: track.into(),

@@ -5,7 +5,7 @@
 //! forger would, handed to the driver: a run that goes on or an error, never a panic nor a
 //! hang. 2000 cases each; the `#[ignore]`d long runs 10^5.
 
-use super::checkpoint::{Checkpoint, SavedTrack};
+use super::checkpoint::{Checkpoint, Identity, SavedTrack};
 use super::output::CsvPosition;
 use super::pipeline::Track;
 use super::study::part_mutations::mutate::{self, apply, edits};
@@ -61,13 +61,15 @@ fn good_checkpoint() -> (Checkpoint, String) {
     let checkpoint = Checkpoint {
         format: super::checkpoint::FORMAT.into(),
         version: super::checkpoint::VERSION.into(),
-        args: ["kepler-e06", "--rtol", "1e-8", "--checkpoint", "every=20steps"]
-            .map(String::from)
-            .to_vec(),
-        scene: "kepler-e06".into(),
-        scene_hash: "0123456789abcdef".into(),
-        method: "dormand_prince5".into(),
-        method_hash: "fedcba9876543210".into(),
+        identity: Identity {
+            args: ["kepler-e06", "--rtol", "1e-8", "--checkpoint", "every=20steps"]
+                .map(String::from)
+                .to_vec(),
+            scene: "kepler-e06".into(),
+            scene_hash: "0123456789abcdef".into(),
+            method: "dormand_prince5".into(),
+            method_hash: "fedcba9876543210".into(),
+        },
         csv: CsvPosition {
             bytes: 4096,
             rows: 11,

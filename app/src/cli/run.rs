@@ -264,7 +264,7 @@ pub fn run(args: &RunArgs) -> anyhow::Result<()> {
         .into());
     }
     let saved = Checkpoint::read(file)?;
-    let stored = parse_args(saved.args.iter().cloned())
+    let stored = parse_args(saved.identity.args.iter().cloned())
         .ok()
         .filter(|a| a.resume.is_none() && a.checkpoint.is_some())
         .ok_or_else(|| {
@@ -306,7 +306,7 @@ fn run_from(args: &RunArgs, resumed: Option<(PathBuf, Checkpoint)>) -> anyhow::R
     if let Some((file, saved)) = &resumed {
         saved.check_same(
             "scene file",
-            &saved.scene_hash,
+            &saved.identity.scene_hash,
             &scene_hash,
             &file.display().to_string(),
         )?;
@@ -440,7 +440,12 @@ impl SceneVisitor for Runner<'_> {
         let method_hash = checkpoint::hash(&format!("{method:?}"));
         let resumed = self.resumed.take();
         if let Some((file, saved)) = &resumed {
-            saved.check_same("method", &saved.method_hash, &method_hash, &file.display().to_string())?;
+            saved.check_same(
+                "method",
+                &saved.identity.method_hash,
+                &method_hash,
+                &file.display().to_string(),
+            )?;
         }
         let mut options = self.options();
         let section = args
@@ -486,7 +491,7 @@ impl SceneVisitor for Runner<'_> {
         outputs.extend(checkpoints.as_ref().map(|(_, _, file)| file.clone()));
         // what each checkpoint keeps of the command line, refused before anything is written
         let command = match &resumed {
-            Some((_, saved)) => saved.args.clone(),
+            Some((_, saved)) => saved.identity.args.clone(),
             None if checkpoints.is_some() => command_line()?,
             None => Vec::new(),
         };
