@@ -2,7 +2,9 @@
 //! at the driver's next check (within a second whatever a step costs; one after the last
 //! step still makes it a stopped run, which never exits 0); the CSV is flushed and kept, a message
 //! names the file and the last time written, and the command exits with 128 + the signal's
-//! number, the shells' convention. A second signal ends the process at once.
+//! number, the shells' convention. A run that writes checkpoints (`--checkpoint`) stops on
+//! the pause flag the signals raise with the stop flag, and writes its checkpoint before it
+//! exits. A second signal ends the process at once.
 
 use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM};
 use std::fmt;
