@@ -285,3 +285,42 @@ fn a_run_state_round_trips_exactly_through_json_and_toml() {
     // and the bits are hex digits, not numbers
     assert!(text.contains(&format!("\"{:016x}\"", state.y[0].0)), "{text}");
 }
+
+/// docs/reproducibility.md: Rust never fuses `a * b + c` into one rounding unless the code
+/// asks, and the integration code (the crate's `src/`) never asks: a fused multiply-add
+/// would give other bits on a CPU without it (REBOUND checks the same of its C code).
+#[test]
+fn the_integration_code_never_fuses_a_multiply_add() {
+    fn visit(dir: &std::path::Path, found: &mut Vec<String>) {
+        for entry in std::fs::read_dir(dir).unwrap() {
+            let path = entry.unwrap().path();
+            if path.is_dir() {
+                visit(&path, found);
+            } else if path.extension().is_some_and(|e| e == "rs") {
+                let text = std::fs::read_to_string(&path).unwrap();
+                for (i, line) in text.lines().enumerate() {
+                    let code = line.split("//").next().unwrap_or("");
+                    if code.contains("mul_add") || code.contains("fmaf") || code.contains("fma(") {
+                        found.push(format!("{}:{}: {line}", path.display(), i + 1));
+                    }
+                }
+            }
+        }
+    }
+    let mut found = Vec::new();
+    visit(
+        &std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("src"),
+        &mut found,
+    );
+    assert!(found.is_empty(), "fused multiply-adds: {found:#?}");
+    // the check sees one where there is one
+    let mut probe = Vec::new();
+    visit(
+        &std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("order/src"),
+        &mut probe,
+    );
+    assert!(
+        !probe.is_empty(),
+        "the order crate's double-double arithmetic uses mul_add"
+    );
+}
