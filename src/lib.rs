@@ -82,6 +82,8 @@ pub mod guide {
     pub mod close_approaches {}
     #[doc = include_str!("../docs/reversible-steps.md")]
     pub mod reversible_steps {}
+    #[doc = include_str!("../docs/reproducibility.md")]
+    pub mod reproducibility {}
 }
 
 /// The everyday items in one import.

@@ -180,3 +180,47 @@ fn impossible_active_counts_are_errors() {
     let err = fixed.with_active(1).unwrap_err().to_string();
     assert!(err.contains("AnyShape"), "{err}");
 }
+
+/// A checkpoint of a run on 2 threads resumed on 1 (docs/reproducibility.md): the force's
+/// fixed order of summation makes the run continued in a new process with another number
+/// of threads end bitwise where the uninterrupted run does.
+#[test]
+fn a_run_on_two_threads_resumed_on_one_ends_bitwise_equal() {
+    use stormer::driver::{RunState, Solution};
+    use stormer::Driver;
+    let (n, steps) = (1000, 8);
+    let (q, v, m) = star_and_disc(n);
+    let nb = NBody::<f64, DVector<f64>>::new(1.0, &m, 3).unwrap();
+    let mut y0 = DVector::zeros(6 * n);
+    nb.set_state(&q, &v, &mut y0).unwrap();
+    let t_end = steps as f64 * 1e-3;
+    let pool = |threads| rayon::ThreadPoolBuilder::new().num_threads(threads).build().unwrap();
+    let stepper = || SplittingStepper::<VelocityVerletKdk, DVector<f64>>::new(&y0).unwrap();
+    let driver = || Driver::fixed(1e-3).every(1000);
+    let mut whole = Solution::default();
+    pool(2).install(|| {
+        driver()
+            .run_into(&nb, &mut stepper(), 0.0, &y0, t_end, &mut whole)
+            .unwrap()
+    });
+    // paused half way on 2 threads, its state through JSON, resumed on 1
+    let mut first = Solution::default();
+    let paused = pool(2).install(|| {
+        let run = driver()
+            .pause_at(steps / 2)
+            .run_resumable(&nb, &mut stepper(), 0.0, &y0, t_end, &mut first, None);
+        run.paused.unwrap()
+    });
+    let saved: RunState = serde_json::from_str(&serde_json::to_string(&paused).unwrap()).unwrap();
+    let mut rest = Solution::default();
+    pool(1).install(|| {
+        let run = driver().run_resumable(&nb, &mut stepper(), 0.0, &y0, t_end, &mut rest, Some(&saved));
+        run.outcome.unwrap();
+    });
+    let (a, b) = (whole.y.last().unwrap(), rest.y.last().unwrap());
+    assert!(a.iter().all(|x| x.is_finite()));
+    assert!(
+        a.iter().zip(b).all(|(a, b)| a.to_bits() == b.to_bits()),
+        "the resumed run differs"
+    );
+}

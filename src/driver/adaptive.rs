@@ -44,6 +44,18 @@ impl<T: Real> Controller<T> {
         }
     }
 
+    /// Its memory of the last steps, for a [`super::RunState`]: the last accepted step's
+    /// error norm and whether the last try was rejected.
+    pub(super) fn saved(&self) -> (T, bool) {
+        (self.err_old, self.last_rejected)
+    }
+
+    /// Restores what [`Controller::saved`] gave.
+    pub(super) fn restore(&mut self, err_old: T, last_rejected: bool) {
+        self.err_old = err_old;
+        self.last_rejected = last_rejected;
+    }
+
     /// The step after an accepted step `h` (signed) of error norm `err`.
     pub(super) fn accepted(&mut self, h: T, err: T) -> T {
         let err_c = err.max(lit(1e-10));

@@ -86,6 +86,55 @@ impl<'d, 'a, T: Real, S: State<Scalar = T>> Between<'d, 'a, T, S> {
         }
     }
 
+    /// Its bookkeeping between two steps, for a [`super::RunState`].
+    pub(super) fn save(&self) -> super::resume::BetweenState {
+        use super::resume::state_bits;
+        use crate::stepper::snapshot::bits;
+        super::resume::BetweenState {
+            next: self.next,
+            g_old: self.g_old.iter().map(|&g| bits(g)).collect(),
+            f1: self.f1_at.map(|t| (bits(t), state_bits(&self.f1))),
+            d1: match (&self.second, self.d1_at) {
+                (Some([_, d1]), Some(t)) => Some((bits(t), state_bits(d1))),
+                _ => None,
+            },
+        }
+    }
+
+    /// Restores what [`Between::save`] wrote for the same output times and events.
+    pub(super) fn restore(&mut self, saved: &super::resume::BetweenState) -> Result<(), Error> {
+        use super::resume::read_state;
+        use crate::stepper::snapshot::from_bits;
+        if saved.next > self.times.len() || saved.g_old.len() != self.g_old.len() {
+            return Err(Error::invalid(
+                "run state",
+                format!(
+                    "its output times and events ({} events, next output {}) are not this run's ({} events, {} output times)",
+                    saved.g_old.len(),
+                    saved.next,
+                    self.g_old.len(),
+                    self.times.len()
+                ),
+            ));
+        }
+        self.next = saved.next;
+        for (g, &b) in self.g_old.iter_mut().zip(&saved.g_old) {
+            *g = from_bits(b);
+        }
+        self.f1_at = None;
+        if let Some((t, f1)) = &saved.f1 {
+            read_state("the saved slope", f1, &mut self.f1)?;
+            self.f1_at = Some(from_bits(*t));
+        }
+        self.d1_at = None;
+        if let (Some((t, d1)), Some([_, second])) = (&saved.d1, self.second.as_mut()) {
+            read_state("the saved second derivative", d1, second)?;
+            self.d1_at = Some(from_bits(*t));
+        }
+        self.ready = false;
+        Ok(())
+    }
+
     /// True when the run's initial record is one of the output times.
     pub(super) fn records_start(times: &[T], t0: T) -> bool {
         times.first() == Some(&t0)

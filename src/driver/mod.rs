@@ -11,6 +11,7 @@ mod density;
 mod event;
 mod events;
 mod record;
+mod resume;
 mod reversible;
 mod root;
 mod run;
@@ -20,6 +21,7 @@ pub use dense::{hermite, hermite5, hermite_order};
 pub use density::{NumericRate, StepDensity};
 pub use events::{Crossing, Event, EventHit};
 pub use record::{Interrupted, Recorder, Solution, Stats, StopEvent};
+pub use resume::{BetweenState, ControlState, RunState};
 pub use reversible::Reversible;
 pub(crate) use run::{steps_in_place, steps_unchecked};
 
@@ -64,6 +66,15 @@ enum Control<'a, T, S> {
 /// statistics up to the failure and the error.
 pub type RunOutcome<T, S> = Result<(Stats, Option<StopEvent<T, S>>), (Stats, Error)>;
 
+/// How [`Driver::run_resumable`] ended: as [`Driver::run_into`], and where the run stood
+/// when it stopped on its cancel flag or at [`Driver::pause_at`] (`None` otherwise).
+pub struct Resumable<T, S> {
+    /// The outcome, [`Error::Cancelled`] for a run stopped or paused.
+    pub outcome: RunOutcome<T, S>,
+    /// The run's state where it stopped, to continue it from.
+    pub paused: Option<RunState>,
+}
+
 /// A function `g(t, y)` whose sign changes a run watches: a stop condition (the run ends
 /// where `g` changes sign) or an event.
 pub type StopFn<'a, T, S> = Box<dyn Fn(T, &S) -> T + 'a>;
@@ -97,6 +108,8 @@ pub struct Driver<'a, T: Real, S> {
     max_steps: u64,
     stop: Option<StopFn<'a, T, S>>,
     cancel: Option<&'a AtomicBool>,
+    /// The run pauses before this step (counted from its start).
+    pause_at: u64,
     compensated: bool,
     save_at: Option<Vec<T>>,
     events: Vec<Event<'a, T, S>>,
@@ -165,6 +178,7 @@ impl<'a, T: Real, S: State<Scalar = T>> Driver<'a, T, S> {
             max_steps: 100_000_000,
             stop: None,
             cancel: None,
+            pause_at: u64::MAX,
             compensated: false,
             save_at: None,
             events: Vec::new(),
@@ -311,6 +325,15 @@ impl<'a, T: Real, S: State<Scalar = T>> Driver<'a, T, S> {
         self
     }
 
+    /// Stop the run before its step `step` (counted from its start, the steps before a
+    /// resumption included) as the cancel flag would, with its state kept
+    /// ([`Driver::run_resumable`]): a checkpoint every N steps. Read where the loops read
+    /// their step limit or end their runs of steps, so it costs nothing per step.
+    pub fn pause_at(mut self, step: u64) -> Self {
+        self.pause_at = step;
+        self
+    }
+
     /// What the run records inside its steps, when it records anything there.
     /// `order` gives the method's, which sets the order of the driver's interpolant (asked
     /// only when the run records inside its steps).
@@ -364,7 +387,65 @@ impl<'a, T: Real, S: State<Scalar = T>> Driver<'a, T, S> {
         St: Stepper<P> + ?Sized,
         R: Recorder<T, S> + ?Sized,
     {
-        let mut stats = Stats::default();
+        self.run_resumable(p, stepper, t0, y0, t_end, out, None).outcome
+    }
+
+    /// [`Driver::run_into`], continued from `from` when given (the state a run of the same
+    /// driver, problem, method, start and end handed back; no initial record then), and
+    /// handing back its own state when it stops on its cancel flag or at
+    /// [`Driver::pause_at`]. The run continued goes on bit for bit as the run that was not
+    /// stopped: the same steps, records and statistics (docs/reproducibility.md).
+    ///
+    /// ```
+    /// use stormer::driver::{Resumable, RunState, Solution};
+    /// use stormer::{Driver, Problem};
+    /// use stormer::catalog::DormandPrince5;
+    /// use stormer::stepper::{ExplicitRk, Tolerances};
+    /// struct Decay;
+    /// impl Problem for Decay {
+    ///     type Scalar = f64;
+    ///     type State = [f64; 1];
+    ///     fn rhs(&self, _t: f64, y: &[f64; 1], dy: &mut [f64; 1]) { dy[0] = -y[0]; }
+    /// }
+    /// let driver = || Driver::adaptive(Tolerances::new(1e-9, 1e-9));
+    /// let whole = driver().run(&Decay, &mut ExplicitRk::<DormandPrince5, _>::new(&[1.0]), 0.0, &[1.0], 5.0).unwrap();
+    ///
+    /// // the same run paused after 10 steps, its state saved as JSON (e.g. to a file)
+    /// let mut first = Solution::default();
+    /// let mut dp5 = ExplicitRk::<DormandPrince5, _>::new(&[1.0]);
+    /// let Resumable { paused, .. } = driver().pause_at(10).run_resumable(&Decay, &mut dp5, 0.0, &[1.0], 5.0, &mut first, None);
+    /// let text = serde_json::to_string(&paused.unwrap()).unwrap();
+    ///
+    /// // ... and continued from it by a new stepper, in another process if need be
+    /// let saved: RunState = serde_json::from_str(&text).unwrap();
+    /// let mut rest = Solution::default();
+    /// let mut dp5 = ExplicitRk::<DormandPrince5, _>::new(&[1.0]);
+    /// let done = driver().run_resumable(&Decay, &mut dp5, 0.0, &[1.0], 5.0, &mut rest, Some(&saved));
+    /// let (stats, _) = done.outcome.unwrap();
+    /// assert_eq!(stats, whole.stats);
+    /// assert_eq!([first.y, rest.y].concat(), whole.y); // bit for bit
+    /// ```
+    #[allow(clippy::too_many_arguments)]
+    pub fn run_resumable<P, St, R>(
+        &self,
+        p: &P,
+        stepper: &mut St,
+        t0: T,
+        y0: &S,
+        t_end: T,
+        out: &mut R,
+        from: Option<&RunState>,
+    ) -> Resumable<T, S>
+    where
+        P: Problem<Scalar = T, State = S>,
+        St: Stepper<P> + ?Sized,
+        R: Recorder<T, S> + ?Sized,
+    {
+        let mut stats = from.map_or_else(Stats::default, |s| s.stats);
+        let failed = |stats, e| Resumable {
+            outcome: Err((stats, e)),
+            paused: None,
+        };
         let check = |t: T, what: &str| {
             if t.is_finite() {
                 Ok(())
@@ -389,14 +470,18 @@ impl<'a, T: Real, S: State<Scalar = T>> Driver<'a, T, S> {
                     Ok(())
                 }
             })
-            .and_then(|_| match &self.save_at {
-                Some(times) if !Between::<T, S>::records_start(times, t0) => Ok(()),
+            .and_then(|_| match (&self.save_at, from) {
+                (_, Some(_)) => Ok(()),
+                (Some(times), None) if !Between::<T, S>::records_start(times, t0) => Ok(()),
                 _ => out.record(t0, y0, p.energy(t0, y0)),
             });
         if let Err(e) = setup {
-            return Err((stats, e));
+            return failed(stats, e);
         }
         stepper.reset();
+        if let Some(Err(e)) = from.map(|s| stepper.restore(&s.stepper)) {
+            return failed(stats, e);
+        }
         let base = stepper.counters();
         let mut run = run::Run {
             driver: self,
@@ -404,19 +489,29 @@ impl<'a, T: Real, S: State<Scalar = T>> Driver<'a, T, S> {
             stepper: &mut *stepper,
             out,
             stats: &mut stats,
+            from,
+            paused: None,
         };
         let result = match &self.control {
             Control::Steps(StepControl::Fixed(h)) => run.fixed(t0, y0, t_end, *h),
             Control::Steps(StepControl::Adaptive { tol, h0, h_max }) => run.adaptive(t0, y0, t_end, tol, *h0, *h_max),
             Control::Reversible(control) => run.reversible(t0, y0, t_end, control),
         };
+        let mut paused = run.paused.take();
         let c = stepper.counters();
         stats.evaluations += c.evaluations - base.evaluations;
         stats.solver_iterations += c.solver_iterations - base.solver_iterations;
         stats.jacobians += c.jacobians - base.jacobians;
-        match result {
-            Ok(stop) => Ok((stats, stop)),
-            Err(e) => Err((stats, e)),
+        if let Some(state) = paused.as_mut() {
+            // the loop stopped where it saved its state: the work is the run's
+            state.stats = stats;
+        }
+        Resumable {
+            outcome: match result {
+                Ok(stop) => Ok((stats, stop)),
+                Err(e) => Err((stats, e)),
+            },
+            paused,
         }
     }
 

@@ -22,7 +22,7 @@ pub trait Recorder<T, S> {
 }
 
 /// Counts of the work a run did.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub struct Stats {
     /// Accepted steps.
     pub steps: u64,

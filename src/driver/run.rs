@@ -4,11 +4,13 @@
 
 use super::adaptive::{initial_step, Controller};
 use super::dense::Inside;
+use super::resume::{state_bits, ControlState, RunState};
 use super::reversible::{Reversible, SLIVER};
 use super::{Between, Driver, Recorder, Stats, StopEvent, CANCEL_EVERY};
 #[allow(unused_imports)]
 use crate::real::ops::*;
 use crate::real::{lit, to_f64};
+use crate::stepper::snapshot::{bits, from_bits};
 use crate::stepper::StepRun;
 use crate::stepper::Tolerances;
 use crate::text::number;
@@ -22,6 +24,19 @@ pub(super) struct Run<'r, 'd, T: Real, S, P, St: ?Sized, R: ?Sized> {
     pub stepper: &'r mut St,
     pub out: &'r mut R,
     pub stats: &'r mut Stats,
+    /// The state the run continues from, if it is resumed.
+    pub from: Option<&'r RunState>,
+    /// The state where the run stopped on its cancel flag or paused.
+    pub paused: Option<RunState>,
+}
+
+/// Where a resumed run starts: its saved state, the state `y` read from it, and the stop
+/// condition's last value.
+type Resumed<'s, T, S> = Option<(&'s RunState, S, Option<T>)>;
+
+/// The error for a saved run state that is not of this run.
+fn not_this_run(why: String) -> Error {
+    Error::invalid("run state", format!("is not of this run: {why}"))
 }
 
 impl<T, S, P, St, R> Run<'_, '_, T, S, P, St, R>
@@ -32,6 +47,65 @@ where
     St: Stepper<P> + ?Sized,
     R: Recorder<T, S> + ?Sized,
 {
+    /// The run stops here, between two steps, at `(t, y)` before step `step`: its state is
+    /// kept for a resumption, and the error says where.
+    #[allow(clippy::too_many_arguments)]
+    fn pause(
+        &mut self,
+        step: u64,
+        t: T,
+        y: &S,
+        control: ControlState,
+        since_record: u64,
+        stop_g: Option<T>,
+        between: Option<&Between<'_, '_, T, S>>,
+    ) -> Error {
+        self.paused = Some(RunState {
+            control,
+            step,
+            t: bits(t),
+            y: state_bits(y),
+            since_record,
+            stop_g: stop_g.map(bits),
+            between: between.map(Between::save),
+            stats: *self.stats,
+            stepper: self.stepper.save(),
+        });
+        Error::Cancelled { t: to_f64(t), step }
+    }
+
+    /// Where a resumed run starts, checked against this run: the state, the stop
+    /// condition's last value and the output bookkeeping (restored into `between`);
+    /// `None` for a run from its start.
+    fn resume_from(&self, y0: &S, between: Option<&mut Between<'_, '_, T, S>>) -> Result<Resumed<'_, T, S>, Error> {
+        let Some(state) = self.from else {
+            return Ok(None);
+        };
+        let y = state.state(y0)?;
+        // nothing in a saved state is trusted (it may come from a file): a value that
+        // would make the loop run forever or step outside the run is refused
+        let t: T = state.time();
+        if !y.is_finite() || !t.is_finite() {
+            return Err(not_this_run("its time or state is not finite".into()));
+        }
+        // (with output times the count runs on unread)
+        if self.driver.save_at.is_none() && state.since_record >= self.driver.every {
+            return Err(not_this_run(format!(
+                "it is {} steps after a record, and this run records every {}",
+                state.since_record, self.driver.every
+            )));
+        }
+        if self.driver.stop.is_some() != state.stop_g.is_some() {
+            return Err(not_this_run("one has a stop condition and the other not".into()));
+        }
+        match (between, &state.between) {
+            (Some(b), Some(saved)) => b.restore(saved)?,
+            (None, None) => {}
+            _ => return Err(not_this_run("one has output times or events and the other not".into())),
+        }
+        Ok(Some((state, y, state.stop_g.map(from_bits))))
+    }
+
     #[allow(clippy::too_many_arguments)]
     pub(super) fn fixed(&mut self, t0: T, y0: &S, t_end: T, h: T) -> Result<Option<StopEvent<T, S>>, Error> {
         let driver = self.driver;
@@ -59,21 +133,31 @@ where
             });
         }
         let n = n as u64;
-        let mut y = y0.clone();
+        let mut save = driver.between(t0, y0, || self.stepper.info().order);
+        let (start, mut y, mut g_old) = match self.resume_from(y0, save.as_mut())? {
+            Some((state, y, g)) if state.control == ControlState::Fixed && state.step <= n => (state.step, y, g),
+            Some((state, ..)) => {
+                return Err(not_this_run(format!(
+                    "it is at step {} of {:?}, this run has {n} fixed steps",
+                    state.step, state.control
+                )))
+            }
+            None => (0, y0.clone(), driver.stop.as_ref().map(|g| g(t0, y0))),
+        };
         if driver.stop.is_none()
             && driver.save_at.is_none()
             && driver.events.is_empty()
             && self.stepper.steps_in_place()
         {
-            return self.fixed_in_place(t0, &mut y, t_end, h, n, exact);
+            return self.fixed_in_place(t0, start, &mut y, t_end, h, n, exact);
         }
-        let mut y_new = y0.clone();
-        let mut g_old = driver.stop.as_ref().map(|g| g(t0, y0));
-        let mut save = driver.between(t0, y0, || self.stepper.info().order);
-        for i in 0..n {
+        let mut y_new = y.clone();
+        // a pause ends the loop: nothing is read per step for it
+        let stop_at = n.min(driver.pause_at.max(start));
+        for i in start..stop_at {
             let t = t0 + lit::<T>(i as f64) * h;
             if driver.cancelled() {
-                return Err(Error::Cancelled { t: to_f64(t), step: i });
+                return Err(self.pause(i, t, &y, ControlState::Fixed, 0, g_old, save.as_ref()));
             }
             let hi = if i + 1 == n && !exact { t_end - t } else { h };
             self.stepper.step(self.p, t, hi, &y, &mut y_new)?;
@@ -95,6 +179,10 @@ where
             if driver.save_at.is_none() && ((i + 1) % driver.every == 0 || i + 1 == n) {
                 self.out.record(t_next, &y, self.p.energy(t_next, &y))?;
             }
+        }
+        if stop_at < n {
+            let t = t0 + lit::<T>(stop_at as f64) * h;
+            return Err(self.pause(stop_at, t, &y, ControlState::Fixed, 0, g_old, save.as_ref()));
         }
         Ok(None)
     }
@@ -170,6 +258,7 @@ where
     fn fixed_in_place(
         &mut self,
         t0: T,
+        start: u64,
         y: &mut S,
         t_end: T,
         h: T,
@@ -180,17 +269,15 @@ where
         // the last step is shorter when h does not divide the span: it runs on its own
         let whole = if exact { n } else { n - 1 };
         let mut checks = driver.cancel.map(|_| CancelChecks::new());
-        let mut i = 0;
+        let mut i = start;
         while i < n {
-            if driver.cancelled() {
-                return Err(Error::Cancelled {
-                    t: to_f64(t0 + lit::<T>(i as f64) * h),
-                    step: i,
-                });
+            if driver.cancelled() || i >= driver.pause_at {
+                let t = t0 + lit::<T>(i as f64) * h;
+                return Err(self.pause(i, t, y, ControlState::Fixed, 0, None, None));
             }
             let next_record = (i / driver.every + 1).saturating_mul(driver.every);
             let next_check = checks.as_mut().map_or(u64::MAX, |c| c.next_run(i));
-            let end = next_record.min(next_check).min(n);
+            let end = next_record.min(next_check).min(n).min(driver.pause_at);
             let steps = &mut self.stats.steps;
             if end > whole {
                 self.stepper
@@ -244,7 +331,36 @@ where
         let span = t_end - t0;
         let dir = if span < T::zero() { -T::one() } else { T::one() };
         let h_max = h_max.map_or(span.abs(), |h| h.abs());
-        let mut h = match h0 {
+        let mut controller = Controller::new(q, h_max);
+        let mut save = driver.between(t0, y0, || self.stepper.info().order);
+        if let Some((state, y, g_old)) = self.resume_from(y0, save.as_mut())? {
+            let ControlState::Adaptive {
+                h,
+                err_old,
+                last_rejected,
+            } = state.control
+            else {
+                return Err(not_this_run(format!(
+                    "it is of {:?}, this run has adaptive steps",
+                    state.control
+                )));
+            };
+            let (h, err_old, t): (T, T, T) = (from_bits(h), from_bits(err_old), state.time());
+            let inside = (t - t0) * dir >= T::zero() && (t_end - t) * dir >= T::zero();
+            if !(h.is_finite() && h * dir > T::zero() && h.abs() <= h_max && err_old.is_finite() && inside) {
+                return Err(not_this_run(format!(
+                    "its time {} and next step {} are not of a run from {} to {}",
+                    to_f64(t),
+                    to_f64(h),
+                    to_f64(t0),
+                    to_f64(t_end)
+                )));
+            }
+            controller.restore(err_old, last_rejected);
+            let resumed = (t, y, h, state.since_record, g_old);
+            return self.adaptive_from(resumed, t_end, tol, controller, save);
+        }
+        let h = match h0 {
             Some(h) if h.is_finite() && h != T::zero() => h.abs().min(h_max),
             Some(h) => {
                 return Err(Error::invalid(
@@ -254,29 +370,46 @@ where
             }
             None => initial_step(self.p, t0, y0, tol, self.stepper.info().order, h_max, dir, self.stats),
         } * dir;
-        let mut controller = Controller::new(q, h_max);
-        let mut t = t0;
-        let mut y = y0.clone();
-        let mut y_new = y0.clone();
-        let mut g_old = driver.stop.as_ref().map(|g| g(t0, y0));
-        let mut since_record = 0;
-        let mut save = driver.between(t0, y0, || self.stepper.info().order);
+        let g_old = driver.stop.as_ref().map(|g| g(t0, y0));
+        self.adaptive_from((t0, y0.clone(), h, 0, g_old), t_end, tol, controller, save)
+    }
+
+    /// The adaptive loop from `(t, y)` with the next step `h`, `since_record` steps after
+    /// the last record, the stop condition's last value `g_old`.
+    #[allow(clippy::type_complexity)]
+    fn adaptive_from(
+        &mut self,
+        (mut t, mut y, mut h, mut since_record, mut g_old): (T, S, T, u64, Option<T>),
+        t_end: T,
+        tol: &Tolerances<T>,
+        mut controller: Controller<T>,
+        mut save: Option<Between<'_, '_, T, S>>,
+    ) -> Result<Option<StopEvent<T, S>>, Error> {
+        let driver = self.driver;
+        let dir = if h < T::zero() { -T::one() } else { T::one() };
+        let mut y_new = y.clone();
+        // a pause is read where the step limit is: nothing more per step
+        let limit = driver.max_steps.min(driver.pause_at);
         loop {
             if (t - t_end) * dir >= T::zero() {
                 return Ok(None);
             }
-            if self.stats.steps >= driver.max_steps {
+            if self.stats.steps >= limit && self.stats.steps >= driver.max_steps {
                 return Err(Error::TooManySteps {
                     t: to_f64(t),
                     steps: self.stats.steps,
                     needed: None,
                 });
             }
-            if driver.cancelled() {
-                return Err(Error::Cancelled {
-                    t: to_f64(t),
-                    step: self.stats.steps,
-                });
+            if self.stats.steps >= limit || driver.cancelled() {
+                let (err_old, last_rejected) = controller.saved();
+                let control = ControlState::Adaptive {
+                    h: bits(h),
+                    err_old: bits(err_old),
+                    last_rejected,
+                };
+                let step = self.stats.steps;
+                return Err(self.pause(step, t, &y, control, since_record, g_old, save.as_ref()));
             }
             let last = (t + h - t_end) * dir >= T::zero();
             if last {
@@ -362,33 +495,57 @@ where
         let eps = eps * dir;
         let half: T = lit(0.5);
         let mut slope = control.density.needs_slope().then(|| y0.zeros_like());
-        if let Some(f) = slope.as_mut() {
-            self.p.rhs(t0, y0, f);
-            self.stats.evaluations += 1;
-        }
-        let (s0, mut g) = control.control(t0, y0, slope.as_ref(), 0)?;
-        let mut z = control.z0.unwrap_or(s0.recip());
-        let mut t = t0;
-        let mut y = y0.clone();
-        let mut y_new = y0.clone();
-        let mut g_stop = driver.stop.as_ref().map(|g| g(t0, y0));
-        let mut since_record = 0;
         let mut save = driver.between(t0, y0, || info.order);
+        let (mut t, mut y, mut z, mut g, mut since_record, mut g_stop) = match self.resume_from(y0, save.as_mut())? {
+            Some((state, y, g_stop)) => {
+                let ControlState::Reversible { z, g } = state.control else {
+                    return Err(not_this_run(format!(
+                        "it is of {:?}, this run has reversible steps",
+                        state.control
+                    )));
+                };
+                let (t, z, g): (T, T, T) = (state.time(), from_bits(z), from_bits(g));
+                let inside = (t - t0) * dir >= T::zero() && (t_end - t) * dir >= T::zero();
+                if !(z.is_finite() && z > T::zero() && g.is_finite() && inside) {
+                    return Err(not_this_run(format!(
+                        "its time {} and control variable z = {} are not of a run from {} to {}",
+                        to_f64(t),
+                        to_f64(z),
+                        to_f64(t0),
+                        to_f64(t_end)
+                    )));
+                }
+                (t, y, z, g, state.since_record, g_stop)
+            }
+            None => {
+                if let Some(f) = slope.as_mut() {
+                    self.p.rhs(t0, y0, f);
+                    self.stats.evaluations += 1;
+                }
+                let (s0, g) = control.control(t0, y0, slope.as_ref(), 0)?;
+                let z = control.z0.unwrap_or(s0.recip());
+                (t0, y0.clone(), z, g, 0, driver.stop.as_ref().map(|g| g(t0, y0)))
+            }
+        };
+        let mut y_new = y.clone();
+        // a pause is read where the step limit is: nothing more per step
+        let limit = driver.max_steps.min(driver.pause_at);
         loop {
             if (t - t_end) * dir >= T::zero() {
                 self.out.reversible_end(z)?;
                 return Ok(None);
             }
             let step = self.stats.steps;
-            if step >= driver.max_steps {
+            if step >= limit && step >= driver.max_steps {
                 return Err(Error::TooManySteps {
                     t: to_f64(t),
                     steps: driver.max_steps,
                     needed: None,
                 });
             }
-            if driver.cancelled() {
-                return Err(Error::Cancelled { t: to_f64(t), step });
+            if step >= limit || driver.cancelled() {
+                let control = ControlState::Reversible { z: bits(z), g: bits(g) };
+                return Err(self.pause(step, t, &y, control, since_record, g_stop, save.as_ref()));
             }
             let mut a = z + half * eps * g;
             if !(a.is_finite() && a > T::zero()) {

@@ -14,12 +14,13 @@
 //! dropped). A step's carry is only pending until the driver accepts the step, so a
 //! rejected adaptive step leaves no trace.
 
+use super::StepperState;
 use crate::flows::Splittable;
 use crate::hamiltonian::{halves, halves_mut};
 use crate::real::lit;
 #[allow(unused_imports)]
 use crate::real::ops::*;
-use crate::State;
+use crate::{Error, State};
 use stormer_order::splitting::Flow;
 
 /// Turns a stepper's compensated form on (made by `make` unless it is on already, so a
@@ -142,6 +143,54 @@ impl<S: State, F> Compensated<S, F> {
     /// The state was changed from outside: drop the carry.
     pub(crate) fn reset(&mut self) {
         self.carry.clear();
+    }
+
+    /// Adds the accepted carry and the state it belongs to (a pending one is dropped
+    /// anyway unless accepted: snapshots are taken between steps).
+    pub(crate) fn save(&self, into: &mut StepperState) {
+        into.flag("carry_valid", self.carry.valid);
+        if self.carry.valid {
+            into.state("carry", &self.carry.carry);
+            into.state("carry_anchor", &self.carry.anchor);
+        }
+    }
+
+    /// Restores what [`Compensated::save`] wrote.
+    pub(crate) fn restore(&mut self, from: &StepperState) -> Result<(), Error> {
+        self.carry.clear();
+        if from.read_flag("carry_valid")? {
+            from.read_state("carry", &mut self.carry.carry)?;
+            from.read_state("carry_anchor", &mut self.carry.anchor)?;
+            self.carry.valid = true;
+        }
+        Ok(())
+    }
+}
+
+/// Saves a stepper's compensated form: whether it is on, and its carry.
+pub(crate) fn save_form<S: State, F>(form: Option<&Compensated<S, F>>, into: &mut StepperState) {
+    into.flag("compensated", form.is_some());
+    if let Some(form) = form {
+        form.save(into);
+    }
+}
+
+/// Restores what [`save_form`] wrote into a stepper whose compensated form is on or off
+/// as the saved one's was ([`crate::Stepper::set_compensated`] first).
+pub(crate) fn restore_form<S: State, F>(
+    form: Option<&mut Compensated<S, F>>,
+    from: &StepperState,
+) -> Result<(), Error> {
+    let saved = from.read_flag("compensated")?;
+    match form {
+        Some(form) if saved => form.restore(from),
+        None if !saved => Ok(()),
+        _ => Err(super::snapshot::mismatch(format!(
+            "the snapshot's run was {}compensated and this stepper is {}: turn compensated summation {} first",
+            if saved { "" } else { "not " },
+            if saved { "not" } else { "" },
+            if saved { "on" } else { "off" }
+        ))),
     }
 }
 

@@ -1,7 +1,7 @@
 //! A composition over any symmetric second-order stepper (implicit midpoint, a
 //! Gauss-Legendre-like base, any user stepper): `S(gamma_s h) o ... o S(gamma_1 h)`.
 
-use super::{Counters, Stepper};
+use super::{Counters, Stepper, StepperState};
 use crate::method::{MethodInfo, Splitting};
 use crate::real::lit;
 use crate::{Error, Problem, State};
@@ -109,5 +109,17 @@ impl<P: Problem> Stepper<P> for Composed<P> {
 
     fn counters(&self) -> Counters {
         self.base.counters()
+    }
+
+    /// The base's state (its carry runs through the substeps).
+    fn save(&self) -> StepperState {
+        let mut state = StepperState::of(self.info.name.clone());
+        state.nest("base", self.base.save());
+        state
+    }
+
+    fn restore(&mut self, state: &StepperState) -> Result<(), Error> {
+        state.check_method(&self.info.name)?;
+        self.base.restore(&state.nested("base", self.base.info().name))
     }
 }

@@ -3,7 +3,7 @@
 //! [`ExplicitStages`] (the macro's unrolled code, or loops over a run-time tableau).
 
 use super::compensated::CompensatedCombination;
-use super::{Counters, Stepper, Tolerances};
+use super::{Counters, Stepper, StepperState, Tolerances};
 use crate::method::ExplicitMethod;
 use crate::method::MethodInfo;
 use crate::real::lit;
@@ -357,6 +357,26 @@ where
             Box::new(CompensatedCombination::new(self.stages.weights(), &self.k[0]))
         });
         Ok(())
+    }
+
+    /// The first stage's derivative when the next step reuses it (FSAL), and the carry.
+    fn save(&self) -> StepperState {
+        let mut state = StepperState::of(self.stages.info().name);
+        state.flag("k0_valid", self.k0_valid);
+        if self.k0_valid {
+            state.state("k0", &self.k[0]);
+        }
+        super::compensated::save_form(self.compensated.as_deref(), &mut state);
+        state
+    }
+
+    fn restore(&mut self, state: &StepperState) -> Result<(), Error> {
+        state.check_method(&self.stages.info().name)?;
+        self.k0_valid = state.read_flag("k0_valid")?;
+        if self.k0_valid {
+            state.read_state("k0", &mut self.k[0])?;
+        }
+        super::compensated::restore_form(self.compensated.as_deref_mut(), state)
     }
 
     fn counters(&self) -> Counters {

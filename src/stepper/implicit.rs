@@ -16,7 +16,7 @@
 mod newton;
 
 use super::compensated::CompensatedSum;
-use super::{Counters, Stepper, Tolerances};
+use super::{Counters, Stepper, StepperState, Tolerances};
 use crate::method::{MethodInfo, Tableau};
 use crate::real::magnitude;
 #[allow(unused_imports)]
@@ -768,6 +768,38 @@ impl<P: Problem> Stepper<P> for ImplicitRk<P::State> {
     fn set_compensated(&mut self, on: bool) -> Result<(), Error> {
         super::compensated::switch(&mut self.compensated, on, || CompensatedSum::new(&self.stage));
         Ok(())
+    }
+
+    /// The last accepted step's stage increments and size (the next step's starting
+    /// guess), and the carry.
+    fn save(&self) -> StepperState {
+        let mut state = StepperState::of(self.info.name.clone());
+        let g = &self.guess;
+        state.flag("guess_valid", g.valid);
+        if g.valid {
+            state.values("h_previous", &[g.h_previous]);
+            for (i, z) in g.previous.iter().enumerate() {
+                state.state(&format!("z{i}"), z);
+            }
+        }
+        super::compensated::save_form(self.compensated.as_ref(), &mut state);
+        state
+    }
+
+    fn restore(&mut self, state: &StepperState) -> Result<(), Error> {
+        state.check_method(&self.info.name)?;
+        self.last_h = None;
+        let g = &mut self.guess;
+        g.valid = state.read_flag("guess_valid")?;
+        if g.valid {
+            let mut h = [g.h_previous];
+            state.read_values("h_previous", &mut h)?;
+            g.h_previous = h[0];
+            for (i, z) in g.previous.iter_mut().enumerate() {
+                state.read_state(&format!("z{i}"), z)?;
+            }
+        }
+        super::compensated::restore_form(self.compensated.as_mut(), state)
     }
 
     fn counters(&self) -> Counters {

@@ -15,6 +15,7 @@ mod particle_chunks;
 mod relativistic_method;
 mod relativistic_push;
 mod runtime;
+pub mod snapshot;
 mod splitting;
 mod two_step;
 
@@ -29,6 +30,7 @@ pub use particle_chunks::{CHUNK, PARALLEL_FROM};
 pub use relativistic_method::{RelativisticMethod, RELATIVISTIC_METHODS};
 pub use relativistic_push::RelativisticPush;
 pub use runtime::{RuntimeRk, RuntimeStages};
+pub use snapshot::StepperState;
 pub use splitting::{
     RuntimeSplitting, RuntimeWord, SplittingStepper, SplittingWord, UnrolledWord, WordStep, WordStepper,
 };
@@ -177,6 +179,31 @@ pub trait Stepper<P: Problem> {
 
     /// Work counters.
     fn counters(&self) -> Counters;
+
+    /// The stepper's internal state between two steps (after [`Stepper::accept`]): what
+    /// its next step reads besides `y`, e.g. a FSAL method's last derivative, the
+    /// compensated summation's carry, an implicit method's starting guess. Restored by
+    /// [`Stepper::restore`] into a stepper of the same method and shape, the run goes on
+    /// bit for bit as if it had not stopped (docs/reproducibility.md). Empty by default:
+    /// a stepper that keeps something from one step to the next must say what.
+    fn save(&self) -> StepperState {
+        StepperState::default()
+    }
+
+    /// Restores what [`Stepper::save`] wrote (after [`Stepper::reset`] and
+    /// [`Stepper::set_compensated`] as the saved run had it); a snapshot of another
+    /// method or shape is refused. The default accepts only an empty snapshot.
+    fn restore(&mut self, state: &StepperState) -> Result<(), Error> {
+        if state.is_empty() {
+            Ok(())
+        } else {
+            Err(snapshot::mismatch(format!(
+                "{} keeps no state, and the snapshot (of {}) has some",
+                self.info().name,
+                state.method
+            )))
+        }
+    }
 }
 
 impl<P: Problem, St: Stepper<P> + ?Sized> Stepper<P> for Box<St> {
@@ -220,5 +247,11 @@ impl<P: Problem, St: Stepper<P> + ?Sized> Stepper<P> for Box<St> {
     }
     fn counters(&self) -> Counters {
         (**self).counters()
+    }
+    fn save(&self) -> StepperState {
+        (**self).save()
+    }
+    fn restore(&mut self, state: &StepperState) -> Result<(), Error> {
+        (**self).restore(state)
     }
 }

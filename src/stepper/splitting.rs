@@ -4,9 +4,9 @@
 //! a run-time one).
 
 use super::compensated::CompensatedWord;
-use super::{Counters, StepRun, Stepper};
+use super::{Counters, StepRun, Stepper, StepperState};
 use crate::flows::{Admits, General, ProblemClass, Splittable};
-use crate::hamiltonian::halves_mut;
+use crate::hamiltonian::{halves, halves_mut};
 use crate::method::MethodInfo;
 use crate::method::SplittingMethod;
 use crate::real::lit;
@@ -397,6 +397,28 @@ where
             CompensatedWord::new(self.word.ops(), &self.work)
         });
         Ok(())
+    }
+
+    /// The force at the current state when the next step's first kick reuses it (FSAL),
+    /// and the carry.
+    fn save(&self) -> StepperState {
+        let mut state = StepperState::of(self.word.info().name);
+        state.flag("cached", self.cached);
+        if self.cached {
+            state.values("force", halves(self.work.as_slice()).1);
+        }
+        super::compensated::save_form(self.compensated.as_ref(), &mut state);
+        state
+    }
+
+    fn restore(&mut self, state: &StepperState) -> Result<(), Error> {
+        state.check_method(&self.word.info().name)?;
+        self.fresh = false;
+        self.cached = state.read_flag("cached")?;
+        if self.cached {
+            state.read_values("force", halves_mut(self.work.as_mut_slice()).1)?;
+        }
+        super::compensated::restore_form(self.compensated.as_mut(), state)
     }
 
     fn counters(&self) -> Counters {

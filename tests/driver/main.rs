@@ -6,6 +6,7 @@
 mod dense_output;
 mod driver;
 mod events;
+mod resume;
 mod reversible;
 
 /// The helpers shared by the library's tests (tests/support/), each compiled once here.

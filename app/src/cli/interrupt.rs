@@ -2,7 +2,9 @@
 //! at the driver's next check (within a second whatever a step costs; one after the last
 //! step still makes it a stopped run, which never exits 0); the CSV is flushed and kept, a message
 //! names the file and the last time written, and the command exits with 128 + the signal's
-//! number, the shells' convention. A second signal ends the process at once.
+//! number, the shells' convention. A run that writes checkpoints (`--checkpoint`) stops on
+//! the pause flag the signals raise with the stop flag, and writes its checkpoint before it
+//! exits. A second signal ends the process at once.
 
 use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM};
 use std::fmt;
@@ -14,6 +16,9 @@ const HANDLED: [i32; 3] = [SIGINT, SIGTERM, SIGHUP];
 
 struct Handlers {
     stop: Arc<AtomicBool>,
+    /// Raised with `stop` by the signals, and by a checkpoint falling due: the flag a run
+    /// that writes checkpoints stops on (it writes one, then goes on unless `stop` is set).
+    pause: Arc<AtomicBool>,
     which: Arc<AtomicUsize>,
 }
 
@@ -23,6 +28,7 @@ fn handlers() -> &'static Handlers {
     HANDLERS.get_or_init(|| {
         let h = Handlers {
             stop: Arc::new(AtomicBool::new(false)),
+            pause: Arc::new(AtomicBool::new(false)),
             which: Arc::new(AtomicUsize::new(0)),
         };
         for signal in HANDLED {
@@ -32,6 +38,7 @@ fn handlers() -> &'static Handlers {
             // process ends; the CSV holds the whole rows flushed so far).
             let _ = signal_hook::flag::register_conditional_shutdown(signal, 128 + signal, h.stop.clone());
             let _ = signal_hook::flag::register_usize(signal, h.which.clone(), signal as usize);
+            let _ = signal_hook::flag::register(signal, h.pause.clone());
             let _ = signal_hook::flag::register(signal, h.stop.clone());
         }
         h
@@ -41,6 +48,12 @@ fn handlers() -> &'static Handlers {
 /// The flag the handled signals set, with the handlers installed on first use.
 pub fn flag() -> &'static AtomicBool {
     &handlers().stop
+}
+
+/// The flag the handled signals set with [`flag`], and that a run writing checkpoints
+/// also raises when one falls due; the run lowers it after each checkpoint.
+pub fn pause_flag() -> &'static AtomicBool {
+    &handlers().pause
 }
 
 /// The signal that raised [`flag`]: SIGINT when none was recorded (the flag was set

@@ -1,5 +1,8 @@
 //! Argument parsing and dispatch to the subcommands.
 
+mod checkpoint;
+#[cfg(test)]
+mod checkpoint_mutations;
 mod choice;
 mod finite_number;
 mod heat_map;
@@ -19,6 +22,7 @@ mod save_at;
 mod scene;
 mod scene_overrides;
 mod section;
+mod segments;
 mod study;
 mod tour;
 mod tour_page;

@@ -88,6 +88,23 @@ pub struct CsvRecorder {
     pub sample: Sample,
     line: String,
     last_flush: Instant,
+    /// Bytes handed to the buffer (the header included) and rows written.
+    written: CsvPosition,
+    /// Raises a flag at the first record at or after each multiple of a time interval
+    /// (checkpoints every T of the scene's time).
+    pub due: Option<super::checkpoint::Due>,
+}
+
+/// How far a CSV has been written: its length in bytes, its rows, and a hash of its last
+/// row (to find the same place again before a resumed run appends to it).
+#[derive(Debug, Clone, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+pub struct CsvPosition {
+    /// Bytes, the header included.
+    pub bytes: u64,
+    /// Rows after the header.
+    pub rows: u64,
+    /// FNV-1a hash of the last row, its newline included (of nothing before the first).
+    pub last_row_hash: String,
 }
 
 /// How long written records may wait in the buffer.
@@ -105,18 +122,102 @@ impl CsvRecorder {
             Box::new(File::create(path).map_err(|e| io_error(path, &e))?)
         };
         let header = csv_header(setup);
-        let mut rec = CsvRecorder {
-            out: BufWriter::new(sink),
-            path: path.to_path_buf(),
-            progress: None,
-            sample: Sample::new(header.clone()),
-            line: String::new(),
-            last_flush: Instant::now(),
+        let written = CsvPosition {
+            last_row_hash: super::checkpoint::hash(""),
+            ..CsvPosition::default()
         };
-        rec.write(&(header.join(",") + "\n"))?;
+        let mut rec = CsvRecorder::over(sink, path, Sample::new(header.clone()), written, String::new());
+        let header_line = header.join(",") + "\n";
+        rec.write(&header_line)?;
+        rec.written.bytes = header_line.len() as u64;
         // a run stopped at any moment after this leaves at least the header
         rec.flush()?;
         Ok(rec)
+    }
+
+    fn over(sink: Box<dyn Write>, path: &Path, sample: Sample, written: CsvPosition, last_row: String) -> Self {
+        CsvRecorder {
+            out: BufWriter::new(sink),
+            path: path.to_path_buf(),
+            progress: None,
+            sample,
+            line: last_row,
+            last_flush: Instant::now(),
+            written,
+            due: None,
+        }
+    }
+
+    /// How far the file has been written (flush first for the file to hold it).
+    pub fn position(&self) -> CsvPosition {
+        let last_row = if self.written.rows == 0 { "" } else { self.line.as_str() };
+        CsvPosition {
+            last_row_hash: super::checkpoint::hash(last_row),
+            ..self.written
+        }
+    }
+
+    /// Checks that the file at `path` holds, up to `at`, the header of `setup`'s CSV and
+    /// the rows a checkpoint recorded (their count, the last one), every row whole and of
+    /// numbers; returns them as a sample for the pictures. Nothing is changed.
+    pub fn check_kept<S: Scene>(path: &Path, setup: &Setup<S>, at: &CsvPosition) -> Result<Kept, Error> {
+        let changed = |why: String| Error::invalid("--resume", format!("{}: {why}", path.display()));
+        let io = |e: io::Error| io_error(path, &e);
+        let file = File::open(path).map_err(io)?;
+        let length = file.metadata().map_err(io)?.len();
+        if length < at.bytes {
+            return Err(changed(format!(
+                "it has {length} bytes, fewer than the {} the checkpoint recorded: the file was cut or replaced",
+                at.bytes
+            )));
+        }
+        // read as a stream, up to the checkpoint's length: the file may be far larger than memory
+        let mut reader = io::BufReader::new(io::Read::take(file, at.bytes));
+        let mut line = String::new();
+        let not_text = |_| changed("it is not text".into());
+        io::BufRead::read_line(&mut reader, &mut line).map_err(not_text)?;
+        let header = csv_header(setup);
+        if line.trim_end() != header.join(",") {
+            return Err(changed(format!("its header is not this run's ({})", header.join(","))));
+        }
+        let mut sample = Sample::new(header.clone());
+        let mut rows = 0u64;
+        let mut last = String::new();
+        let mut last_cells = Vec::new();
+        loop {
+            line.clear();
+            if io::BufRead::read_line(&mut reader, &mut line).map_err(not_text)? == 0 {
+                break;
+            }
+            let cells: Result<Vec<f64>, _> = line.trim_end_matches('\n').split(',').map(str::parse).collect();
+            match cells {
+                Ok(cells) if line.ends_with('\n') && cells.len() == header.len() => {
+                    sample.push(cells[0], &cells[1..], None);
+                    last_cells = cells;
+                }
+                _ => {
+                    return Err(changed(format!(
+                        "row {} is not a whole row of numbers: {line:?}",
+                        rows + 1
+                    )))
+                }
+            }
+            rows += 1;
+            std::mem::swap(&mut last, &mut line);
+        }
+        if rows != at.rows || super::checkpoint::hash(&last) != at.last_row_hash {
+            return Err(changed(format!(
+                "its first {} bytes hold {rows} rows, not the {} rows the checkpoint recorded: the file was changed",
+                at.bytes, at.rows
+            )));
+        }
+        Ok(Kept {
+            path: path.to_path_buf(),
+            sample,
+            at: at.clone(),
+            last_row: last,
+            last_cells,
+        })
     }
 
     /// Where the records go, as the messages name it.
@@ -160,9 +261,14 @@ impl<St: State<Scalar = f64>> Recorder<f64, St> for CsvRecorder {
         }
         line.push('\n');
         let written = self.write(&line);
+        self.written.bytes += line.len() as u64;
+        self.written.rows += 1;
         self.line = line;
         written?;
         self.sample.push(t, y.as_slice(), energy);
+        if let Some(due) = &mut self.due {
+            due.passed(t);
+        }
         if self.last_flush.elapsed() >= FLUSH_INTERVAL {
             self.flush()?;
         }
@@ -170,6 +276,45 @@ impl<St: State<Scalar = f64>> Recorder<f64, St> for CsvRecorder {
             progress.update(t);
         }
         Ok(())
+    }
+}
+
+/// A CSV checked by [`CsvRecorder::check_kept`], to be cut to its checkpoint's length
+/// and appended to.
+pub struct Kept {
+    path: PathBuf,
+    sample: Sample,
+    at: CsvPosition,
+    last_row: String,
+    /// The last row's numbers (none before the first row).
+    last_cells: Vec<f64>,
+}
+
+impl Kept {
+    /// The last row's time and state (`components` numbers after the time), if any.
+    pub fn last(&self, components: usize) -> Option<(f64, &[f64])> {
+        let (t, rest) = self.last_cells.split_first()?;
+        Some((*t, rest.get(..components)?))
+    }
+
+    /// Cuts the file to the checkpoint's length (a row written after it, or cut short by a
+    /// kill, is dropped) and opens it to append the rows that follow.
+    pub fn reopen(self) -> Result<CsvRecorder, Error> {
+        let path = &self.path;
+        let file = std::fs::OpenOptions::new()
+            .write(true)
+            .open(path)
+            .map_err(|e| io_error(path, &e))?;
+        file.set_len(self.at.bytes).map_err(|e| io_error(path, &e))?;
+        let mut file = file;
+        io::Seek::seek(&mut file, io::SeekFrom::End(0)).map_err(|e| io_error(path, &e))?;
+        Ok(CsvRecorder::over(
+            Box::new(file),
+            path,
+            self.sample,
+            self.at,
+            self.last_row,
+        ))
     }
 }
 

@@ -16,7 +16,7 @@ use std::borrow::Cow;
 use std::cell::Cell;
 use std::rc::Rc;
 use std::sync::atomic::AtomicBool;
-use stormer::driver::{Crossing, EventHit, Stats, StepControl, StepDensity};
+use stormer::driver::{Crossing, EventHit, RunState, Stats, StepControl, StepDensity};
 use stormer::driver::{Recorder, StopEvent};
 use stormer::stepper::{ImplicitOptions, Tolerances};
 use stormer::time_transform::{at_physical_times, stop_at_physical_time};
@@ -102,6 +102,8 @@ pub struct SceneRun<'s, S: Scene> {
     /// The scene steps in a fictitious time, its physical time a coordinate
     /// ([`Scene::time_of`]).
     transformed: bool,
+    /// The steps of a reversible run before the checkpoint it resumes from.
+    pub resumed_steps: Option<StepRange>,
 }
 
 /// How a [`SceneRun`] chooses its steps: the library's [`StepControl`], or its reversible
@@ -120,8 +122,8 @@ enum Control<S: Scene> {
 /// The smallest and largest step of a reversible run, seen from its density: the driver
 /// evaluates it once at the start and once at the end of every step, so the differences of
 /// the times it is called at are the steps.
-#[derive(Debug, Clone, Copy, Default)]
-struct StepRange {
+#[derive(Debug, Clone, Copy, Default, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct StepRange {
     /// Where the density was last evaluated.
     t: Option<f64>,
     /// The last step, not yet counted: the one shortened to land on the end time is left out.
@@ -175,6 +177,16 @@ impl<S: Scene> StepDensity<f64, S::State> for Watched<S> {
     fn needs_slope(&self) -> bool {
         self.density.needs_slope()
     }
+}
+
+/// Where [`SceneRun::run_resumable`] starts and pauses.
+pub struct Resume<'r> {
+    /// The state to continue from (`None`: the run's start).
+    pub from: Option<&'r RunState>,
+    /// The run pauses before this step (`u64::MAX`: it does not).
+    pub pause_at: u64,
+    /// What the records before `from` told.
+    pub track: Track,
 }
 
 /// The driver's own step limit, when `--max-steps` does not give one.
@@ -308,6 +320,7 @@ impl<'s, S: Scene> SceneRun<'s, S> {
             compensated: options.compensated,
             cancel: options.cancel,
             transformed,
+            resumed_steps: None,
         })
     }
 
@@ -453,27 +466,57 @@ impl<'s, S: Scene> SceneRun<'s, S> {
 
     /// Runs, handing each record to `out` as it is made.
     pub fn run_into<R: Recorder<f64, S::State> + ?Sized>(&mut self, out: &mut R) -> Outcome<S> {
-        self.run_recording(self.every, true, out)
+        self.run_recording(self.every, true, out, None).0
+    }
+
+    /// [`SceneRun::run_into`] from where `resume` says (a run from its start when it has
+    /// no state), pausing before its step `resume.pause_at`: the outcome, and where the run
+    /// stood when it paused or stopped on its cancel flag.
+    pub fn run_resumable<R: Recorder<f64, S::State> + ?Sized>(
+        &mut self,
+        out: &mut R,
+        resume: Resume<'_>,
+    ) -> (Outcome<S>, Option<RunState>) {
+        self.run_recording(self.every, true, out, Some(resume))
+    }
+
+    /// The steps of a reversible run so far (`None` for the other step controls), to
+    /// continue its summary after a resumption.
+    pub fn step_range_state(&self) -> Option<StepRange> {
+        match &self.control {
+            Control::Reversible { steps, .. } => Some(steps.get()),
+            Control::Steps(_) => None,
+        }
     }
 
     /// Runs keeping of the records only what they tell (the outcome's track).
     pub fn measure(&mut self) -> Outcome<S> {
-        self.run_recording(self.every, true, &mut Nothing)
+        self.run_recording(self.every, true, &mut Nothing, None).0
     }
 
     /// Runs with no records but the first and the last (a study's reference and timing
     /// runs): what the outcome's track tells is of those two.
     pub fn run_quietly(&mut self) -> Outcome<S> {
-        self.run_recording(u64::MAX, false, &mut Nothing)
+        self.run_recording(u64::MAX, false, &mut Nothing, None).0
     }
 
     /// Runs recording every `every` steps, or at the output times when `at_times` and the
     /// run has them.
     #[allow(clippy::float_cmp)] // an output time at the start or the end is that time exactly
-    fn run_recording<R>(&mut self, every: u64, at_times: bool, out: &mut R) -> Outcome<S>
+    fn run_recording<R>(
+        &mut self,
+        every: u64,
+        at_times: bool,
+        out: &mut R,
+        resume: Option<Resume<'_>>,
+    ) -> (Outcome<S>, Option<RunState>)
     where
         R: Recorder<f64, S::State> + ?Sized,
     {
+        let (from, pause_at, track) = match resume {
+            Some(r) => (r.from, r.pause_at, r.track),
+            None => (None, u64::MAX, Track::default()),
+        };
         let times = self.save_at.as_ref().filter(|_| at_times);
         // the output times of a time-transformed run are events after the section's
         let output_events = times
@@ -481,16 +524,24 @@ impl<'s, S: Scene> SceneRun<'s, S> {
             .map(|t| (usize::from(self.section.is_some()), t.as_slice()));
         let mut tracking = Tracking {
             setup: self.setup,
-            track: Track::default(),
+            track,
             out,
             section: self.section.as_ref(),
             output_events,
         };
         let setup = self.setup;
         if let Control::Reversible { steps, .. } = &self.control {
-            steps.take();
+            // a run continued in this process keeps the steps it counted; one resumed from
+            // a file goes on from the steps before its checkpoint
+            match (from, self.resumed_steps.take()) {
+                (None, _) => drop(steps.take()),
+                (Some(_), Some(before)) => steps.set(before),
+                (Some(_), None) => {}
+            }
         }
-        let mut driver = self.driver(if output_events.is_some() { u64::MAX } else { every });
+        let mut driver = self
+            .driver(if output_events.is_some() { u64::MAX } else { every })
+            .pause_at(pause_at);
         match times {
             Some(times) if self.transformed => driver = at_physical_times(driver, times),
             Some(times) => driver = driver.save_at(times.iter().copied()),
@@ -498,24 +549,28 @@ impl<'s, S: Scene> SceneRun<'s, S> {
         }
         let end = self.driver_end();
         // an output time at the start: no crossing there, the initial state is the record
-        if let Some(&t0) = output_events.and_then(|(_, t)| t.first()).filter(|&&t| t == self.t0()) {
+        let at_start = output_events.and_then(|(_, t)| t.first()).filter(|&&t| t == self.t0());
+        if let Some(&t0) = at_start.filter(|_| from.is_none()) {
             if let Err(e) = tracking.write(t0, &setup.y0, setup.model.energy(setup.run.t0, &setup.y0)) {
-                return Outcome {
+                let outcome = Outcome {
                     stats: Stats::default(),
                     stopped: None,
                     error: Some(e),
                     track: tracking.track,
                 };
+                return (outcome, None);
             }
         }
-        let mut result = driver.run_into(
+        let run = driver.run_resumable(
             &setup.model,
             &mut *self.stepper,
             setup.run.t0,
             &setup.y0,
             end,
             &mut tracking,
+            from,
         );
+        let (mut result, paused) = (run.outcome, run.paused);
         // an output time at the physical end: the state where the run stopped
         let at_end = output_events.and_then(|(_, t)| t.last()).filter(|&&t| t == self.t_end);
         if let (Some(&t), Ok((stats, Some(stop)))) = (at_end, &result) {
@@ -526,7 +581,7 @@ impl<'s, S: Scene> SceneRun<'s, S> {
             }
         }
         let track = tracking.track;
-        match result {
+        let outcome = match result {
             // a time-transformed run that did not reach its physical end: the step limit
             Ok((stats, None)) if self.transformed => Outcome {
                 error: Some(Error::TooManySteps {
@@ -550,7 +605,8 @@ impl<'s, S: Scene> SceneRun<'s, S> {
                 error: Some(e),
                 track,
             },
-        }
+        };
+        (outcome, paused)
     }
 
     /// The smallest and largest step of the last run under reversible adaptive steps (the

@@ -1,10 +1,12 @@
 //! `stormer run SCENE`: integrate a scene, stream the records to CSV, summarize on stderr.
 
+use super::checkpoint::{self, Checkpoint, Interval};
 use super::choice;
 use super::output::{csv_header, file_safe, is_stdout, CsvRecorder};
 use super::pipeline::{Options, SceneRun, Steps, Track};
 use super::scene_overrides::SceneOverrides;
-use super::section::{Section, WithSection};
+use super::section::Section;
+use super::segments::{self, Checkpoints};
 use anyhow::anyhow;
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -20,9 +22,23 @@ use stormer_app::scenes::{self, Scene, SceneVisitor, Setup};
 #[derive(Debug, clap::Args)]
 pub struct RunArgs {
     /// A built-in scene (see `stormer scene list`) or a path to a scene file (.toml).
-    pub scene: String,
+    #[arg(required_unless_present = "resume")]
+    pub scene: Option<String>,
     #[command(flatten)]
     pub overrides: SceneOverrides,
+    /// Write a checkpoint beside the CSV (FILE.csv.checkpoint) every N steps, every T
+    /// seconds of wall time, or at the first record after every T of the scene's time (T y:
+    /// years), and when a signal stops the run; `stormer run --resume FILE.csv.checkpoint`
+    /// then continues the run bit for bit (docs/reproducibility.md). Removed when the run
+    /// ends [default interval: every=60s].
+    #[arg(long, value_name = "every=N steps|T s|T|T y", num_args = 0..=1,
+          default_missing_value = checkpoint::DEFAULT_INTERVAL)]
+    pub checkpoint: Option<String>,
+    /// Continue the run a checkpoint holds, with the settings it began with (give no
+    /// other option), from the directory it began in: its CSV is cut to the checkpoint's
+    /// last row and appended to, and the run ends as it would have without stopping.
+    #[arg(long, value_name = "CHECKPOINT")]
+    pub resume: Option<PathBuf>,
     /// Write one record every N steps (the first and last are always written)
     /// [default: the scene's].
     #[arg(long, value_name = "N")]
@@ -165,7 +181,36 @@ fn check(args: &RunArgs) -> Result<(), Error> {
     if args.adaptive_reversible.is_some() {
         check_reversible(args)?;
     }
+    if let Some(spec) = &args.checkpoint {
+        Interval::parse(spec)?;
+        if args.out.as_deref().is_some_and(is_stdout) {
+            return Err(Error::invalid(
+                "--checkpoint",
+                "a resumed run cuts its CSV back to the checkpoint and appends to it, which standard output cannot \
+                 do: write to a file (--out FILE.csv)",
+            ));
+        }
+        if args.indicator.is_some() {
+            return Err(Error::invalid(
+                "--checkpoint",
+                "a chaos indicator (--indicator) is computed in a run of its own, which does not write checkpoints: \
+                 drop one of them",
+            ));
+        }
+    }
     Ok(())
+}
+
+/// `stormer run` parsed from its arguments (a checkpoint's command line).
+#[derive(Debug, clap::Parser)]
+struct RunCommand {
+    #[command(flatten)]
+    args: RunArgs,
+}
+
+fn parse_args<I: IntoIterator<Item = String>>(args: I) -> Result<RunArgs, clap::Error> {
+    use clap::Parser as _;
+    RunCommand::try_parse_from(std::iter::once("stormer run".to_string()).chain(args)).map(|c| c.args)
 }
 
 /// What `--adaptive-reversible` does not combine with: the other ways of choosing the steps.
@@ -204,12 +249,69 @@ fn flag_hint(e: Error) -> anyhow::Error {
     }
 }
 
-/// Runs a scene.
+/// Runs a scene, or continues the run of a checkpoint.
 pub fn run(args: &RunArgs) -> anyhow::Result<()> {
+    let Some(file) = &args.resume else {
+        return run_from(args, None);
+    };
+    let alone = parse_args(["--resume".to_string(), file.display().to_string()])?;
+    if format!("{alone:?}") != format!("{args:?}") {
+        return Err(Error::invalid(
+            "--resume",
+            "the run goes on with the settings it began with, which the checkpoint holds: give --resume CHECKPOINT \
+             alone",
+        )
+        .into());
+    }
+    let saved = Checkpoint::read(file)?;
+    let stored = parse_args(saved.identity.args.iter().cloned())
+        .ok()
+        .filter(|a| a.resume.is_none() && a.checkpoint.is_some())
+        .ok_or_else(|| {
+            Error::invalid(
+                "--resume",
+                format!(
+                    "{}: its command line is not one of `stormer run --checkpoint`",
+                    file.display()
+                ),
+            )
+        })?;
+    run_from(&stored, Some((file.clone(), saved)))
+}
+
+/// The arguments of `stormer run` as the user gave them (a checkpoint keeps them, as text).
+fn command_line() -> Result<Vec<String>, Error> {
+    let args = std::env::args_os().skip(1).skip_while(|a| a != "run").skip(1);
+    args.map(|a| {
+        a.into_string().map_err(|a| {
+            Error::invalid(
+                "--checkpoint",
+                format!(
+                    "the argument {a:?} is not UTF-8 text, which a checkpoint cannot keep: name the files in UTF-8"
+                ),
+            )
+        })
+    })
+    .collect()
+}
+
+/// Runs a scene from its start, or from the checkpoint `resumed` (its file and contents).
+fn run_from(args: &RunArgs, resumed: Option<(PathBuf, Checkpoint)>) -> anyhow::Result<()> {
     check(args)?;
     // counted and refused before the scene is read, when there are too many
     let save_at = args.save_at.as_deref().map(super::save_at::parse).transpose()?;
-    let mut scene = scenes::load(&args.scene)?;
+    let scene_arg = args.scene.as_deref().unwrap_or_default();
+    let source = scenes::source(scene_arg)?;
+    let scene_hash = checkpoint::hash(&source.text);
+    if let Some((file, saved)) = &resumed {
+        saved.check_same(
+            "scene file",
+            &saved.identity.scene_hash,
+            &scene_hash,
+            &file.display().to_string(),
+        )?;
+    }
+    let mut scene = scenes::parse(&source.text, &source.origin, &source.name)?;
     // the file's transformation is replaced by the option's, or dropped for a split or a
     // corrector asked for; the split is chosen on the physical scene
     let transform = match args.time_transform {
@@ -267,6 +369,8 @@ pub fn run(args: &RunArgs) -> anyhow::Result<()> {
         args,
         save_at,
         transform,
+        scene_hash,
+        resumed,
     })
 }
 
@@ -277,6 +381,10 @@ struct Runner<'a> {
     save_at: Option<Vec<f64>>,
     /// The time transformation the scene runs in.
     transform: Option<Transform>,
+    /// The hash of the scene file's text.
+    scene_hash: String,
+    /// The checkpoint the run continues from, and its file.
+    resumed: Option<(PathBuf, Checkpoint)>,
 }
 
 impl Runner<'_> {
@@ -312,7 +420,12 @@ impl Runner<'_> {
             max_steps: args.max_steps,
             implicit,
             compensated: args.compensated,
-            cancel: Some(super::interrupt::flag()),
+            // a run writing checkpoints stops on the flag that also says one is due
+            cancel: Some(if args.checkpoint.is_some() {
+                super::interrupt::pause_flag()
+            } else {
+                super::interrupt::flag()
+            }),
         }
     }
 }
@@ -324,6 +437,16 @@ impl SceneVisitor for Runner<'_> {
         let args = self.args;
         let method_name = args.overrides.method.as_deref().unwrap_or(&setup.run.method);
         let method = choice::resolve(method_name, args.alpha)?;
+        let method_hash = checkpoint::hash(&format!("{method:?}"));
+        let resumed = self.resumed.take();
+        if let Some((file, saved)) = &resumed {
+            saved.check_same(
+                "method",
+                &saved.identity.method_hash,
+                &method_hash,
+                &file.display().to_string(),
+            )?;
+        }
         let mut options = self.options();
         let section = args
             .section
@@ -332,10 +455,11 @@ impl SceneVisitor for Runner<'_> {
             .transpose()?;
         options.section = section.clone();
         let mut run = SceneRun::new(&setup, &method, &options)?;
+        run.resumed_steps = resumed.as_ref().and_then(|(_, saved)| saved.step_range);
         let default_path =
             PathBuf::from("out").join(format!("{}-{}.csv", file_safe(&setup.name), file_safe(method.name())));
         let path = args.out.clone().unwrap_or_else(|| default_path.clone());
-        let inputs: Vec<&Path> = [Some(args.scene.as_str()), args.overrides.method.as_deref()]
+        let inputs: Vec<&Path> = [args.scene.as_deref(), args.overrides.method.as_deref()]
             .into_iter()
             .flatten()
             .map(Path::new)
@@ -355,6 +479,22 @@ impl SceneVisitor for Runner<'_> {
         let indicator_path = args.indicator.map(|i| i.path(&stem));
         outputs.extend(indicator_path.clone());
         outputs.extend(super::pictures::run_pictures(&header, &stem));
+        let checkpoints = args
+            .checkpoint
+            .as_deref()
+            .map(|spec| -> Result<_, Error> {
+                let interval = Interval::parse(spec)?;
+                let scene_time = interval.scene_time(setup.units.time.as_deref())?;
+                Ok((interval, scene_time, checkpoint::path_beside(&path)))
+            })
+            .transpose()?;
+        outputs.extend(checkpoints.as_ref().map(|(_, _, file)| file.clone()));
+        // what each checkpoint keeps of the command line, refused before anything is written
+        let command = match &resumed {
+            Some((_, saved)) => saved.identity.args.clone(),
+            None if checkpoints.is_some() => command_line()?,
+            None => Vec::new(),
+        };
         for output in &outputs {
             super::output::refuse_overwriting(output, &inputs)?;
         }
@@ -376,20 +516,69 @@ impl SceneVisitor for Runner<'_> {
         {
             let _ = writeln!(std::io::stderr(), "{note}");
         }
-        let mut csv = CsvRecorder::create(&path, &setup)?;
-        csv.progress = Some(super::progress::Progress::new(run.t0(), run.t_end()));
-        let (outcome, mut crossings) = match &section {
-            Some(_) => {
-                let mut with = WithSection {
-                    run: &mut csv,
-                    crossings: CsvRecorder::create(&section_path, &setup)?,
-                    setup: &setup,
-                    count: 0,
+        let mut track = Track::default();
+        let (mut csv, mut crossings) = match &resumed {
+            Some((file, saved)) => {
+                // everything checked before anything is cut
+                let kept = CsvRecorder::check_kept(&path, &setup, &saved.csv)?;
+                // the last record is the CSV's last row: t, the components, the energy
+                let components = header.len() - 1 - usize::from(setup.initial_energy().is_some());
+                track = saved.track.with_last(kept.last(components));
+                let kept_section = match (&section, &saved.section) {
+                    (Some(_), Some(at)) => Some(CsvRecorder::check_kept(&section_path, &setup, at)?),
+                    (None, None) => None,
+                    _ => {
+                        return Err(Error::invalid(
+                            "--resume",
+                            format!("{}: the run's section is not the checkpoint's", file.display()),
+                        )
+                        .into())
+                    }
                 };
-                let outcome = run.run_into(&mut with);
-                (outcome, Some((with.crossings, with.count)))
+                let crossings = kept_section
+                    .map(|k| k.reopen().map(|c| (c, saved.section.as_ref().map_or(0, |at| at.rows))))
+                    .transpose()?;
+                (kept.reopen()?, crossings)
             }
-            None => (run.run_into(&mut csv), None),
+            None => {
+                let csv = CsvRecorder::create(&path, &setup)?;
+                let crossings = match &section {
+                    Some(_) => Some((CsvRecorder::create(&section_path, &setup)?, 0)),
+                    None => None,
+                };
+                (csv, crossings)
+            }
+        };
+        csv.progress = Some(super::progress::Progress::new(run.t0(), run.t_end()));
+        let from = resumed.as_ref().map(|(_, saved)| saved.run.clone());
+        let identity = checkpoint::Identity {
+            args: command,
+            scene: setup.name.clone(),
+            scene_hash: self.scene_hash.clone(),
+            method: method.name().to_string(),
+            method_hash: method_hash.clone(),
+        };
+        let checkpoints = checkpoints.map(|(interval, scene_time, file)| Checkpoints {
+            interval,
+            scene_time,
+            file,
+            identity,
+        });
+        let outcome = segments::run(
+            &mut run,
+            &setup,
+            (&mut csv, &mut crossings),
+            from,
+            track,
+            checkpoints.as_ref(),
+        );
+        let resume_hint = match &checkpoints {
+            // a run whole when the signal came has no checkpoint left
+            Some(Checkpoints { file, .. }) if file.exists() => format!(
+                "; checkpoint in {f}: continue with `stormer run --resume {f}`",
+                f = file.display()
+            ),
+            _ => String::new(),
         };
         // kept whatever happened to the run
         let section_flushed = crossings.as_mut().map_or(Ok(()), |(c, _)| c.flush());
@@ -418,7 +607,7 @@ impl SceneVisitor for Runner<'_> {
             let signal = super::interrupt::received();
             return Err(super::interrupt::StoppedByUser {
                 message: format!(
-                    "stopped by {} at t = {} after {} steps, {kept}{last}",
+                    "stopped by {} at t = {} after {} steps, {kept}{last}{resume_hint}",
                     signal.name(),
                     number(t),
                     stats.steps

@@ -247,3 +247,63 @@ fn the_extremes_keep_their_significant_digits() {
     assert!(min > 0.0 && max >= min && max < 1e-9, "{line}");
     assert!(!line.contains("0.000000"), "{line}");
 }
+
+/// An ensemble killed half way (SIGKILL), started again with the same command, runs only
+/// the members its journal does not hold, and writes the table of the ensemble never
+/// stopped, byte for byte (issue 29, docs/ensembles.md).
+#[cfg(unix)]
+#[test]
+fn an_interrupted_ensemble_resumed_runs_only_the_missing_members_and_writes_the_same_table() {
+    let whole = workdir("ensemble", "journal-whole");
+    ensemble_ok(&whole, &STUDY[1..].join(" "));
+    let dir = workdir("ensemble", "journal-resumed");
+    let journal = dir.join("out/ensemble-free-kick-alpha+spin.journal");
+    let child = std::process::Command::new(env!("CARGO_BIN_EXE_stormer"))
+        .args(STUDY)
+        .current_dir(&dir)
+        // each member waits 4 ms after its row is journaled: the kill lands half way
+        .env("STORMER_CHECKPOINT_PAUSE_MS", "4")
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let start = std::time::Instant::now();
+    let lines = || read(&journal).lines().count();
+    while !journal.exists() || lines() < 300 {
+        assert!(start.elapsed().as_secs() < 60, "no journal after a minute");
+        std::thread::sleep(std::time::Duration::from_millis(5));
+    }
+    let (status, err) = binary::signal(child, "-KILL", start, std::time::Duration::from_secs(60));
+    assert!(status.code().is_none(), "finished before the kill: {err}");
+    assert!(!dir.join(TABLE).exists());
+    let resumed = stormer_ok(&dir, &STUDY);
+    let err = stderr(&resumed);
+    let done: usize = err
+        .split("members were done")
+        .next()
+        .and_then(|s| s.rsplit(": ").next())
+        .and_then(|s| s.split(' ').next())
+        .and_then(|n| n.parse().ok())
+        .unwrap_or_else(|| panic!("{err}"));
+    assert!((299..1681).contains(&done), "{err}");
+    let ran = 1681 - done;
+    assert!(
+        err.contains(&format!(
+            "{done} of the 1681 members were done; running the other {ran}"
+        )),
+        "{err}"
+    );
+    let report = stdout(&resumed);
+    assert!(report.contains(&format!("{ran} runs in ")), "{report}");
+    assert!(
+        report.contains(&format!("(and {done} read from the journal)")),
+        "{report}"
+    );
+    assert_eq!(read(&dir.join(TABLE)), read(&whole.join(TABLE)));
+    assert_eq!(read(&dir.join(PICTURE)), read(&whole.join(PICTURE)));
+    assert!(!journal.exists(), "the journal is removed once the table is written");
+    // a journal of another ensemble is refused, and left as it is
+    std::fs::write(&journal, "{\"format\":\"stormer-ensemble/1\"}\n").unwrap();
+    let out = stormer(&dir, &STUDY);
+    binary::assert_error(&out, "line 1 is not the header of a journal of members");
+    assert_eq!(read(&journal), "{\"format\":\"stormer-ensemble/1\"}\n");
+}

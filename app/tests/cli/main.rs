@@ -1,10 +1,11 @@
 //! The `stormer` binary, run as a user runs it: commands and their output files, bad and
-//! hostile input, signals, ensembles and shards, `--save-at`, `--section`, the Kepler
-//! split and its correctors, and the tour's page.
+//! hostile input, signals, checkpoints and resumed runs, ensembles and shards, `--save-at`,
+//! `--section`, the Kepler split and its correctors, and the tour's page.
 //!
 //! One test binary (one link) with a module per concept (docs/test-layout.md).
 
 mod bad_input;
+mod checkpoint;
 mod cli;
 mod compare_time_transforms;
 mod ensemble;

@@ -9,6 +9,7 @@
 
 use super::ensemble_part::{self, EnsembleId, EnsemblePart, Member};
 use super::job::{self, SceneText};
+use super::journal;
 use super::one_run::OneRun;
 use super::scene_numbers::{self, Numbers};
 use super::transform;
@@ -301,10 +302,19 @@ pub fn ensemble(args: &EnsembleArgs) -> anyhow::Result<()> {
     };
     id.show_label = column_label(&id.show, &plan.units);
     let shard = args.shard.unwrap_or((1, 1));
-    let outputs = match shard {
-        (1, 1) => super::ensemble_report::outputs(&id, &args.out),
-        _ => vec![part_path(&id, &args.out, shard)],
+    let header = EnsemblePart {
+        format: ensemble_part::FORMAT.into(),
+        ensemble: id,
+        shard,
+        rows: Vec::new(),
     };
+    let id = &header.ensemble;
+    let journal_path = journal::path(&args.out, &header);
+    let mut outputs = match shard {
+        (1, 1) => super::ensemble_report::outputs(id, &args.out),
+        _ => vec![part_path(id, &args.out, shard)],
+    };
+    outputs.push(journal_path.clone());
     let inputs = [Some(args.scene.as_str()), args.overrides.method.as_deref()];
     let inputs: Vec<&Path> = inputs.into_iter().flatten().map(Path::new).collect();
     for output in &outputs {
@@ -320,37 +330,68 @@ pub fn ensemble(args: &EnsembleArgs) -> anyhow::Result<()> {
         indicator: args.indicator,
     };
     let mine = super::shard_jobs(size, shard);
+    // the members an interrupted run of the same command finished are not run again
+    let (journal, done) = journal::open(&journal_path, &header, &mine)?;
+    let finished: std::collections::BTreeSet<usize> = done.iter().map(|m| m.member).collect();
+    let todo: Vec<usize> = mine.iter().copied().filter(|m| !finished.contains(m)).collect();
+    if !done.is_empty() {
+        let _ = writeln!(
+            std::io::stderr(),
+            "resumed from {}: {} of the {} members were done; running the other {}",
+            journal.path().display(),
+            done.len(),
+            mine.len(),
+            todo.len()
+        );
+    }
     let work = || -> (Vec<Result<Member, Error>>, usize) {
-        let rows = mine.par_iter().map(|&m| members.run(m)).collect();
+        let run = |&m: &usize| {
+            let row = members.run(m);
+            if let Ok(member) = &row {
+                journal.add(member);
+            }
+            row
+        };
+        let rows = todo.par_iter().map(run).collect();
         (rows, rayon::current_num_threads())
     };
     let start = Instant::now();
     let (rows, threads) = match args.jobs {
         Some(asked) => rayon::ThreadPoolBuilder::new()
-            .num_threads(super::worker_threads(asked, mine.len()))
+            .num_threads(super::worker_threads(asked, todo.len()))
             .build()
             .context("cannot start the worker threads")?
             .install(work),
         None => work(),
     };
     let seconds = start.elapsed().as_secs_f64();
-    let rows: Vec<Member> = rows.into_iter().collect::<Result<_, _>>()?;
-    let part = EnsemblePart {
-        format: ensemble_part::FORMAT.into(),
-        ensemble: id,
-        shard,
-        rows,
+    let mut rows: Vec<Member> = match rows.into_iter().collect::<Result<_, _>>() {
+        Ok(rows) => rows,
+        Err(e) => {
+            journal.abandon();
+            return Err(e.into());
+        }
+    };
+    let ran = rows.len();
+    rows.extend(done);
+    rows.sort_by_key(|m| m.member);
+    let part = EnsemblePart { rows, ..header };
+    let resumed = match part.rows.len() - ran {
+        0 => String::new(),
+        n => format!(" (and {n} read from the journal)"),
     };
     let timing = format!(
-        "{} runs in {seconds:.3} s wall time on {threads} worker thread{}",
-        part.rows.len(),
+        "{ran} runs in {seconds:.3} s wall time on {threads} worker thread{}{resumed}",
         if threads == 1 { "" } else { "s" }
     );
     if shard.1 == 1 {
-        return super::ensemble_report::write(&part, &args.out, &timing);
+        super::ensemble_report::write(&part, &args.out, &timing)?;
+        journal.remove();
+        return Ok(());
     }
     let path = part_path(&part.ensemble, &args.out, shard);
     super::write_json(&path, &part)?;
+    journal.remove();
     let _ = writeln!(
         std::io::stderr(),
         "shard {}/{}: {timing}, {} of the ensemble's {size} members; wrote {} (join the parts with `stormer merge`)",

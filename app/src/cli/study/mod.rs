@@ -12,11 +12,12 @@ mod ensemble_part;
 mod ensemble_report;
 mod fit;
 mod job;
+mod journal;
 mod one_run;
 mod part;
 mod part_check;
 #[cfg(test)]
-mod part_mutations;
+pub(crate) mod part_mutations;
 mod report;
 mod scene_numbers;
 mod shards;
@@ -34,7 +35,8 @@ use args::{check_common, parse_shard, positive_list};
 pub use args::{CommonArgs, CompareArgs, MergeArgs, ScanArgs};
 pub use ensemble::{ensemble, EnsembleArgs};
 pub use job::SceneText;
-use part::{fnv1a, Control, Job, Kind, MethodEntry, Part, ReferenceInfo, Row, StudyId, FORMAT};
+pub use part::fnv1a;
+use part::{Control, Job, Kind, MethodEntry, Part, ReferenceInfo, Row, StudyId, FORMAT};
 use shards::{join, parse_part, read_text, shard_jobs, write_json, Sharded};
 
 /// `stormer compare`.
@@ -172,10 +174,21 @@ fn execute<'a>(
     let shard = common.shard.unwrap_or((1, 1));
     let cache = (study.truth == "reference").then(|| job::cache_path(&study, &common.cache));
     let inputs: Vec<&Path> = inputs.map(Path::new).collect();
-    let outputs = match shard {
+    let mut outputs = match shard {
         (1, 1) => report::outputs(&study, &common.out),
         _ => vec![part_path(&study, &common.out, shard)],
     };
+    // where its finished jobs are kept until the table is written (the path is the study's)
+    let unfinished = Part {
+        format: FORMAT.into(),
+        study,
+        shard,
+        reference: None,
+        rows: Vec::new(),
+    };
+    let path = journal::path(&common.out, &unfinished);
+    let study = unfinished.study;
+    outputs.push(path.clone());
     for output in outputs.iter().chain(&cache) {
         super::output::refuse_overwriting(output, &inputs)?;
     }
@@ -193,32 +206,56 @@ fn execute<'a>(
         runs: common.runs,
         min_time: common.min_time,
     };
-    let mine = shard_jobs(study.jobs.len(), shard);
-    let work = || -> Vec<Row> {
-        mine.par_iter()
-            .map(|&j| job::run(scene, &study, methods, j, reference.as_ref(), timing))
-            .collect()
+    let header = Part {
+        format: FORMAT.into(),
+        study,
+        shard,
+        reference: reference.as_ref().map(|r| r.info.clone()),
+        rows: Vec::new(),
     };
-    let rows = match common.jobs {
+    // the jobs an interrupted run of the same command finished are not run again
+    let mine = shard_jobs(header.study.jobs.len(), shard);
+    let (journal, done) = journal::open(&path, &header, &mine)?;
+    let finished: std::collections::BTreeSet<usize> = done.iter().map(|r| r.job).collect();
+    let todo: Vec<usize> = mine.iter().copied().filter(|j| !finished.contains(j)).collect();
+    if !done.is_empty() {
+        let _ = writeln!(
+            std::io::stderr(),
+            "resumed from {}: {} of the {} jobs were done; running the other {}",
+            path.display(),
+            done.len(),
+            mine.len(),
+            todo.len()
+        );
+    }
+    let study = &header.study;
+    let work = || -> Vec<Row> {
+        let run = |&j: &usize| {
+            let row = job::run(scene, study, methods, j, reference.as_ref(), timing);
+            journal.add(&row);
+            row
+        };
+        todo.par_iter().map(run).collect()
+    };
+    let mut rows = match common.jobs {
         Some(asked) => rayon::ThreadPoolBuilder::new()
-            .num_threads(worker_threads(asked, mine.len()))
+            .num_threads(worker_threads(asked, todo.len()))
             .build()
             .context("cannot start the worker threads")?
             .install(work),
         None => work(),
     };
-    let part = Part {
-        format: FORMAT.into(),
-        study,
-        shard,
-        reference: reference.map(|r| r.info),
-        rows,
-    };
+    rows.extend(done);
+    rows.sort_by_key(|r| r.job);
+    let part = Part { rows, ..header };
     if shard.1 == 1 {
-        return report::write(&part, &common.out);
+        report::write(&part, &common.out)?;
+        journal.remove();
+        return Ok(());
     }
     let path = part_path(&part.study, &common.out, shard);
     write_json(&path, &part)?;
+    journal.remove();
     report::print_partial(&part, &path)
 }
 

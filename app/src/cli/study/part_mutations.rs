@@ -4,7 +4,7 @@
 //! nor a hang. 2000 cases each; the `#[ignore]`d long runs 10^5.
 
 #[path = "../../../tests/support/mutate.rs"]
-mod mutate;
+pub(crate) mod mutate;
 
 use super::*;
 use mutate::{apply, edits, names_a_line_or_field, Edit};
