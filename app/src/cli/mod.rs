@@ -3,6 +3,7 @@
 mod choice;
 mod finite_number;
 mod heat_map;
+pub mod in_process;
 mod indicator;
 mod interrupt;
 mod legend;
