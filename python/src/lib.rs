@@ -18,6 +18,7 @@ fn _stormer(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(records::verify_json, m)?)?;
     m.add_function(wrap_pyfunction!(records::run, m)?)?;
     m.add_function(wrap_pyfunction!(records::scene_info, m)?)?;
+    m.add_function(wrap_pyfunction!(records::step_jacobian, m)?)?;
     m.add_function(wrap_pyfunction!(ensemble::ensemble, m)?)?;
     m.add_function(wrap_pyfunction!(callable::integrate, m)?)?;
     m.add_class::<method_data::Method>()?;

@@ -147,3 +147,22 @@ pub fn scene_info<'py>(
     }
     Ok(d)
 }
+
+/// The exact Jacobian of one step from an n-body scene's initial state (dual numbers).
+#[pyfunction]
+#[pyo3(signature = (method, dt, scene=None, scene_text=None, name="scene"))]
+pub fn step_jacobian<'py>(
+    py: Python<'py>,
+    method: &Bound<'py, PyAny>,
+    dt: f64,
+    scene: Option<String>,
+    scene_text: Option<String>,
+    name: &str,
+) -> PyResult<Bound<'py, numpy::PyArray2<f64>>> {
+    let method = match method_arg(Some(method))? {
+        (_, Some(m)) => m,
+        (name, None) => stormer::Method::resolve(&name.unwrap_or_default()).map_err(crate::errors::library_error)?,
+    };
+    let (n, j) = in_process::step_jacobian(&scene_input(scene, scene_text, name), &method, dt).map_err(value_error)?;
+    PyArray1::from_vec(py, j).reshape([n, n])
+}

@@ -34,6 +34,7 @@ __all__ = [
     "method",
     "methods",
     "run",
+    "step_jacobian",
     "verify",
 ]
 
@@ -228,6 +229,16 @@ def run(
         numbers=dict(scene_numbers) or None,
     )
     return _records(result)
+
+
+def step_jacobian(scene: str, method: Union[str, Method], dt: float) -> np.ndarray:
+    """The exact Jacobian ``d y1 / d y0`` of one step of ``method`` with step ``dt`` from an
+    n-body scene's initial state, computed by running the step on dual numbers (exact up
+    to rounding: no finite differences). The state is the positions then the momenta, so
+    a symplectic step satisfies ``J.T @ S @ J == S`` with ``S = [[0, I], [-I, 0]]`` to
+    round-off. Unsplit n-body scenes (a :class:`Simulation`: its ``step_jacobian()``).
+    """
+    return _stormer.step_jacobian(method, float(dt), scene=scene)
 
 
 def integrate(
@@ -504,7 +515,7 @@ class Simulation:
 
     def integrate(self, t: float) -> Dict[str, Any]:
         """Integrate to time ``t`` at fixed steps ``dt`` (the last one shortened to land on
-        ``t``), with ``method``, in the ``split`` and with the ``corrector`` set. The state
+        ``t``; a span shorter than ``dt`` is one step of the span), with ``method``, in the ``split`` and with the ``corrector`` set. The state
         then holds the bodies at ``t``; returns the run's summary."""
         if self.n == 0:
             raise ValueError("the simulation has no bodies: add some with sim.add(...)")
@@ -513,12 +524,20 @@ class Simulation:
             if bad.size:
                 k, c = bad[0]
                 raise ValueError(f"{what}[{k}, {c}] = {a[k, c]} (body {self._names[k]!r}) is not finite")
+        t = float(t)
+        if t == self.t:
+            return {"text": f"no step: the simulation is at t = {t} already", "method": self._method_name(),
+                    "scene": "Simulation", "steps": 0, "rejected": 0, "evaluations": 0, "energy_drift": None,
+                    "max_error": None, "stop": None, "t_end": t}
         text = self._scene(self._names, self._m, self._q, self._x, self._v)
+        # a span shorter than the step is one step of the span (REBOUND's last step too)
+        dt = min(float(self.dt), abs(t - self.t))
         result = _stormer.run(
             scene_text=text,
             name="Simulation",
             method=self.method,
-            t_end=float(t),
+            dt=dt,
+            t_end=t,
             every=2**62,
             split=self.split,
             corrector=self.corrector,
@@ -533,6 +552,15 @@ class Simulation:
         if failure is not None:
             raise RunError(failure, result)
         return result["summary"]
+
+    def step_jacobian(self, method: MethodArg = None, dt: Optional[float] = None) -> np.ndarray:
+        """The exact Jacobian of one step from the bodies' state now (unsplit; dual numbers):
+        see :func:`stormer.step_jacobian`. Defaults: the simulation's method and step."""
+        if self.model != "n-body":
+            raise ValueError("step_jacobian() is for n-body simulations")
+        text = self._scene(self._names, self._m, self._q, self._x, self._v)
+        method = self.method if method is None else method
+        return _stormer.step_jacobian(method, float(self.dt if dt is None else dt), scene_text=text, name="Simulation")
 
     def energy(self) -> float:
         """The total energy of the bodies now (n-body: kinetic minus the pairs' potential)."""

@@ -442,3 +442,49 @@ impl SceneVisitor for Initial {
         }
     }
 }
+
+/// The exact Jacobian of one step of `method` with step `h` from an n-body scene's initial
+/// state (dual numbers: `stormer::verify::jacobian_dual`), row-major, `2 n d` square: the
+/// check `J^T S J = S` of a symplectic step. Unsplit bodies only.
+pub fn step_jacobian(scene: &SceneInput, method: &Method, h: f64) -> anyhow::Result<(usize, Vec<f64>)> {
+    if !(h.is_finite() && h != 0.0) {
+        return Err(Error::invalid("dt", format!("must be a finite number other than 0, got {h}")).into());
+    }
+    let (scene, _) = scene_of(&RunRequest::new(scene.clone()))?;
+    if scene.run().split.is_some() {
+        return Err(Error::invalid(
+            "split",
+            "the step's Jacobian is taken on the unsplit bodies; give the scene without its split",
+        )
+        .into());
+    }
+    scene.visit(Jacobian { method, h })
+}
+
+/// The step's Jacobian, for the models that have bodies.
+struct Jacobian<'a> {
+    method: &'a Method,
+    h: f64,
+}
+
+impl SceneVisitor for Jacobian<'_> {
+    type Output = anyhow::Result<(usize, Vec<f64>)>;
+
+    fn visit<S: Scene>(self, setup: Setup<S>) -> Self::Output {
+        let Some(bodies) = setup.model.bodies() else {
+            return Err(Error::invalid(
+                "scene",
+                format!(
+                    "{} is a {} scene: the step's Jacobian is taken on n-body scenes",
+                    setup.name,
+                    S::MODEL
+                ),
+            )
+            .into());
+        };
+        let y0 = nalgebra::DVector::from_column_slice(setup.model.scene_state(&setup.y0).as_slice());
+        let j = scenes::bodies_step_jacobian(bodies, self.method, setup.run.t0, self.h, &y0)?;
+        // row-major, as numpy reads it
+        Ok((j.nrows(), j.transpose().as_slice().to_vec()))
+    }
+}

@@ -230,3 +230,20 @@ pub(crate) fn kepler_split(
         |twin, y| scene_measure(twin.bodies().masses(), twin.bodies().dim(), &twin.to_scene(y));
     follow(&twin, &dual_vector(y0), run, (Some(delta0), Some(measure)))
 }
+
+/// The exact Jacobian of one step of `method` from `(t, y0)` with step `h` on the bodies
+/// (unsplit), on their dual twin ([`stormer::verify::jacobian_dual`]): row `i`, column
+/// `j` is `d y1_i / d y0_j`, the state positions then momenta, so that a symplectic step
+/// has `J^T S J = S`.
+pub(crate) fn bodies_step_jacobian(
+    model: &NBody<f64, DVector<f64>>,
+    method: &stormer::Method,
+    t: f64,
+    h: f64,
+    y0: &DVector<f64>,
+) -> Result<nalgebra::DMatrix<f64>, Error> {
+    let twin = bodies_twin(model)?;
+    let y = dual_vector(y0);
+    let mut stepper = method.stepper_for(&twin, &y, &Default::default())?;
+    stormer::verify::jacobian_dual(&mut *stepper, &twin, t, h, &y)
+}
