@@ -65,7 +65,7 @@ fn a_run_gives_the_records_of_the_csv() {
 fn scene_numbers_and_an_ensemble_give_the_rows_of_the_table() {
     let dir = workdir("ensemble");
     stormer_ok(&dir, &["ensemble", "free-kick", "--vary", "alpha=10:50:5"]);
-    let (header, rows) = read_table(&dir.join("out/ensemble-free-kick-initial.alpha.csv"));
+    let (header, rows) = read_table(&dir.join("out/ensemble-free-kick-alpha.csv"));
     let table = in_process::ensemble(&EnsembleRequest {
         scene: "free-kick".into(),
         vary: vec![("alpha".into(), 10.0, 50.0, 5)],
