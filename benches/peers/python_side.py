@@ -11,7 +11,9 @@
      and with safe_mode 0 (its half drifts of consecutive steps merged) for reference.
    Interleaved rounds; each figure is the minimum over the rounds (each round best of REPS).
 2. An ensemble of 1681 free-kick runs (alpha 10..50 x spin 0..20, 41 x 41) from Python,
-   `stormer.ensemble(..., jobs=1)` against `jobs=2`: the speedup of two threads.
+   `stormer.ensemble(..., jobs=1)` against `jobs=2`: the speedup of two threads, and the cores
+   the run had (its processor time over its wall time: about 2 when both threads ran at once;
+   on a machine busy with other work, less, and the speedup with it).
 
 Run: bash benches/peers/run.sh python [--rounds N]
      (or, with stormer and REBOUND installed in one environment and the example built:
@@ -82,11 +84,17 @@ def whfast(safe_mode):
     return one
 
 
+CPU = {}
+
+
 def ensemble(jobs):
     def one():
+        cpu = time.process_time()
         start = time.perf_counter()
         table = stormer.ensemble("free-kick", {"alpha": (10, 50, 41), "spin": (0, 20, 41)}, jobs=jobs)
         seconds = time.perf_counter() - start
+        # the cores the run had: its processor time over its wall time
+        CPU[jobs] = max(CPU.get(jobs, 0.0), (time.process_time() - cpu) / seconds)
         assert table.shape == (1681,) and table["stopped"].all()
         return seconds
     return one
@@ -122,10 +130,10 @@ def main():
         f"| REBOUND WHFast, safe_mode 0 | {ms(m['whfast0'])} | {m['whfast0'] / m['rust']:.2f} "
         f"| {m['whfast0'] / m['whfast']:.2f} |",
         "",
-        "| ensemble of 1681 free-kick runs from Python | wall time (min) | speedup |",
-        "|---|---|---|",
-        f"| `stormer.ensemble(..., jobs=1)` | {ms(m['ens1'])} | 1.00 |",
-        f"| `stormer.ensemble(..., jobs=2)` | {ms(m['ens2'])} | **{m['ens1'] / m['ens2']:.2f}** |",
+        "| ensemble of 1681 free-kick runs from Python | wall time (min) | speedup | cores used (max) |",
+        "|---|---|---|---|",
+        f"| `stormer.ensemble(..., jobs=1)` | {ms(m['ens1'])} | 1.00 | {CPU[1]:.2f} |",
+        f"| `stormer.ensemble(..., jobs=2)` | {ms(m['ens2'])} | **{m['ens1'] / m['ens2']:.2f}** | {CPU[2]:.2f} |",
     ]
     out_dir = os.path.join(ROOT, "out", "peers")
     os.makedirs(out_dir, exist_ok=True)

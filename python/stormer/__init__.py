@@ -497,14 +497,17 @@ class Simulation:
         else:
             lines += [f"{k} = {_toml_value(v)}" for k, v in self.parameters.items()]
         table = "bodies" if self.model == "n-body" else "particles"
+        # plain floats (the arrays are checked finite): repr is exact and the fastest to write
+        row = lambda values: "[" + ", ".join(map(repr, values)) + "]"  # noqa: E731
+        masses, charges, xs, vs = (np.asarray(a, dtype=float).tolist() for a in (masses, charges, xs, vs))
         for k, name in enumerate(names):
-            lines += [f"[[{table}]]", f"name = {_toml_value(name)}", f"mass = {_toml_value(masses[k])}"]
+            lines += [f"[[{table}]]", f"name = {_toml_value(name)}", f"mass = {masses[k]!r}"]
             if self.model == "charged-particles":
-                lines.append(f"charge = {_toml_value(charges[k])}")
+                lines.append(f"charge = {charges[k]!r}")
             if orbit is not None and k == len(names) - 1:
                 lines.append("orbit = { " + ", ".join(f"{key} = {_toml_value(v)}" for key, v in orbit.items()) + " }")
             else:
-                lines += [f"position = {_toml_value(xs[k])}", f"velocity = {_toml_value(vs[k])}"]
+                lines += [f"position = {row(xs[k])}", f"velocity = {row(vs[k])}"]
         dt = float(self.dt)
         lines += ["[run]", f"method = {_toml_value(self._method_name())}", f"dt = {_toml_value(dt)}",
                   f"t0 = {_toml_value(float(self.t))}", f"t_end = {_toml_value(float(self.t) + dt)}"]
