@@ -71,8 +71,12 @@ def test_unknown_method_is_a_value_error_with_suggestions():
 def test_unknown_scene_and_number():
     with pytest.raises(ValueError, match="nosuchscene"):
         stormer.run("nosuchscene")
-    with pytest.raises(ValueError, match="spinn"):
+    with pytest.raises(ValueError, match="invalid scene number: unknown key 'spinn': did you mean 'parameters.spin'"):
         stormer.run("free-kick", spinn=3.0)
+    with pytest.raises(ValueError, match="give the whole key"):
+        stormer.run("outer-solar-system", mass=1.0)
+    # a whole key, dots included
+    assert stormer.run("free-kick", **{"initial.alpha": 30.0})["t"][-1] == stormer.run("free-kick", alpha=30.0)["t"][-1]
 
 
 def test_bad_values_are_value_errors():

@@ -217,10 +217,15 @@ fn scene_of(request: &RunRequest) -> anyhow::Result<(AnyScene, String)> {
     // checked whole first, so that an error in the file is not blamed on a number
     scenes::parse(&text, &origin, &name)?;
     let numbers = Numbers::of(&text)?;
+    // named as a run names them, not as `--vary`
+    let renamed = |e: Error| match e {
+        Error::InvalidArgument { reason, .. } => Error::invalid("scene number", reason),
+        other => other,
+    };
     let entries = request
         .numbers
         .iter()
-        .map(|(key, value)| Ok((numbers.find(key)?, *value)))
+        .map(|(key, value)| Ok((numbers.find(key).map_err(renamed)?, *value)))
         .collect::<Result<Vec<_>, Error>>()?;
     let text = study::substitute(&text, &entries)?;
     Ok((scenes::parse(&text, &origin, &name)?, name))

@@ -105,8 +105,12 @@ fn refusals_are_the_commands_messages() {
     request.numbers = vec![("alpha".into(), -10.0)];
     let err = in_process::run(&request, None).unwrap_err().to_string();
     assert!(err.contains("must go up"), "{err}");
-    request.numbers = vec![("nothing".into(), 1.0)];
-    assert!(in_process::run(&request, None).is_err());
+    request.numbers = vec![("spinn".into(), 1.0)];
+    let err = in_process::run(&request, None).unwrap_err().to_string();
+    assert!(
+        err.starts_with("invalid scene number: unknown key 'spinn': did you mean 'parameters.spin'?"),
+        "{err}"
+    );
     let mut request = RunRequest::new(SceneInput::Named("kepler".into()));
     request.save_at = Some(vec![0.0, f64::NAN]);
     let err = in_process::run(&request, None).unwrap_err().to_string();
