@@ -15,7 +15,7 @@
    the run had (its processor time over its wall time: about 2 when both threads ran at once;
    on a machine busy with other work, less, and the speedup with it).
 
-Run: bash benches/peers/run.sh python [--rounds N]
+Run: bash benches/peers/run.sh python [--rounds N] [--reps N] [--ensemble-rounds N]
      (or, with stormer and REBOUND installed in one environment and the example built:
       python3 benches/peers/python_side.py [--rounds N])
 Writes out/peers/python.md.
@@ -104,6 +104,8 @@ def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--rounds", type=int, default=5)
     parser.add_argument("--reps", type=int, default=10)
+    parser.add_argument("--ensemble-rounds", type=int, default=0,
+                        help="rounds of the ensemble alone after the others (a quiet moment of a shared machine)")
     args = parser.parse_args()
     runs = {"python": [], "rust": [], "whfast": [], "whfast0": [], "ens1": [], "ens2": []}
     for r in range(args.rounds):
@@ -111,13 +113,17 @@ def main():
         runs["rust"].append(ours_rust(args.reps))
         runs["whfast"].append(best(whfast(1), args.reps))
         runs["whfast0"].append(best(whfast(0), args.reps))
-        runs["ens1"].append(best(ensemble(1), 2))
-        runs["ens2"].append(best(ensemble(2), 2))
+        runs["ens1"].append(best(ensemble(1), 3))
+        runs["ens2"].append(best(ensemble(2), 3))
         print(f"round {r + 1}: " + ", ".join(f"{k} {v[-1] * 1e3:.2f} ms" for k, v in runs.items()), file=sys.stderr)
+    for r in range(args.ensemble_rounds):
+        runs["ens1"].append(best(ensemble(1), 3))
+        runs["ens2"].append(best(ensemble(2), 3))
     m = {k: min(v) for k, v in runs.items()}
     ms = lambda s: f"{s * 1e3:.2f} ms"  # noqa: E731
     lines = [
-        f"# stormer from Python ({args.rounds} rounds, each best of {args.reps}; load {load()})",
+        f"# stormer from Python ({args.rounds} rounds, each best of {args.reps}, and {args.ensemble_rounds} rounds of "
+        f"the ensemble alone; load {load()})",
         "",
         "| run (outer solar system, 10^5 days, dt = 10 d) | wall time (min) | / ours from Rust | / WHFast |",
         "|---|---|---|---|",
