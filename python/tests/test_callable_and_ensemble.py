@@ -143,3 +143,13 @@ def test_ensemble_releases_the_interpreter_lock():
         thread.join()
     during = [t for t in ticks if start < t < end]
     assert end - start > 0.01 and len(during) > 3
+
+
+def test_ctrl_c_in_a_python_rhs_stops_the_run():
+    def interrupted(t, y):
+        if t > 0.5:
+            raise KeyboardInterrupt
+        return -y
+
+    with pytest.raises(KeyboardInterrupt):
+        stormer.integrate(interrupted, [1.0], 10.0, method="rk4", dt=0.1)
