@@ -4,8 +4,6 @@
 //! `stormer::{registry, scenes, Driver, Tableau}`. Errors are one line on stderr
 //! (`error: ...`) and exit code 1; clap's usage errors keep exit code 2.
 
-mod cli;
-
 fn main() -> std::process::ExitCode {
-    cli::main()
+    stormer_app::cli::main()
 }

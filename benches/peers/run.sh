@@ -10,10 +10,14 @@
 #                                           # timed alternately (megno_map.py; --rounds)
 #   bash benches/peers/run.sh pythagorean   # REBOUND IAS15 vs stormer's TTL on Burrau's problem
 #                                           # (pythagorean.py; --method, --dt, --rounds)
+#   bash benches/peers/run.sh python        # stormer from Python vs the same run from Rust and vs
+#                                           # REBOUND WHFast from Python; an ensemble on 1 and 2
+#                                           # threads (python_side.py; --rounds, --reps)
 # Installs what it needs: a virtual environment under target/peers/venv with REBOUND
 # (PyPI package `rebound`), or the one named by $PEERS_VENV; our side is
 # `app/examples/outer_solar_front.rs` (release build).
-# Results: out/peers/rebound.md, rebound_front.json, rebound_front.svg; out/peers/nbody.md.
+# Results: out/peers/rebound.md, rebound_front.json, rebound_front.svg; out/peers/nbody.md;
+# out/peers/python.md.
 # The ode_solvers comparison (free kick) is a criterion bench: cargo bench --bench free_kick_peers
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
@@ -34,6 +38,13 @@ if [ "${1:-}" = megno ]; then
     shift
     cargo build --release -p stormer-app
     exec "$venv/bin/python" benches/peers/megno_map.py --stormer target/release/stormer "$@"
+fi
+if [ "${1:-}" = python ]; then
+    shift
+    # the package as its users install it (a release build by maturin), beside REBOUND
+    "$venv/bin/pip" install --quiet ./python
+    cargo build --release -p stormer-app --example in_process_run
+    exec "$venv/bin/python" benches/peers/python_side.py "$@"
 fi
 if [ "${1:-}" = pythagorean ]; then
     shift

@@ -98,10 +98,25 @@ impl Method {
     /// `drift`/`kick`/`word`/`gamma` keys, otherwise a Butcher tableau.
     pub fn from_file(path: &Path) -> Result<Self, Error> {
         let (text, origin) = super::file::read_file(path)?;
-        if is_splitting_text(&text) {
-            Ok(Method::RuntimeSplitting(Splitting::from_toml_str(&text, &origin)?))
+        Method::from_toml_str(&text, &origin)
+    }
+
+    /// Reads a method from TOML text as [`Method::from_file`] reads a file (`origin` names
+    /// it in messages): the same checks, the same refusals.
+    ///
+    /// ```
+    /// use stormer::Method;
+    /// let leapfrog = "name = \"mine\"\norder = 2\ndrift = [\"1/2\", \"1/2\"]\nkick = [\"1\", \"0\"]";
+    /// assert_eq!(Method::from_toml_str(leapfrog, "inline").unwrap().info().family, "splitting");
+    /// let bad = "name = \"bad\"\norder = 2\nc = [\"0\", \"1\"]\na = [[\"0\", \"0\"], [\"1\", \"0\"]]\nb = [\"0.4\", \"0.6\"]";
+    /// let err = Method::from_toml_str(bad, "inline").unwrap_err().to_string();
+    /// assert!(err.contains("order 2 condition"), "{err}");
+    /// ```
+    pub fn from_toml_str(text: &str, origin: &str) -> Result<Self, Error> {
+        if is_splitting_text(text) {
+            Ok(Method::RuntimeSplitting(Splitting::from_toml_str(text, origin)?))
         } else {
-            Ok(Method::RuntimeTableau(Tableau::from_toml_str(&text, &origin)?))
+            Ok(Method::RuntimeTableau(Tableau::from_toml_str(text, origin)?))
         }
     }
 

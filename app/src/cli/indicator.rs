@@ -5,9 +5,9 @@
 
 use std::path::{Path, PathBuf};
 
+use crate::scenes::{ChaosRun, ChaosSample, Scene, Setup, Watch};
 use stormer::text::number;
 use stormer::{Error, Method};
-use stormer_app::scenes::{ChaosRun, ChaosSample, Scene, Setup, Watch};
 
 use super::pipeline::{Options, Steps};
 

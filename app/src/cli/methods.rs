@@ -107,6 +107,12 @@ const KEPLER_NOTE: &str =
 
 /// Prints the catalog.
 pub fn run(format: TableFormat) -> anyhow::Result<()> {
+    print(&text(format)?)?;
+    Ok(())
+}
+
+/// The catalog as the table or the JSON that `run` prints.
+pub fn text(format: TableFormat) -> anyhow::Result<String> {
     let infos: Vec<MethodInfo> = BUTCHER
         .iter()
         .map(|d| d.info())
@@ -128,6 +134,5 @@ pub fn run(format: TableFormat) -> anyhow::Result<()> {
             serde_json::to_string_pretty(&list)? + "\n"
         }
     };
-    print(&text)?;
-    Ok(())
+    Ok(text)
 }

@@ -6,6 +6,7 @@ mod checkpoint_mutations;
 mod choice;
 mod finite_number;
 mod heat_map;
+pub mod in_process;
 mod indicator;
 mod interrupt;
 mod legend;

@@ -6,9 +6,9 @@ use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
 pub use super::sample::Sample;
+use crate::scenes::{Scene, Setup};
 use stormer::driver::Recorder;
 use stormer::{Error, State};
-use stormer_app::scenes::{Scene, Setup};
 
 /// True when the error is (caused by) writing to a pipe whose reader has gone.
 pub fn is_broken_pipe(e: &anyhow::Error) -> bool {

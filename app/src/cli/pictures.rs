@@ -7,8 +7,8 @@
 
 use super::plot::{draw, Chart, Scale, Series};
 use super::sample::Sample;
+use crate::scenes::Units;
 use std::path::{Path, PathBuf};
-use stormer_app::scenes::Units;
 
 /// What drawing the pictures gave: the files written, and a warning for each picture
 /// skipped.

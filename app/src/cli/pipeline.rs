@@ -12,6 +12,7 @@
 //! output is at the physical time.
 
 use super::section::Section;
+use crate::scenes::{Scene, Setup};
 use std::borrow::Cow;
 use std::cell::Cell;
 use std::rc::Rc;
@@ -21,7 +22,6 @@ use stormer::driver::{Recorder, StopEvent};
 use stormer::stepper::{ImplicitOptions, Tolerances};
 use stormer::time_transform::{at_physical_times, stop_at_physical_time};
 use stormer::{Driver, Error, Method, State, Stepper};
-use stormer_app::scenes::{Scene, Setup};
 
 /// How the steps are chosen.
 #[derive(Debug, Clone, Copy, PartialEq)]

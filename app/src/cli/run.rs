@@ -7,16 +7,17 @@ use super::pipeline::{Options, SceneRun, Steps, Track};
 use super::scene_overrides::SceneOverrides;
 use super::section::Section;
 use super::segments::{self, Checkpoints};
+use crate::scenes::{self, AnyScene, Scene, SceneVisitor, Setup};
 use anyhow::anyhow;
 use std::io::Write;
 use std::path::{Path, PathBuf};
+use std::sync::atomic::AtomicBool;
 use stormer::driver::Stats;
 use stormer::models::KeplerCoordinates;
 use stormer::stepper::{ImplicitOptions, Tolerances};
 use stormer::text::number;
 use stormer::time_transform::Transform;
 use stormer::Error;
-use stormer_app::scenes::{self, Scene, SceneVisitor, Setup};
 
 /// Arguments of `stormer run`; every value defaults to the scene file's.
 #[derive(Debug, clap::Args)]
@@ -156,7 +157,7 @@ pub enum SolverArg {
 }
 
 /// The arguments' own domains, checked before anything runs.
-fn check(args: &RunArgs) -> Result<(), Error> {
+pub(super) fn check(args: &RunArgs) -> Result<(), Error> {
     let non_negative = |what: &str, x: Option<f64>| match x {
         Some(v) if !(v.is_finite() && v >= 0.0) => {
             Err(Error::invalid(what, format!("must be a finite number >= 0, got {v}")))
@@ -242,7 +243,7 @@ fn check_reversible(args: &RunArgs) -> Result<(), Error> {
 const MAX_STEPS_HINT: &str = " (the limit is --max-steps N)";
 
 /// The library's error, with the flag that changes what it names where there is one.
-fn flag_hint(e: Error) -> anyhow::Error {
+pub(super) fn flag_hint(e: Error) -> anyhow::Error {
     match e {
         Error::TooManySteps { .. } => anyhow!("{e}{MAX_STEPS_HINT}"),
         e => e.into(),
@@ -311,7 +312,26 @@ fn run_from(args: &RunArgs, resumed: Option<(PathBuf, Checkpoint)>) -> anyhow::R
             &file.display().to_string(),
         )?;
     }
-    let mut scene = scenes::parse(&source.text, &source.origin, &source.name)?;
+    let scene = scenes::parse(&source.text, &source.origin, &source.name)?;
+    let (scene, transform) = prepare(args, scene, None)?;
+    scene.visit(Runner {
+        args,
+        save_at,
+        transform,
+        scene_hash,
+        resumed,
+    })
+}
+
+/// The scene as `args` run it: in the split, with the corrector and in the time
+/// transformation they ask for (or the file's), and that transformation. `args` are
+/// checked ([`check`]) before. `given` is the method when it is not named by `args` (a
+/// method built in Python).
+pub(super) fn prepare(
+    args: &RunArgs,
+    mut scene: AnyScene,
+    given: Option<&stormer::Method>,
+) -> anyhow::Result<(AnyScene, Option<Transform>)> {
     // the file's transformation is replaced by the option's, or dropped for a split or a
     // corrector asked for; the split is chosen on the physical scene
     let transform = match args.time_transform {
@@ -353,10 +373,13 @@ fn run_from(args: &RunArgs, resumed: Option<(PathBuf, Checkpoint)>) -> anyhow::R
             )
             .into());
         }
-        let method = choice::resolve(
-            args.overrides.method.as_deref().unwrap_or(&scene.run().method),
-            args.alpha,
-        )?;
+        let method = match given {
+            Some(method) => method.clone(),
+            None => choice::resolve(
+                args.overrides.method.as_deref().unwrap_or(&scene.run().method),
+                args.alpha,
+            )?,
+        };
         let dt = args.overrides.dt.unwrap_or(scene.run().dt);
         scene = scene.with_corrector(order, &method, dt)?;
     }
@@ -365,13 +388,7 @@ fn run_from(args: &RunArgs, resumed: Option<(PathBuf, Checkpoint)>) -> anyhow::R
         Some(_) => scene,
         None => scene.without_time_transform(),
     };
-    scene.visit(Runner {
-        args,
-        save_at,
-        transform,
-        scene_hash,
-        resumed,
-    })
+    Ok((scene, transform))
 }
 
 /// The run, generic over the scene's model.
@@ -388,45 +405,50 @@ struct Runner<'a> {
 }
 
 impl Runner<'_> {
-    /// The pipeline's options from the arguments.
+    /// The pipeline's options from the arguments, the run stopped by Ctrl-C (a run writing
+    /// checkpoints on the flag that also says one is due).
     fn options(&mut self) -> Options {
-        let args = self.args;
-        let save_at = self.save_at.take();
-        let mut implicit = match args.solver {
-            Some(SolverArg::Newton) => ImplicitOptions::newton(),
-            Some(SolverArg::FixedPoint) | None => ImplicitOptions::fixed_point(),
-        };
-        if let Some(n) = args.max_iterations {
-            implicit.max_iterations = n;
-        }
-        let steps = if let Some(eps) = args.adaptive_reversible {
-            Steps::Reversible { eps }
-        } else if args.rtol.is_some() || args.atol.is_some() {
-            let rtol = args.rtol.or(args.atol).unwrap_or_default();
-            let atol = args.atol.or(args.rtol).unwrap_or_default();
-            Steps::Adaptive {
-                tol: Tolerances::new(rtol, atol),
-                h0: args.overrides.dt,
-            }
+        let cancel = if self.args.checkpoint.is_some() {
+            super::interrupt::pause_flag()
         } else {
-            Steps::Fixed(args.overrides.dt)
+            super::interrupt::flag()
         };
-        Options {
-            steps,
-            t_end: args.overrides.t_end,
-            every: args.every,
-            save_at,
-            section: None,
-            max_steps: args.max_steps,
-            implicit,
-            compensated: args.compensated,
-            // a run writing checkpoints stops on the flag that also says one is due
-            cancel: Some(if args.checkpoint.is_some() {
-                super::interrupt::pause_flag()
-            } else {
-                super::interrupt::flag()
-            }),
+        options(self.args, self.save_at.take(), Some(cancel))
+    }
+}
+
+/// The pipeline's options from the arguments: the output times `save_at` (parsed) and the
+/// flag that cancels the run.
+pub(super) fn options(args: &RunArgs, save_at: Option<Vec<f64>>, cancel: Option<&'static AtomicBool>) -> Options {
+    let mut implicit = match args.solver {
+        Some(SolverArg::Newton) => ImplicitOptions::newton(),
+        Some(SolverArg::FixedPoint) | None => ImplicitOptions::fixed_point(),
+    };
+    if let Some(n) = args.max_iterations {
+        implicit.max_iterations = n;
+    }
+    let steps = if let Some(eps) = args.adaptive_reversible {
+        Steps::Reversible { eps }
+    } else if args.rtol.is_some() || args.atol.is_some() {
+        let rtol = args.rtol.or(args.atol).unwrap_or_default();
+        let atol = args.atol.or(args.rtol).unwrap_or_default();
+        Steps::Adaptive {
+            tol: Tolerances::new(rtol, atol),
+            h0: args.overrides.dt,
         }
+    } else {
+        Steps::Fixed(args.overrides.dt)
+    };
+    Options {
+        steps,
+        t_end: args.overrides.t_end,
+        every: args.every,
+        save_at,
+        section: None,
+        max_steps: args.max_steps,
+        implicit,
+        compensated: args.compensated,
+        cancel,
     }
 }
 
@@ -635,30 +657,7 @@ impl SceneVisitor for Runner<'_> {
         flushed?;
         section_flushed?;
         let summary = summary(
-            &match (setup.run.split, args.corrector) {
-                _ if self.transform.is_some() => format!(
-                    "{} on {} (time transform {}; steps of dt = {} in the fictitious time s, outputs in time t)",
-                    method.name(),
-                    setup.name,
-                    self.transform.map_or("", Transform::name),
-                    number(args.overrides.dt.unwrap_or(setup.run.dt))
-                ),
-                (Some(split), Some(k)) => format!(
-                    "{} on {} ({split}, corrector {k})",
-                    method.name(),
-                    setup.name,
-                    split = split.name()
-                ),
-                (Some(split), None) => format!("{} on {} ({split})", method.name(), setup.name, split = split.name()),
-                _ if run.density_formula().is_some() => format!(
-                    "{} on {} (reversible adaptive steps h = eps s, eps = {}, s = {})",
-                    method.name(),
-                    setup.name,
-                    number(args.adaptive_reversible.unwrap_or(f64::NAN)),
-                    run.density_formula().unwrap_or_default()
-                ),
-                _ => format!("{} on {}", method.name(), setup.name),
-            },
+            &headline(&method, &setup, args, self.transform, &run),
             stats,
             matches!(options.steps, Steps::Adaptive { .. }),
             run.step_range(outcome.stopped.is_none()),
@@ -717,8 +716,44 @@ impl SceneVisitor for Runner<'_> {
     }
 }
 
+/// What the summary starts with: the method, the scene, and how it ran (split, corrector,
+/// time transformation, reversible steps).
+pub(super) fn headline<S: Scene>(
+    method: &stormer::Method,
+    setup: &Setup<S>,
+    args: &RunArgs,
+    transform: Option<Transform>,
+    run: &SceneRun<'_, S>,
+) -> String {
+    match (setup.run.split, args.corrector) {
+        _ if transform.is_some() => format!(
+            "{} on {} (time transform {}; steps of dt = {} in the fictitious time s, outputs in time t)",
+            method.name(),
+            setup.name,
+            transform.map_or("", Transform::name),
+            number(args.overrides.dt.unwrap_or(setup.run.dt))
+        ),
+        (Some(split), Some(k)) => format!(
+            "{} on {} ({split}, corrector {k})",
+            method.name(),
+            setup.name,
+            split = split.name()
+        ),
+        (Some(split), None) => format!("{} on {} ({split})", method.name(), setup.name, split = split.name()),
+        _ if run.density_formula().is_some() => format!(
+            "{} on {} (reversible adaptive steps h = eps s, eps = {}, s = {})",
+            method.name(),
+            setup.name,
+            number(args.adaptive_reversible.unwrap_or(f64::NAN)),
+            run.density_formula().unwrap_or_default()
+        ),
+        _ => format!("{} on {}", method.name(), setup.name),
+    }
+}
+
 /// The one-line summary of a finished run.
-fn summary(
+/// The one-line summary of a finished run.
+pub(super) fn summary(
     what: &str,
     stats: &Stats,
     adaptive: bool,

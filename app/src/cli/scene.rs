@@ -1,8 +1,8 @@
 //! `stormer scene list | show NAME`: the built-in scene files.
 
 use super::output::print;
+use crate::scenes::{self, builtin, BUILTIN};
 use stormer::Error;
-use stormer_app::scenes::{self, builtin, BUILTIN};
 
 /// Lists the built-in scenes: name, model, description.
 pub fn list() -> anyhow::Result<()> {

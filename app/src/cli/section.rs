@@ -6,11 +6,11 @@ use super::finite_number::finite_number;
 use super::output::CsvRecorder;
 use super::pictures::Pictures;
 use super::plot::{Chart, Series};
+use crate::scenes::{Scene, Setup};
 use std::path::PathBuf;
 use stormer::driver::EventHit;
 use stormer::driver::Recorder;
 use stormer::Error;
-use stormer_app::scenes::{Scene, Setup};
 
 /// A parsed `--section`: the state component `column` crosses `value`, where `side` holds.
 #[derive(Debug, Clone, PartialEq)]

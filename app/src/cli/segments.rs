@@ -9,10 +9,10 @@ use super::checkpoint::{Due, Identity, Interval};
 use super::output::CsvRecorder;
 use super::pipeline::{Outcome, Resume, SceneRun, Track};
 use super::section::WithSection;
+use crate::scenes::{Scene, Setup};
 use std::path::PathBuf;
 use std::sync::atomic::Ordering;
 use stormer::driver::RunState;
-use stormer_app::scenes::{Scene, Setup};
 
 /// A run's checkpoints: how often, where, and what each of them holds besides the state.
 pub struct Checkpoints {

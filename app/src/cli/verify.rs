@@ -319,23 +319,64 @@ fn tableau_report(tableau: Tableau, source: String, scheme: &Method, format: Tex
 
 /// Verifies a catalog method or a method file and prints the report.
 pub fn run(method: &str, format: TextFormat) -> anyhow::Result<()> {
+    let verified = report(method, format)?;
+    print(&verified.text)?;
+    verified.verdict()
+}
+
+/// What `verify` found: the report, and what its measurements contradict among the
+/// method's declarations.
+pub struct Verified {
+    /// The report as text or JSON.
+    pub text: String,
+    /// The contradictions (none for a sound method).
+    pub contradictions: Vec<String>,
+    /// The method as the verdict names it.
+    name: String,
+}
+
+impl Verified {
+    /// `Err` naming the contradictions, when there are any.
+    pub fn verdict(&self) -> anyhow::Result<()> {
+        if self.contradictions.is_empty() {
+            return Ok(());
+        }
+        Err(anyhow::anyhow!(
+            "{}: the checks disagree with the method's data: {}",
+            self.name,
+            self.contradictions.join("; ")
+        ))
+    }
+}
+
+/// The report on a catalog method or a method file (`method` as `--method` names it).
+pub fn report(method: &str, format: TextFormat) -> anyhow::Result<Verified> {
     let choice = super::choice::resolve(method, None)?;
     // what was read from a file (a path, or a bare name the catalog does not know)
     let from_file = matches!(choice, Method::RuntimeTableau(_) | Method::RuntimeSplitting(_))
         && stormer::catalog::normalize(method) != "theta";
     let source = if from_file {
         method.to_string()
+    } else if stormer::catalog::normalize(method) == "theta" {
+        "the theta method (alpha = 1/2)".to_string()
     } else {
         "catalog".to_string()
     };
-    let (text, contradictions) = match &choice {
-        Method::Splitting(d) => splitting_report(Splitting::from_data(d)?, source, &choice, format)?,
-        Method::RuntimeSplitting(s) => splitting_report(s.clone(), source, &choice, format)?,
-        Method::Tableau(d) => tableau_report(Tableau::from_data(d)?, source, &choice, format)?,
-        Method::RuntimeTableau(t) if stormer::catalog::normalize(method) == "theta" => {
-            tableau_report(t.clone(), "the theta method (alpha = 1/2)".into(), &choice, format)?
-        }
-        Method::RuntimeTableau(t) => tableau_report(t.clone(), source, &choice, format)?,
+    let mut verified = report_on(&choice, source, format)?;
+    if from_file {
+        verified.name = format!("{} ({method})", choice.name());
+    }
+    Ok(verified)
+}
+
+/// The report on a method already built, read from `source` (a file, "catalog", or where
+/// a method built in Python came from).
+pub fn report_on(choice: &Method, source: String, format: TextFormat) -> anyhow::Result<Verified> {
+    let (text, contradictions) = match choice {
+        Method::Splitting(d) => splitting_report(Splitting::from_data(d)?, source, choice, format)?,
+        Method::RuntimeSplitting(s) => splitting_report(s.clone(), source, choice, format)?,
+        Method::Tableau(d) => tableau_report(Tableau::from_data(d)?, source, choice, format)?,
+        Method::RuntimeTableau(t) => tableau_report(t.clone(), source, choice, format)?,
         Method::Particle(_) | Method::Relativistic(_) => {
             return Err(Error::Unsupported {
                 name: choice.name().into(),
@@ -347,17 +388,9 @@ pub fn run(method: &str, format: TextFormat) -> anyhow::Result<()> {
             .into())
         }
     };
-    print(&text)?;
-    if contradictions.is_empty() {
-        return Ok(());
-    }
-    let name = if from_file {
-        format!("{} ({method})", choice.name())
-    } else {
-        choice.name().to_string()
-    };
-    Err(anyhow::anyhow!(
-        "{name}: the checks disagree with the method's data: {}",
-        contradictions.join("; ")
-    ))
+    Ok(Verified {
+        text,
+        contradictions,
+        name: choice.name().to_string(),
+    })
 }

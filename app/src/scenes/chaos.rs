@@ -349,3 +349,20 @@ pub(crate) fn kepler_split(
         compiled_in_release(),
     )
 }
+
+/// The exact Jacobian of one step of `method` from `(t, y0)` with step `h` on the bodies
+/// (unsplit), on their dual twin ([`stormer::verify::jacobian_dual`]): row `i`, column
+/// `j` is `d y1_i / d y0_j`, the state positions then momenta, so that a symplectic step
+/// has `J^T S J = S`.
+pub(crate) fn bodies_step_jacobian(
+    model: &NBody<f64, DVector<f64>>,
+    method: &stormer::Method,
+    t: f64,
+    h: f64,
+    y0: &DVector<f64>,
+) -> Result<nalgebra::DMatrix<f64>, Error> {
+    let twin = bodies_twin(model)?;
+    let y = dual_vector(y0);
+    let mut stepper = method.stepper_for(&twin, &y, &Default::default())?;
+    stormer::verify::jacobian_dual(&mut *stepper, &twin, t, h, &y)
+}

@@ -67,6 +67,7 @@ mod time_transformed;
 pub use arenstorf::{RestrictedThreeBody, ThreeBodyInitial, ThreeBodyParameters};
 pub use builtin::{builtin, load, parse, source, BuiltinScene, SceneSource, BUILTIN};
 pub use central_force_file::{CentralForceInitial, CentralForceParameters};
+pub(crate) use chaos::bodies_step_jacobian;
 pub use chaos::{ChaosRun, ChaosSample, Watch, Watched};
 pub use charged_file::{BottleTable, ChargedParameters, ChargedScene, DipoleTable, ParticleEntry};
 pub use damped::{DampedOscillator, DampedParameters};

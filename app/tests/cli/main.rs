@@ -10,6 +10,7 @@ mod cli;
 mod compare_time_transforms;
 mod ensemble;
 mod hostile;
+mod in_process;
 mod indicator;
 mod kepler_correctors;
 mod kepler_split;

@@ -18,6 +18,7 @@ use crate::cli::indicator::IndicatorArg;
 use crate::cli::output::one_line;
 use crate::cli::pipeline::{Options, Outcome, SceneRun, Steps};
 use crate::cli::scene_overrides::SceneOverrides;
+use crate::scenes::{self, ChaosSample, Scene, SceneVisitor, Setup, Units, Watched};
 use anyhow::{anyhow, bail, Context};
 use rayon::prelude::*;
 use serde::Deserialize;
@@ -25,7 +26,6 @@ use std::io::Write as _;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 use stormer::{Error, Method, State};
-use stormer_app::scenes::{self, ChaosSample, Scene, SceneVisitor, Setup, Units, Watched};
 
 /// Arguments of `stormer ensemble`.
 #[derive(Debug, clap::Args)]
@@ -230,81 +230,166 @@ fn column_label(column: &str, units: &Units) -> String {
     }
 }
 
+/// An ensemble ready to run: its scene, the numbers varied, the method, the table's
+/// identity (its columns).
+pub struct Plan {
+    scene: SceneText,
+    varied: Vec<scene_numbers::Entry>,
+    method: Method,
+    /// Members in the grid.
+    pub size: usize,
+    /// The table's identity: scene, method, axes, columns.
+    pub id: EnsembleId,
+}
+
+/// The members' rows, and the worker threads and wall time they took.
+pub struct Rows {
+    /// One row per member, in the order asked.
+    pub rows: Vec<Member>,
+    /// Worker threads.
+    pub threads: usize,
+    /// Wall time of the runs, s.
+    pub seconds: f64,
+}
+
+impl Plan {
+    /// Reads the scene, finds the varied numbers and resolves the method, with the errors
+    /// of `stormer ensemble`; nothing runs.
+    pub fn new(args: &EnsembleArgs) -> anyhow::Result<Self> {
+        args.overrides.check()?;
+        if args.jobs == Some(0) {
+            bail!(Error::invalid("--jobs", "must be >= 1, got 0"));
+        }
+        let given: Vec<Vary> = args.vary.iter().map(|v| Vary::parse(v)).collect::<Result<_, _>>()?;
+        let scene = SceneText::load(&args.scene)?;
+        let numbers = Numbers::of(&scene.text)?;
+        let mut varied: Vec<scene_numbers::Entry> = Vec::new();
+        for v in &given {
+            let entry = numbers.find(&v.name)?;
+            if varied.iter().any(|e| e.key == entry.key) {
+                bail!(Error::invalid("--vary", format!("{} is varied twice", entry.key)));
+            }
+            varied.push(entry.clone());
+        }
+        let axes: Vec<Axis> = given
+            .iter()
+            .zip(&varied)
+            .map(|(v, e)| Axis {
+                key: e.key.clone(),
+                start: v.start,
+                end: v.end,
+                count: v.count,
+            })
+            .collect();
+        let size = vary::member_count(&axes)?;
+        let method_name = match &args.overrides.method {
+            Some(m) => m.clone(),
+            None => scene.parse()?.run().method.clone(),
+        };
+        // an ensemble runs its members as the scene's file says (compare takes METHOD@logh)
+        if transform::split(&method_name)?.1 != transform::Asked::AsTheFileSays {
+            bail!(Error::invalid(
+                "--method",
+                format!("{method_name}: an ensemble runs the scene in the time transformation its file says; give the method's name alone")
+            ));
+        }
+        let plan = job::plan(&scene, std::slice::from_ref(&method_name), args.overrides.t_end)?;
+        let method = plan.resolved.first().context("no method")?.clone();
+        let mut id = EnsembleId {
+            scene: plan.scene.clone(),
+            scene_hash: plan.scene_hash.clone(),
+            method: method.name().to_string(),
+            dt: args.overrides.dt,
+            t_end: args.overrides.t_end,
+            axes,
+            components: plan.components.clone(),
+            stop: plan.stop.map(String::from),
+            energy: plan.energy,
+            indicator: args.indicator.map(|i| i.name().to_string()),
+            show: String::new(),
+            show_label: String::new(),
+        };
+        let columns = id.columns();
+        id.show = match &args.show {
+            Some(name) if columns.contains(name) => name.clone(),
+            Some(name) => bail!(Error::invalid(
+                "--show",
+                format!(
+                    "unknown column '{name}'; an ensemble of this scene has {}",
+                    columns.join(", ")
+                )
+            )),
+            None => match &id.indicator {
+                Some(indicator) => indicator.clone(),
+                None => plan.components.first().cloned().unwrap_or_else(|| "t".into()),
+            },
+        };
+        id.show_label = column_label(&id.show, &plan.units);
+        Ok(Plan {
+            scene,
+            varied,
+            method,
+            size,
+            id,
+        })
+    }
+
+    /// Runs the members `mine` on `jobs` worker threads (default: rayon's pool, one per
+    /// core), `on_row` called with each row as it is made (the journal); a member whose
+    /// scene file is refused stops the ensemble.
+    pub fn run(
+        &self,
+        mine: &[usize],
+        jobs: Option<usize>,
+        indicator: Option<IndicatorArg>,
+        on_row: &(dyn Fn(&Member) + Sync),
+    ) -> anyhow::Result<Rows> {
+        let members = Members {
+            scene: &self.scene,
+            varied: self.varied.iter().collect(),
+            axes: &self.id.axes,
+            method: &self.method,
+            dt: self.id.dt,
+            t_end: self.id.t_end,
+            indicator,
+        };
+        let work = || -> (Vec<Result<Member, Error>>, usize) {
+            let run = |&m: &usize| {
+                let row = members.run(m);
+                if let Ok(member) = &row {
+                    on_row(member);
+                }
+                row
+            };
+            let rows = mine.par_iter().map(run).collect();
+            (rows, rayon::current_num_threads())
+        };
+        let start = Instant::now();
+        let (rows, threads) = match jobs {
+            Some(asked) => rayon::ThreadPoolBuilder::new()
+                .num_threads(super::worker_threads(asked, mine.len()))
+                .build()
+                .context("cannot start the worker threads")?
+                .install(work),
+            None => work(),
+        };
+        let seconds = start.elapsed().as_secs_f64();
+        Ok(Rows {
+            rows: rows.into_iter().collect::<Result<_, _>>()?,
+            threads,
+            seconds,
+        })
+    }
+}
+
 /// `stormer ensemble`.
 pub fn ensemble(args: &EnsembleArgs) -> anyhow::Result<()> {
-    args.overrides.check()?;
-    if args.jobs == Some(0) {
-        bail!(Error::invalid("--jobs", "must be >= 1, got 0"));
-    }
-    let given: Vec<Vary> = args.vary.iter().map(|v| Vary::parse(v)).collect::<Result<_, _>>()?;
-    let scene = SceneText::load(&args.scene)?;
-    let numbers = Numbers::of(&scene.text)?;
-    let mut varied: Vec<&scene_numbers::Entry> = Vec::new();
-    for v in &given {
-        let entry = numbers.find(&v.name)?;
-        if varied.iter().any(|e| e.key == entry.key) {
-            bail!(Error::invalid("--vary", format!("{} is varied twice", entry.key)));
-        }
-        varied.push(entry);
-    }
-    let axes: Vec<Axis> = given
-        .iter()
-        .zip(&varied)
-        .map(|(v, e)| Axis {
-            key: e.key.clone(),
-            start: v.start,
-            end: v.end,
-            count: v.count,
-        })
-        .collect();
-    let size = vary::member_count(&axes)?;
-    let method_name = match &args.overrides.method {
-        Some(m) => m.clone(),
-        None => scene.parse()?.run().method.clone(),
-    };
-    // an ensemble runs its members as the scene's file says (compare takes METHOD@logh)
-    if transform::split(&method_name)?.1 != transform::Asked::AsTheFileSays {
-        bail!(Error::invalid(
-            "--method",
-            format!("{method_name}: an ensemble runs the scene in the time transformation its file says; give the method's name alone")
-        ));
-    }
-    let plan = job::plan(&scene, std::slice::from_ref(&method_name), args.overrides.t_end)?;
-    let method = plan.resolved.first().context("no method")?;
-    let mut id = EnsembleId {
-        scene: plan.scene.clone(),
-        scene_hash: plan.scene_hash.clone(),
-        method: method.name().to_string(),
-        dt: args.overrides.dt,
-        t_end: args.overrides.t_end,
-        axes,
-        components: plan.components.clone(),
-        stop: plan.stop.map(String::from),
-        energy: plan.energy,
-        indicator: args.indicator.map(|i| i.name().to_string()),
-        show: String::new(),
-        show_label: String::new(),
-    };
-    let columns = id.columns();
-    id.show = match &args.show {
-        Some(name) if columns.contains(name) => name.clone(),
-        Some(name) => bail!(Error::invalid(
-            "--show",
-            format!(
-                "unknown column '{name}'; an ensemble of this scene has {}",
-                columns.join(", ")
-            )
-        )),
-        None => match &id.indicator {
-            Some(indicator) => indicator.clone(),
-            None => plan.components.first().cloned().unwrap_or_else(|| "t".into()),
-        },
-    };
-    id.show_label = column_label(&id.show, &plan.units);
+    let plan = Plan::new(args)?;
+    let size = plan.size;
     let shard = args.shard.unwrap_or((1, 1));
     let header = EnsemblePart {
         format: ensemble_part::FORMAT.into(),
-        ensemble: id,
+        ensemble: plan.id.clone(),
         shard,
         rows: Vec::new(),
     };
@@ -320,15 +405,6 @@ pub fn ensemble(args: &EnsembleArgs) -> anyhow::Result<()> {
     for output in &outputs {
         crate::cli::output::refuse_overwriting(output, &inputs)?;
     }
-    let members = Members {
-        scene: &scene,
-        varied,
-        axes: &id.axes,
-        method,
-        dt: id.dt,
-        t_end: id.t_end,
-        indicator: args.indicator,
-    };
     let mine = super::shard_jobs(size, shard);
     // the members an interrupted run of the same command finished are not run again
     let (journal, done) = journal::open(&journal_path, &header, &mine)?;
@@ -344,32 +420,15 @@ pub fn ensemble(args: &EnsembleArgs) -> anyhow::Result<()> {
             todo.len()
         );
     }
-    let work = || -> (Vec<Result<Member, Error>>, usize) {
-        let run = |&m: &usize| {
-            let row = members.run(m);
-            if let Ok(member) = &row {
-                journal.add(member);
-            }
-            row
-        };
-        let rows = todo.par_iter().map(run).collect();
-        (rows, rayon::current_num_threads())
-    };
-    let start = Instant::now();
-    let (rows, threads) = match args.jobs {
-        Some(asked) => rayon::ThreadPoolBuilder::new()
-            .num_threads(super::worker_threads(asked, todo.len()))
-            .build()
-            .context("cannot start the worker threads")?
-            .install(work),
-        None => work(),
-    };
-    let seconds = start.elapsed().as_secs_f64();
-    let mut rows: Vec<Member> = match rows.into_iter().collect::<Result<_, _>>() {
+    let Rows {
+        mut rows,
+        threads,
+        seconds,
+    } = match plan.run(&todo, args.jobs, args.indicator, &|member| journal.add(member)) {
         Ok(rows) => rows,
         Err(e) => {
             journal.abandon();
-            return Err(e.into());
+            return Err(e);
         }
     };
     let ran = rows.len();

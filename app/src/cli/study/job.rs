@@ -5,13 +5,13 @@ use super::{fnv1a, Control, Kind, MethodEntry, ReferenceInfo, Row, StudyId};
 use crate::cli::choice;
 use crate::cli::output::{file_safe, one_line};
 use crate::cli::pipeline::{max_difference, Options, SceneRun, Steps};
+use crate::scenes::{self, AnyScene, Scene, SceneVisitor, Setup, Units};
 use anyhow::Context;
 use serde::{Deserialize, Serialize};
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 use stormer::stepper::Tolerances;
 use stormer::{Error, Method};
-use stormer_app::scenes::{self, AnyScene, Scene, SceneVisitor, Setup, Units};
 
 /// A scene's file text, parsed again by each job (each worker thread has its own model).
 #[derive(Debug, Clone)]

@@ -33,10 +33,11 @@ use stormer::{Error, Method};
 
 use args::{check_common, parse_shard, positive_list};
 pub use args::{CommonArgs, CompareArgs, MergeArgs, ScanArgs};
-pub use ensemble::{ensemble, EnsembleArgs};
+pub use ensemble::{ensemble, EnsembleArgs, Plan as EnsemblePlan, Rows as EnsembleRows};
 pub use job::SceneText;
 pub use part::fnv1a;
 use part::{Control, Job, Kind, MethodEntry, Part, ReferenceInfo, Row, StudyId, FORMAT};
+pub use scene_numbers::{substitute, Numbers};
 use shards::{join, parse_part, read_text, shard_jobs, write_json, Sharded};
 
 /// `stormer compare`.

@@ -15,8 +15,8 @@
 
 use std::cell::RefCell;
 
+use crate::scenes::{Scene, Setup, Watched};
 use stormer::State;
-use stormer_app::scenes::{Scene, Setup, Watched};
 
 use crate::cli::pipeline::Track;
 
@@ -24,7 +24,7 @@ use crate::cli::pipeline::Track;
 pub struct OneRun<'s, S: Scene> {
     setup: &'s Setup<S>,
     /// The stop condition's `g - level` and its value at the start.
-    stop: Option<(stormer_app::scenes::Stop<S>, f64)>,
+    stop: Option<(crate::scenes::Stop<S>, f64)>,
     every: u64,
     seen: RefCell<Seen<S>>,
 }
@@ -86,7 +86,7 @@ impl<'s, S: Scene> OneRun<'s, S> {
         }
     }
 
-    /// The watch ([`stormer_app::scenes::ChaosRun::watch`]): takes the step's state, checks
+    /// The watch ([`crate::scenes::ChaosRun::watch`]): takes the step's state, checks
     /// the stop condition, records the energy every `every` steps; false once the stop
     /// condition may have been met.
     pub fn watch(&self, w: Watched<'_>) -> bool {

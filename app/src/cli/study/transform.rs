@@ -4,10 +4,10 @@
 //! runs the scene as its file says. The study keeps the transformation of each method by
 //! name ([`super::MethodEntry::transform`]), so a shard's jobs run in it and its labels say it.
 
+use crate::scenes::AnyScene;
 use std::path::Path;
 use stormer::time_transform::Transform;
 use stormer::Error;
-use stormer_app::scenes::AnyScene;
 
 /// The name of the untransformed scene in a suffix and in a study.
 pub const NONE: &str = "none";

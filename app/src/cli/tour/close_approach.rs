@@ -13,9 +13,9 @@ use super::work_precision::{compared, tour_study};
 use crate::cli::plot::{Chart, Scale, Series};
 use crate::cli::study::CompareArgs;
 use crate::cli::tour_page::Section;
+use crate::scenes;
 use std::f64::consts::TAU;
 use std::path::Path;
-use stormer_app::scenes;
 
 const SCENE: &str = "kepler-e099";
 

@@ -7,9 +7,9 @@ use super::trace::Trace;
 use super::verdict::{measured, number};
 use crate::cli::plot::{Chart, Series};
 use crate::cli::tour_page::Section;
+use crate::scenes;
 use anyhow::Context;
 use std::path::Path;
-use stormer_app::scenes;
 
 /// The section at E = 1/12.
 const REGULAR: Figure = Figure {

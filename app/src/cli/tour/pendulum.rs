@@ -5,8 +5,8 @@ use super::sim::sims;
 use super::verdict::{drift_word, measured, signed};
 use crate::cli::plot::{Chart, Series};
 use crate::cli::tour_page::Section;
+use crate::scenes::Units;
 use std::path::Path;
-use stormer_app::scenes::Units;
 
 /// The energy error of both methods.
 const ENERGY: Figure = Figure {

@@ -3,8 +3,8 @@
 use super::trace::Trace;
 use crate::cli::plot::{draw, Chart, Scale, Series};
 use crate::cli::tour_page::Picture;
+use crate::scenes::Units;
 use std::path::Path;
-use stormer_app::scenes::Units;
 
 /// A picture of the tour: its file name, and what it shows and what to look at (each
 /// experiment names its own).

@@ -5,11 +5,11 @@ use super::trace::{Row, Trace};
 use crate::cli::choice;
 use crate::cli::pipeline::{deviation, Options, SceneRun, Steps};
 use crate::cli::section::Section as PoincareSection;
+use crate::scenes::{self, AnyScene, Scene, SceneVisitor, Setup};
 use anyhow::Context;
 use stormer::driver::EventHit;
 use stormer::driver::Recorder;
 use stormer::{Error, State};
-use stormer_app::scenes::{self, AnyScene, Scene, SceneVisitor, Setup};
 
 /// In-memory recorder.
 struct Memory<'a, S: Scene> {

@@ -1,7 +1,7 @@
 //! One run of the tour kept in memory ([`Trace`]) and what the verdicts measure on it: the
 //! energy error, its drift, the mean drift of the position.
 
-use stormer_app::scenes::Units;
+use crate::scenes::Units;
 
 /// One record: `(t, state, energy, max deviation from the exact solution)`.
 pub(super) type Row = (f64, Vec<f64>, Option<f64>, Option<f64>);
