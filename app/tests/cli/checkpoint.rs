@@ -297,6 +297,13 @@ fn a_checkpoint(dir: &Path) -> String {
         "--checkpoint",
         "every=1000steps",
     ];
+    stopped_after_a_checkpoint(dir, &args);
+    std::fs::read_to_string(dir.join("run.csv.checkpoint")).unwrap()
+}
+
+/// `stormer ARGS` (a run writing `run.csv` with checkpoints) in `dir`, stopped by SIGTERM once
+/// its first checkpoint is there.
+fn stopped_after_a_checkpoint(dir: &Path, args: &[&str]) {
     let child = Command::new(env!("CARGO_BIN_EXE_stormer"))
         .args(args)
         .current_dir(dir)
@@ -313,7 +320,6 @@ fn a_checkpoint(dir: &Path) -> String {
     }
     let (status, err) = binary::signal(child, "-TERM", start, Duration::from_secs(60));
     assert_eq!(status.code(), Some(143), "{err}");
-    std::fs::read_to_string(dir.join("run.csv.checkpoint")).unwrap()
 }
 
 #[test]
@@ -504,22 +510,7 @@ fn a_scene_file_edited_after_the_checkpoint_is_refused() {
         "--checkpoint",
         "every=500steps",
     ];
-    let child = Command::new(env!("CARGO_BIN_EXE_stormer"))
-        .args(args)
-        .current_dir(&dir)
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap();
-    let start = Instant::now();
-    while !dir.join("run.csv.checkpoint").exists() {
-        assert!(
-            start.elapsed() < Duration::from_secs(60),
-            "no checkpoint after a minute"
-        );
-        std::thread::sleep(Duration::from_millis(5));
-    }
-    let (status, err) = binary::signal(child, "-TERM", start, Duration::from_secs(60));
-    assert_eq!(status.code(), Some(143), "{err}");
+    stopped_after_a_checkpoint(&dir, &args);
     let csv = std::fs::read(dir.join("run.csv")).unwrap();
     // one more digit in a number of the file
     let edited = toml.replacen("dt = 0.01", "dt = 0.011", 1);
