@@ -15,16 +15,16 @@
 
 use std::cell::RefCell;
 
-use crate::scenes::{Scene, Setup, Watched};
 use stormer::State;
 
 use crate::cli::pipeline::Track;
+use crate::scenes::{Scene, Setup, Stop, Watched};
 
 /// The scene's run as seen through the indicators' run ([`OneRun::watch`]).
 pub struct OneRun<'s, S: Scene> {
     setup: &'s Setup<S>,
     /// The stop condition's `g - level` and its value at the start.
-    stop: Option<(crate::scenes::Stop<S>, f64)>,
+    stop: Option<(Stop<S>, f64)>,
     every: u64,
     seen: RefCell<Seen<S>>,
 }
