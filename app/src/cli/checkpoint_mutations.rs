@@ -11,7 +11,7 @@ use super::pipeline::Track;
 use super::study::part_mutations::mutate::{self, apply, edits};
 use proptest::prelude::*;
 use std::time::{Duration, Instant};
-use stormer::driver::{Crossing, RunState, Solution};
+use stormer::driver::{Crossing, Resumable, RunState, Solution};
 use stormer::models::CentralForce;
 use stormer::stepper::Tolerances;
 use stormer::{Driver, Method};
@@ -36,16 +36,20 @@ fn stepper() -> Box<dyn stormer::Stepper<Kepler>> {
 
 /// The state of that run paused after 20 steps.
 fn good_state() -> RunState {
-    let run = driver().pause_at(20).run_resumable(
+    kepler_run(driver().pause_at(20), None).paused.unwrap()
+}
+
+/// The run of Kepler from `Y0` to t = 3 by `driver`, from `from` when given.
+fn kepler_run(driver: Driver<'_, f64, [f64; 4]>, from: Option<&RunState>) -> Resumable<f64, [f64; 4]> {
+    driver.run_resumable(
         &Kepler::new(1.0),
         &mut stepper(),
         0.0,
         &Y0,
         3.0,
         &mut Solution::default(),
-        None,
-    );
-    run.paused.unwrap()
+        from,
+    )
 }
 
 /// A valid checkpoint's text, holding that state.
@@ -114,15 +118,7 @@ fn state_case(edits: &[mutate::Edit]) -> Result<(), TestCaseError> {
         return Ok(());
     };
     let start = Instant::now();
-    let run = driver().max_steps(10_000).run_resumable(
-        &Kepler::new(1.0),
-        &mut stepper(),
-        0.0,
-        &Y0,
-        3.0,
-        &mut Solution::default(),
-        Some(&state),
-    );
+    let run = kepler_run(driver().max_steps(10_000), Some(&state));
     prop_assert!(start.elapsed() < HANG);
     if let Err((_, e)) = run.outcome {
         prop_assert!(!e.to_string().is_empty());

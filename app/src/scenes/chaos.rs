@@ -271,31 +271,15 @@ fn inverse_masses(bodies: &NBody<f64, DVector<f64>>) -> Vec<f64> {
     bodies.masses().iter().map(|m| m.recip()).collect()
 }
 
-/// `f` on the dual parts of `y`, copied to a buffer on the stack up to 16 bodies in 3-D
-/// (a measure is taken at every step), on the heap beyond.
+/// `f` on the dual parts of `y`, copied to a scratch buffer (no allocation per step for up
+/// to 16 bodies in 3-D).
 fn with_dual_parts<R>(y: &[Dual64], f: impl FnOnce(&mut [f64]) -> R) -> R {
-    let fill = |buffer: &mut [f64]| {
+    super::stack_buffer::with_zeros(y.len(), |buffer| {
         for (d, y) in buffer.iter_mut().zip(y) {
             *d = y.eps;
         }
-    };
-    match y.len() {
-        n @ 0..=24 => {
-            let mut buffer = [0.0; 24];
-            fill(&mut buffer[..n]);
-            f(&mut buffer[..n])
-        }
-        n @ 25..=96 => {
-            let mut buffer = [0.0; 96];
-            fill(&mut buffer[..n]);
-            f(&mut buffer[..n])
-        }
-        n => {
-            let mut buffer = vec![0.0; n];
-            fill(&mut buffer);
-            f(&mut buffer)
-        }
-    }
+        f(buffer)
+    })
 }
 
 /// Gravitating bodies' twin.

@@ -60,21 +60,13 @@ fn escaped<S: Scene>(model: &S, y: &S::State) -> Option<(String, f64)> {
 /// [`farthest`] of the scene state of `y`, with no allocation for up to 16 bodies in 3-D.
 fn farthest_in<S: Scene>(model: &S, y: &S::State) -> Option<(usize, f64)> {
     let bodies = model.bodies()?;
-    Some(with_positions(bodies.masses().len() * bodies.dim(), |q| {
-        model.scene_positions(y, q);
-        farthest(bodies, q)
-    }))
-}
-
-/// `f` on a buffer of `len` zeros: on the stack up to 16 bodies in 3-D (the check runs
-/// at every step of a stability map's members), on the heap beyond.
-fn with_positions<R>(len: usize, f: impl FnOnce(&mut [f64]) -> R) -> R {
-    const ON_STACK: usize = 48;
-    if len <= ON_STACK {
-        f(&mut [0.0; ON_STACK][..len])
-    } else {
-        f(&mut vec![0.0; len])
-    }
+    Some(super::stack_buffer::with_zeros(
+        bodies.masses().len() * bodies.dim(),
+        |q| {
+            model.scene_positions(y, q);
+            farthest(bodies, q)
+        },
+    ))
 }
 
 #[cfg(test)]

@@ -61,6 +61,7 @@ mod particle_list;
 mod pendulum;
 mod perturbed_central_force_file;
 mod relativistic_file;
+mod stack_buffer;
 mod three_body_outcome;
 mod time_transformed;
 

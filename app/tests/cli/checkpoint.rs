@@ -17,17 +17,6 @@ use crate::support::binary::{self, assert_error, stderr, stormer, stormer_ok, wo
 /// How long a checkpoint's write pauses half way in the killed runs: most kills land there.
 const WRITE_PAUSE_MS: &str = "25";
 
-/// A small deterministic generator for the moments (xorshift).
-struct Moments(u64);
-impl Moments {
-    fn next_ms(&mut self, below: u64) -> u64 {
-        self.0 ^= self.0 << 13;
-        self.0 ^= self.0 >> 7;
-        self.0 ^= self.0 << 17;
-        self.0 % below
-    }
-}
-
 /// Every file of `dir` (name, bytes), sorted: the CSVs and the pictures.
 fn files(dir: &Path) -> Vec<(String, Vec<u8>)> {
     let mut all: Vec<(String, Vec<u8>)> = std::fs::read_dir(dir)
@@ -97,7 +86,7 @@ fn killed_and_resumed_at(name: &str, run: &[&str], interval: &str, seed: u64) ->
     let whole = stormer_ok(&whole_dir, &args);
     args.extend(["--checkpoint", interval]);
     let resume = ["run", "--resume", "run.csv.checkpoint"];
-    let mut moments = Moments(seed);
+    let mut moments = binary::Moments(seed);
     let (mut torn, mut kills, mut resumes) = (0, 0, 0);
     let mut finished = None;
     for attempt in 0..200 {

@@ -51,17 +51,6 @@ fn strict_rows(path: &Path, cut_last: bool) -> Vec<f64> {
         .collect()
 }
 
-/// A small deterministic generator for the moments (xorshift).
-struct Moments(u64);
-impl Moments {
-    fn next_ms(&mut self, below: u64) -> u64 {
-        self.0 ^= self.0 << 13;
-        self.0 ^= self.0 >> 7;
-        self.0 ^= self.0 << 17;
-        self.0 % below
-    }
-}
-
 /// Starts the binary in `dir` with `args` (stderr piped) and waits, a minute at most, until
 /// it has written the header of `csv` (flushed when the file is created; a `csv` left by an
 /// earlier run is removed first). Returns the child and when it was started.
@@ -115,7 +104,7 @@ fn kill_a_run(dir: &Path, signal: &str, after_ms: u64) -> (std::process::ExitSta
 fn twenty_runs_killed_at_random_moments_leave_whole_rows() {
     let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("signals");
     std::fs::create_dir_all(&dir).unwrap();
-    let mut moments = Moments(0x5eed_1234_abcd_0001);
+    let mut moments = binary::Moments(0x5eed_1234_abcd_0001);
     for run in 0..20 {
         let (signal, code) = [("-TERM", 143), ("-HUP", 129), ("-KILL", 0)][run % 3];
         let (status, err, csv) = kill_a_run(&dir, signal, moments.next_ms(400));

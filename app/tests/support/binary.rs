@@ -130,3 +130,16 @@ pub fn column(header: &[String], name: &str) -> usize {
         .position(|h| h == name)
         .unwrap_or_else(|| panic!("no column {name} in {header:?}"))
 }
+
+/// A small deterministic generator of the moments a test stops a run at (xorshift).
+pub struct Moments(pub u64);
+
+impl Moments {
+    /// The next moment, in milliseconds below `below`.
+    pub fn next_ms(&mut self, below: u64) -> u64 {
+        self.0 ^= self.0 << 13;
+        self.0 ^= self.0 >> 7;
+        self.0 ^= self.0 << 17;
+        self.0 % below
+    }
+}
