@@ -29,6 +29,30 @@ pub fn to_f64<T: Real>(x: T) -> f64 {
     x.to_subset().unwrap_or(f64::NAN)
 }
 
+/// `num / (r2 sqrt(r2))`, the inverse-square law's factor (`num / r^3` from `r^2`), as
+/// written; on [`num_dual::Dual64`] with one reciprocal instead of the two that num-dual's
+/// root and quotient rules take, and the same value: `k = 1 / (r2 sqrt(r2))`, the value
+/// `num k` (num-dual's quotient is a product by the reciprocal), the dual part `k (num' -
+/// 3/2 num r2' sqrt(r2) k)` (`1 / r2 = sqrt(r2) k`). The type test is resolved at compile
+/// time.
+#[inline(always)]
+pub(crate) fn over_r_cubed<T: Real>(num: T, r2: T) -> T {
+    use core::any::Any;
+    use num_dual::Dual64;
+    if let (Some(n), Some(r2)) = (
+        (&num as &dyn Any).downcast_ref::<Dual64>(),
+        (&r2 as &dyn Any).downcast_ref::<Dual64>(),
+    ) {
+        let root = r2.re.sqrt();
+        let k = 1.0 / (r2.re * root);
+        let value = Dual64::new(n.re * k, k * (n.eps - 1.5 * n.re * r2.eps * (root * k)));
+        if let Some(&out) = (&value as &dyn Any).downcast_ref::<T>() {
+            return out;
+        }
+    }
+    num / (r2 * r2.sqrt())
+}
+
 /// `|x|` for a convergence test that must see every part of the scalar.
 ///
 /// Comparisons of dual numbers look at the real part only (by design: the derivative

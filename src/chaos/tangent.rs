@@ -36,8 +36,10 @@ where
     /// size: step `k` starts at `origin + (k - origin_step) h`, with no sum of many `h`.
     origin: (Re<P>, u64, Option<Re<P>>),
     steps: u64,
-    y: P::State,
-    y_new: P::State,
+    /// The state after the last step (`states[current]`) and the next step's output: a
+    /// step alternates them instead of swapping (a swap copies a static state three times).
+    states: [P::State; 2],
+    current: usize,
     /// The natural log of the factors the variation was divided by so far.
     log_scale: f64,
     /// How the indicators measure the variation (`None`: the Euclidean length of the dual
@@ -109,8 +111,8 @@ where
             t: t0,
             origin: (t0, 0, None),
             steps: 0,
-            y,
-            y_new,
+            states: [y, y_new],
+            current: 0,
             log_scale: 0.0,
             measure: None,
             log_measure0: None,
@@ -154,7 +156,7 @@ where
         }
         let (origin, origin_step, _) = self.origin;
         if let (Some(measure), None) = (&self.measure, self.log_measure0) {
-            self.log_measure0 = Some(measure.of(problem, &self.y).ln());
+            self.log_measure0 = Some(measure.of(problem, self.y()).ln());
         }
         for _ in 0..n {
             let t = origin + lit::<Re<P>>((self.steps - origin_step) as f64) * h;
@@ -162,28 +164,28 @@ where
                 t: to_f64(t),
                 step: self.steps,
             };
-            stepper.step(problem, P::Scalar::seeded(t, zero), h_dual, &self.y, &mut self.y_new)?;
-            if !self.y_new.is_finite() {
-                return Err(non_finite);
-            }
-            let length = to_f64(variation_length::<P>(&self.y_new));
+            let (y, y_new) = self.pair();
+            stepper.step(problem, P::Scalar::seeded(t, zero), h_dual, y, y_new)?;
+            let length = to_f64(finite_variation_length::<P>(y_new));
             if !(length.is_finite() && length > 0.0) {
                 return Err(non_finite);
             }
             stepper.accept();
-            core::mem::swap(&mut self.y, &mut self.y_new);
+            self.current = 1 - self.current;
             self.steps += 1;
             self.t = origin + lit::<Re<P>>((self.steps - origin_step) as f64) * h;
             let log_length = match (&self.measure, self.log_measure0) {
-                (Some(measure), Some(log0)) => measure.of(problem, &self.y).ln() - log0,
+                (Some(measure), Some(log0)) => measure.of(problem, self.y()).ln() - log0,
                 _ => length.ln(),
             };
             let elapsed = to_f64(self.t - self.t0);
             match self.rate {
                 Some(rate) => {
-                    // y_new is free until the next step: the right-hand side's scratch
-                    problem.rhs(P::Scalar::seeded(self.t, zero), &self.y, &mut self.y_new);
-                    let rate = rate(problem, &self.y, &self.y_new);
+                    // the other state is free until the next step: the right-hand side's scratch
+                    let t = P::Scalar::seeded(self.t, zero);
+                    let (y, scratch) = self.pair();
+                    problem.rhs(t, y, scratch);
+                    let rate = rate(problem, y, scratch);
                     self.indicators
                         .record_with_rate(elapsed, self.log_scale + log_length, rate);
                 }
@@ -191,7 +193,7 @@ where
             }
             if !(1.0 / LIMIT..=LIMIT).contains(&length) {
                 let inverse = lit::<Re<P>>(1.0 / length);
-                for y in self.y.as_mut_slice() {
+                for y in self.states[self.current].as_mut_slice() {
                     *y = P::Scalar::seeded(y.real_part(), y.dual_part() * inverse);
                 }
                 self.log_scale += length.ln();
@@ -208,7 +210,7 @@ where
 
     /// The state (the real parts).
     pub fn state(&self) -> Vec<Re<P>> {
-        self.y.as_slice().iter().map(|y| y.real_part()).collect()
+        self.y().as_slice().iter().map(|y| y.real_part()).collect()
     }
 
     /// The variation now, `D Phi(y0) delta0 / |delta0|`: the tangent map applied to the
@@ -216,18 +218,33 @@ where
     /// range; [`Tangent::direction`] and the indicators' `log_growth` never do).
     pub fn variation(&self) -> Vec<Re<P>> {
         let scale = lit::<Re<P>>(self.log_scale.exp());
-        self.y.as_slice().iter().map(|y| y.dual_part() * scale).collect()
+        self.y().as_slice().iter().map(|y| y.dual_part() * scale).collect()
     }
 
     /// The variation's direction (unit length).
     pub fn direction(&self) -> Vec<Re<P>> {
-        let inverse = Re::<P>::one() / variation_length::<P>(&self.y);
-        self.y.as_slice().iter().map(|y| y.dual_part() * inverse).collect()
+        let inverse = Re::<P>::one() / variation_length::<P>(self.y());
+        self.y().as_slice().iter().map(|y| y.dual_part() * inverse).collect()
     }
 
     /// The state and the variation as dual numbers.
     pub fn dual_state(&self) -> &P::State {
-        &self.y
+        self.y()
+    }
+
+    /// The state after the last step.
+    fn y(&self) -> &P::State {
+        &self.states[self.current]
+    }
+
+    /// The state after the last step and the other one, to write the next step into.
+    fn pair(&mut self) -> (&P::State, &mut P::State) {
+        let [first, second] = &mut self.states;
+        if self.current == 0 {
+            (first, second)
+        } else {
+            (second, first)
+        }
     }
 
     /// MEGNO, the Lyapunov exponent and the FLI after the last step.
@@ -239,6 +256,20 @@ where
     pub fn steps_taken(&self) -> u64 {
         self.steps
     }
+}
+
+/// `|delta|`, the Euclidean length of the dual parts, or NaN where a real part is not
+/// finite: the state's check and the variation's length in one pass (`x * 0` is 0 for a
+/// finite `x`, NaN otherwise, and NaN survives the sum).
+fn finite_variation_length<P: Problem>(y: &P::State) -> Re<P>
+where
+    P::Scalar: DualScalar,
+{
+    let zero = Re::<P>::zero();
+    let (values, squares) = y.as_slice().iter().fold((zero, zero), |(values, squares), y| {
+        (values + y.real_part() * zero, squares + y.dual_part() * y.dual_part())
+    });
+    (squares + values).sqrt()
 }
 
 /// `|delta|`, the Euclidean length of the dual parts.

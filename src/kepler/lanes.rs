@@ -47,7 +47,7 @@ const fn first_seven(c: &[f64; 9]) -> [f64; 7] {
 /// Four values, one per lane, and the arithmetic the solve needs, lane by lane: the
 /// portable [`Portable`] and, on x86-64 CPUs with AVX2, one AVX2 register ([`Avx2`]). The
 /// same operations in the same order either way (no fused multiply-add): the same bits.
-trait Lane:
+pub(super) trait Lane:
     Copy
     + core::ops::Add<Output = Self>
     + core::ops::Sub<Output = Self>
@@ -204,7 +204,7 @@ fn stiefel<V: Lane, const LONG_SERIES: bool>(beta: V, s: V) -> ([V; 4], V) {
 
 /// The nine-term series by Estrin's scheme, given `z^2`, `z^4` and `z^8`.
 #[inline(always)]
-fn series_long<V: Lane>(c: &[f64; 9], z: V, z2: V, z4: V, z8: V) -> V {
+pub(super) fn series_long<V: Lane>(c: &[f64; 9], z: V, z2: V, z4: V, z8: V) -> V {
     let pair = |i: usize| z.times(c[i + 1]).plus(c[i]);
     let low = pair(0) + z2 * pair(2);
     let high = pair(4) + z2 * pair(6);
@@ -348,7 +348,7 @@ fn wider(a: [f64; LANES], z: [f64; LANES]) -> [f64; LANES] {
 
 /// Work on lanes of one kind ([`Portable`] or [`Avx2`]), given how to make a lane from
 /// four values: [`dispatch`] runs it in AVX2 registers when the CPU has them.
-trait LaneTask {
+pub(super) trait LaneTask {
     type Output;
     fn run<V: Lane>(self, lane: impl Fn([f64; LANES]) -> V) -> Self::Output;
 }
@@ -356,7 +356,7 @@ trait LaneTask {
 /// `task` in AVX2 registers when the CPU has them (found at run time), in portable code
 /// otherwise.
 #[inline(always)]
-fn dispatch<W: LaneTask>(task: W) -> W::Output {
+pub(super) fn dispatch<W: LaneTask>(task: W) -> W::Output {
     #[cfg(target_arch = "x86_64")]
     if let Some(simd) = pulp::x86::V3::try_new() {
         return simd.vectorize(Avx2Task { simd, task });

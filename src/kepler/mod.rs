@@ -11,12 +11,14 @@
 mod drift;
 mod lagrange;
 mod lanes;
+mod lanes_dual;
 mod stumpff;
 mod universal;
 
 pub use drift::KeplerDrift;
 pub use lagrange::LagrangeCoefficients;
 pub use lanes::{KeplerLanes, LaneFlows, LaneStates, LANES};
+pub use lanes_dual::DualLaneFlows;
 pub use stumpff::stumpff;
 
 use crate::Real;

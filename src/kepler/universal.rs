@@ -251,8 +251,8 @@ const fn stumpff_terms(k: u32) -> [f64; 9] {
     }
     c
 }
-const C4: [f64; 9] = stumpff_terms(4);
-const C5: [f64; 9] = stumpff_terms(5);
+pub(super) const STUMPFF_C4: [f64; 9] = stumpff_terms(4);
+pub(super) const STUMPFF_C5: [f64; 9] = stumpff_terms(5);
 
 /// `sum_j c_j z^j` by Horner's rule.
 #[inline(always)]
@@ -274,7 +274,7 @@ fn corrected_on_dual_numbers(orbit: &Orbit<Dual64>, tau: Dual64, s: f64) -> Stie
         return corrected(orbit, tau, Dual64::from(s));
     }
     let [c0, c1, c2, c3] = stumpff(z);
-    let (c4, c5) = (horner(&C4, z), horner(&C5, z));
+    let (c4, c5) = (horner(&STUMPFF_C4, z), horner(&STUMPFF_C5, z));
     let values = [c0, s * c1, s2 * c2, s2 * s * c3];
     let half = 0.5 * orbit.beta.eps;
     let slopes = [

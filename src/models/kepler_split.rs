@@ -8,12 +8,13 @@ use super::nbody::NBody;
 use super::nbody_shape::{AnyShape, Shape};
 use crate::flows::{QuadraticKinetic, Splittable};
 use crate::hamiltonian::Hamiltonian;
-use crate::kepler::{KeplerLanes, LagrangeCoefficients, LaneFlows, LaneStates, LANES};
+use crate::kepler::{DualLaneFlows, KeplerLanes, LagrangeCoefficients, LaneFlows, LaneStates, LANES};
 use crate::method::Families;
 #[allow(unused_imports)]
 use crate::real::ops::*;
-use crate::real::{lit, to_f64};
+use crate::real::{lit, over_r_cubed, to_f64};
 use crate::{Error, Problem, Real, State};
+use num_dual::Dual64;
 
 /// The coordinates a [`KeplerSplit`] runs in, and so which Kepler problems its drift solves.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -320,31 +321,60 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> KeplerSplit<T, S, K> {
             }
             return out;
         }
-        // on dual numbers, the roots found on the values in the lanes (`near_root`)
-        let iterates = if core::any::TypeId::of::<T>() == core::any::TypeId::of::<num_dual::Dual64>() {
-            let load = |c: usize, j: usize| lane_state(q, p, first, count, d, c, j);
-            self.lanes[(first - 1) / LANES].iterates(to_f64(tau), count, load)
-        } else {
-            [None; LANES]
-        };
         let mut out = [[[T::zero(); LANES]; 3]; 2];
-        for j in 0..count {
+        // on dual numbers, the roots found on the values and the correction made in the
+        // lanes; a lane they do not solve, solved alone below
+        let mut solved = [false; LANES];
+        if let Some(flows) = self.dual_chunk(tau, q, p, first, count) {
+            solved = flows.solved;
+            for c in 0..d {
+                for j in (0..count).filter(|&j| solved[j]) {
+                    (out[0][c][j], out[1][c][j]) = (from_dual(flows.dq[c][j]), from_dual(flows.dp[c][j]));
+                }
+            }
+        }
+        for j in (0..count).filter(|&j| !solved[j]) {
             let (k, (mu, mass)) = (first + j, self.kepler[first + j]);
             let (qk, pk) = (&q[k * d..(k + 1) * d], &p[k * d..(k + 1) * d]);
             let mut v = [T::zero(); 3];
             for (v, &p) in v.iter_mut().zip(pk) {
                 *v = p / mass;
             }
-            let c = match iterates[j] {
-                Some(s) => LagrangeCoefficients::near_root(mu, tau, qk, &v[..d], s),
-                None => LagrangeCoefficients::new(mu, tau, qk, &v[..d]),
-            };
+            let c = LagrangeCoefficients::new(mu, tau, qk, &v[..d]);
             for i in 0..d {
                 out[0][i][j] = c.f_minus_one * qk[i] + c.g * v[i];
                 out[1][i][j] = mass * (c.f_dot * qk[i] + c.g_dot_minus_one * v[i]);
             }
         }
         out
+    }
+
+    /// [`KeplerSplit::kepler_chunk`] on [`Dual64`] ([`KeplerLanes::solve_dual`]); `None`
+    /// for every other scalar (decided when the code is compiled).
+    #[inline(always)]
+    fn dual_chunk(&self, tau: T, q: &[T], p: &[T], first: usize, count: usize) -> Option<DualLaneFlows> {
+        if core::any::TypeId::of::<T>() != core::any::TypeId::of::<Dual64>() {
+            return None;
+        }
+        let d = self.bodies.dim();
+        // unused lanes: a unit circle of unit mass, as `lane_state`'s
+        let mut constants = [[Dual64::from(1.0); LANES]; 2];
+        for j in 0..count {
+            let (mu, mass) = self.kepler[first + j];
+            (constants[0][j], constants[1][j]) = (to_dual(mu)?, to_dual(mass)?);
+        }
+        let load = |c: usize, j: usize| {
+            if j >= count || c >= d {
+                let (q, p) = lane_state(q, p, first, count, d, c, j);
+                return (Dual64::from(q), Dual64::from(p));
+            }
+            let i = (first + j) * d + c;
+            let dual = |x: T| to_dual(x).unwrap_or(Dual64::from(0.0));
+            (dual(q[i]), dual(p[i]))
+        };
+        let mut flows = DualLaneFlows::default();
+        self.lanes[(first - 1) / LANES].solve_dual(to_dual(tau)?, constants, count, load, &mut flows);
+        Some(flows)
     }
 
     /// Every body's Kepler motion (the first body's entry, the centre of mass: free
@@ -485,7 +515,9 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> KeplerSplit<T, S, K> {
         jacobi.positions_from_jacobi_shaped(q, scene, D, N);
         Hamiltonian::force(&self.bodies, t, scene, f);
         jacobi.momenta_to_jacobi_shaped(f, D, N);
-        self.add_kepler_forces_shaped(-T::one(), q, f, D, N);
+        if !super::nbody_dual::add_kepler_forces::<T, D, N>(-T::one(), &self.kepler, q, f) {
+            self.add_kepler_forces_shaped(-T::one(), q, f, D, N);
+        }
     }
 
     /// The forces of the whole system in the scene's coordinates at the split's positions
@@ -540,12 +572,27 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> KeplerSplit<T, S, K> {
         for (k, &(mu, mass)) in self.kepler[..n].iter().enumerate().skip(1) {
             let qk = &q[k * d..(k + 1) * d];
             let r2 = qk.iter().fold(T::zero(), |s, &x| s + x * x);
-            let s = sign * mu * mass / (r2 * r2.sqrt());
+            let s = over_r_cubed(sign * mu * mass, r2);
             for (f, &x) in f[k * d..(k + 1) * d].iter_mut().zip(qk) {
                 *f -= s * x;
             }
         }
     }
+}
+
+/// `x` as the [`Dual64`] it is (`None` for another scalar).
+#[inline(always)]
+fn to_dual<T: Real>(x: T) -> Option<Dual64> {
+    (&x as &dyn core::any::Any).downcast_ref::<Dual64>().copied()
+}
+
+/// A [`Dual64`] as the scalar `T` it is (`T` is `Dual64` wherever it is used).
+#[inline(always)]
+fn from_dual<T: Real>(x: Dual64) -> T {
+    (&x as &dyn core::any::Any)
+        .downcast_ref::<T>()
+        .copied()
+        .unwrap_or_else(T::zero)
 }
 
 /// Component `c` of the position and the momentum of body `first + j` of `(q, p)` in `d`

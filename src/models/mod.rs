@@ -34,6 +34,7 @@ mod jacobi;
 mod kepler_split;
 mod magnetic_field;
 mod nbody;
+mod nbody_dual;
 mod nbody_shape;
 mod nbody_tiles;
 mod orbit;

@@ -8,7 +8,7 @@ use crate::hamiltonian::Hamiltonian;
 use crate::method::Families;
 #[allow(unused_imports)]
 use crate::real::ops::*;
-use crate::real::{lit, to_f64};
+use crate::real::{lit, over_r_cubed, to_f64};
 use crate::{Error, Real, State};
 use core::marker::PhantomData;
 
@@ -328,7 +328,7 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> NBody<T, S, K> {
                 .zip(&self.masses[k + 1..active])
             {
                 let (d, r2) = separation::<T, D>(qk, ql);
-                let s = gmk * ml / (r2 * r2.sqrt());
+                let s = over_r_cubed(gmk * ml, r2);
                 for c in 0..D {
                     let x = s * d[c];
                     fk[c] -= x;
@@ -345,7 +345,7 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> NBody<T, S, K> {
             let mut fl = [T::zero(); D];
             for (qk, &gmk) in q[..active * D].chunks_exact(D).zip(&self.gm) {
                 let (d, r2) = separation::<T, D>(qk, ql);
-                let s = gmk * self.masses[l] / (r2 * r2.sqrt());
+                let s = over_r_cubed(gmk * self.masses[l], r2);
                 for c in 0..D {
                     fl[c] += s * d[c];
                 }
@@ -364,6 +364,9 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> NBody<T, S, K> {
     pub(super) fn pairwise_fixed<const D: usize, const N: usize>(&self, q: &[T], f: &mut [T]) {
         let (q, f) = (&q[..N * D], &mut f[..N * D]);
         let (gm, m) = (&self.gm[..N], &self.masses[..N]);
+        if super::nbody_dual::pairwise_fixed::<T, D, N>(gm, m, q, f) {
+            return;
+        }
         let qs: [[T; D]; N] = core::array::from_fn(|k| core::array::from_fn(|c| q[k * D + c]));
         let mut fs = [[T::zero(); D]; N];
         for k in 0..N {
@@ -377,7 +380,7 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> NBody<T, S, K> {
                 for c in 1..D {
                     r2 += d[c] * d[c];
                 }
-                let s = gm[k] * m[l] / (r2 * r2.sqrt());
+                let s = over_r_cubed(gm[k] * m[l], r2);
                 for c in 0..D {
                     let x = s * d[c];
                     fk[c] -= x;
@@ -495,7 +498,7 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> NBody<T, S, K> {
         for k in 0..self.active {
             for l in k + 1..n {
                 let r2 = (0..d).fold(T::zero(), |s, c| s + (q[k * d + c] - q[l * d + c]).powi(2));
-                let s = self.gm[k] * self.masses[l] / (r2 * r2.sqrt());
+                let s = over_r_cubed(self.gm[k] * self.masses[l], r2);
                 for c in 0..d {
                     let x = s * (q[k * d + c] - q[l * d + c]);
                     if l < self.active {

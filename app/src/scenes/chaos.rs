@@ -15,6 +15,7 @@ use stormer::verify::problems::Pendulum as PendulumTwin;
 use stormer::verify::Dual64;
 use stormer::{Error, Method, Problem, SecondOrder, State};
 
+use super::quadratic_norm::QuadraticNorm;
 use super::{ChargedScene, Harmonic, HenonHeiles, Pendulum};
 
 /// The fixed steps the indicators follow.
@@ -319,13 +320,21 @@ pub(crate) fn kepler_split(
     let delta = bodies_variation(bodies.masses(), bodies.dim());
     let seeded = DVector::from_iterator(scene.len(), scene.iter().zip(&delta).map(|(&y, &d)| Dual64::new(y, d)));
     let delta0: Vec<f64> = twin.from_scene(&seeded).iter().map(|x| x.eps).collect();
-    // the change of coordinates is linear: made on the dual parts alone, on f64
-    let (split, inverse, dim) = (model.clone(), inverse_masses(bodies), bodies.dim());
-    let measure = Measure::new(move |_: &KeplerSplit<Dual64, DVector<Dual64>>, y: &DVector<Dual64>| {
-        with_dual_parts(y.as_slice(), |delta| {
-            split.split_to_scene(delta);
-            scene_measure(&inverse, dim, delta)
+    // the change of coordinates is linear: the scene's norm of the dual parts as a
+    // quadratic form in them, read in place
+    let (n, dim) = (y0.len(), bodies.dim());
+    let weights: Vec<f64> = (0..n)
+        .map(|i| {
+            if i < n / 2 {
+                1.0
+            } else {
+                bodies.masses()[(i - n / 2) / dim].recip()
+            }
         })
+        .collect();
+    let norm = QuadraticNorm::new(n, |x| model.split_to_scene(x), &weights);
+    let measure = Measure::new(move |_: &KeplerSplit<Dual64, DVector<Dual64>>, y: &DVector<Dual64>| {
+        norm.of(y.as_slice(), |y| y.eps)
     });
     follow(
         &twin,

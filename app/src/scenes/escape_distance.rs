@@ -37,6 +37,12 @@ pub fn stop<S: Scene>(distance: f64) -> Stop<S> {
     Stop {
         event: "escape",
         g: |model, _, y| farthest_in(model, y).map_or(0.0, |(_, r)| -r),
+        // the bound's rounding is a few units of the last place: a margin far above it
+        g_at_least: Some(|model, y| {
+            model
+                .distance_bound(y)
+                .map_or(f64::NEG_INFINITY, |r| -r * (1.0 + 1e-12))
+        }),
         level: -distance,
         report: |model, t, y| match escaped(model, y) {
             Some((name, r)) => format!(

@@ -236,6 +236,7 @@ impl Scene for SpinningBall {
         Some(Stop {
             event: "landing",
             g: |_, _, y| y[1],
+            g_at_least: None,
             level: 0.0,
             report: |_, t, y| format!("the ball lands at t = {t:.9} s, x = {:.9} m", y[0]),
         })

@@ -52,6 +52,20 @@ impl Scene for SplitBodies {
         self.positions_to_scene(&y.as_slice()[..q.len()], q);
     }
 
+    /// In Jacobi and in democratic heliocentric coordinates alike, every body's offset
+    /// from the centre of mass is a sum of the coordinates of the bodies but the first
+    /// (the centre of mass) with coefficients between -1 and 1 (`m_k / eta_k` and `1 -
+    /// m_k / eta_k`; `m_k / M` and `1 - m_k / M`): the sum of their lengths bounds it.
+    fn distance_bound(&self, y: &DVector<f64>) -> Option<f64> {
+        let (d, n) = (self.bodies().dim(), self.bodies().masses().len());
+        let q = &y.as_slice()[d..n * d];
+        Some(
+            q.chunks_exact(d)
+                .map(|q| q.iter().map(|x| x * x).sum::<f64>().sqrt())
+                .sum(),
+        )
+    }
+
     super::chaos::chaos_twin!(kepler_split);
 
     fn bodies(&self) -> Option<&NBody<f64, DVector<f64>>> {

@@ -60,6 +60,7 @@ mod orbit_entry;
 mod particle_list;
 mod pendulum;
 mod perturbed_central_force_file;
+mod quadratic_norm;
 mod relativistic_file;
 mod stack_buffer;
 mod three_body_outcome;
@@ -160,6 +161,13 @@ pub trait Scene: Problem<Scalar = f64> + Sized + 'static {
         q.copy_from_slice(&stormer::State::as_slice(self.scene_state(y).as_ref())[..q.len()]);
     }
 
+    /// An upper bound on every body's distance from the centre of mass of the bodies in
+    /// the state `y`, cheaper than finding the farthest (an escape is checked at every
+    /// step); `None` where the model knows none.
+    fn distance_bound(&self, _y: &Self::State) -> Option<f64> {
+        None
+    }
+
     /// The stepper of `method` on this model: a catalog method's stepper built from its
     /// data ([`Method::stepper_for`]). The models whose runs users time (the pendulum and
     /// the n-body runs, plain and split) dispatch to the generated steppers in release
@@ -240,6 +248,10 @@ pub struct Stop<S: Scene> {
     pub event: &'static str,
     /// The event function: the run stops where `g(model, t, y)` crosses `level`.
     pub g: fn(&S, f64, &S::State) -> f64,
+    /// A lower bound on `g`, cheaper than `g` (`None`: none known): where it is above
+    /// `level`, so is `g`, and an ensemble member's watch, which asks at every step,
+    /// skips `g` (cli/study/one_run.rs).
+    pub g_at_least: Option<fn(&S, &S::State) -> f64>,
     /// The value of `g` where the run stops (0 for a landing; minus the escape distance).
     pub level: f64,
     /// The summary's sentence about the state where the run stopped ("the ball lands at

@@ -96,6 +96,11 @@ impl<'s, S: Scene> OneRun<'s, S> {
         }
         (seen.t, seen.steps, seen.evaluations) = (w.t, seen.steps + 1, w.evaluations);
         if let Some((stop, g0)) = &self.stop {
+            let surely_above = |at_least: fn(&S, &S::State) -> f64| at_least(&self.setup.model, &seen.y) > stop.level;
+            if *g0 > 0.0 && stop.g_at_least.is_some_and(surely_above) {
+                // g is above the level, as at the start: not met
+                return self.recorded_after_step(seen);
+            }
             let g = (stop.g)(&self.setup.model, w.t, &seen.y) - stop.level;
             // the driver locates a crossing where the sign at the ends of a step differs
             // (src/driver/event.rs); a zero or a NaN is left to it too
@@ -104,6 +109,11 @@ impl<'s, S: Scene> OneRun<'s, S> {
                 return false;
             }
         }
+        self.recorded_after_step(seen)
+    }
+
+    /// Records the step's state every `every` steps; true (the run goes on).
+    fn recorded_after_step(&self, seen: &mut Seen<S>) -> bool {
         seen.recorded = seen.steps % self.every == 0;
         if seen.recorded {
             record(self.setup, seen);

@@ -1,0 +1,321 @@
+//! The Kepler flows of up to four problems on dual numbers ([`Dual64`]), solved together
+//! in lanes: the drift of a planetary system carrying a variation (the tangent map of the
+//! Wisdom-Holman step, `crate::chaos`) at little more than the cost of its values.
+//!
+//! The roots come from the lanes' sequences on the values ([`KeplerLanes::iterates`]); the
+//! derivative of the flow comes from one Newton correction on dual numbers from the last
+//! iterate (that of the implicit function, whatever the iterates carried), made here
+//! four problems at a time: the value and the dual part of every quantity each in a lane
+//! register. The operations are those of [`LagrangeCoefficients::near_root`](super::LagrangeCoefficients::near_root) on
+//! `Dual64` (num-dual's product, quotient and root rules, the Stiefel functions' dual
+//! parts by the chain rule), with the Stumpff functions summed by Estrin's scheme instead
+//! of Horner's: the same flows to round-off.
+
+use num_dual::Dual64;
+
+use super::lanes::{dispatch, series_long, Lane, LaneTask};
+use super::universal::{STUMPFF_C4, STUMPFF_C5};
+use super::{KeplerLanes, LANES};
+use crate::magnetic::{STUMPFF_C2, STUMPFF_C3};
+
+/// A dual number in lanes: the values in one lane register, the dual parts in another.
+#[derive(Clone, Copy)]
+struct Dual<V> {
+    re: V,
+    eps: V,
+}
+
+impl<V: Lane> Dual<V> {
+    /// `x` with no dual part, in lanes of the kind of `like`.
+    #[inline(always)]
+    fn constant(like: V, x: V) -> Self {
+        Dual {
+            re: x,
+            eps: like.splat(0.0),
+        }
+    }
+
+    /// `value + half slope eps`.
+    #[inline(always)]
+    fn with_slope(value: V, half: V, slope: V) -> Self {
+        Dual {
+            re: value,
+            eps: half * slope,
+        }
+    }
+
+    /// num-dual's root rule: `sqrt(x)`, `eps sqrt(x) / x / 2`.
+    #[inline(always)]
+    fn sqrt(self) -> Self {
+        let f0 = self.re.sqrt();
+        let rec = self.re.splat(1.0) / self.re;
+        Dual {
+            re: f0,
+            eps: self.eps * (f0 * rec).times(0.5),
+        }
+    }
+
+    /// `-x`.
+    #[inline(always)]
+    fn negated(self) -> Self {
+        let zero = self.re.splat(0.0);
+        Dual {
+            re: zero - self.re,
+            eps: zero - self.eps,
+        }
+    }
+}
+
+impl<V: Lane> core::ops::Add for Dual<V> {
+    type Output = Self;
+    #[inline(always)]
+    fn add(self, b: Self) -> Self {
+        Dual {
+            re: self.re + b.re,
+            eps: self.eps + b.eps,
+        }
+    }
+}
+
+impl<V: Lane> core::ops::Sub for Dual<V> {
+    type Output = Self;
+    #[inline(always)]
+    fn sub(self, b: Self) -> Self {
+        Dual {
+            re: self.re - b.re,
+            eps: self.eps - b.eps,
+        }
+    }
+}
+
+/// num-dual's product rule.
+impl<V: Lane> core::ops::Mul for Dual<V> {
+    type Output = Self;
+    #[inline(always)]
+    fn mul(self, b: Self) -> Self {
+        Dual {
+            re: self.re * b.re,
+            eps: self.eps * b.re + b.eps * self.re,
+        }
+    }
+}
+
+/// num-dual's quotient rule (a product by the reciprocal).
+impl<V: Lane> core::ops::Div for Dual<V> {
+    type Output = Self;
+    #[inline(always)]
+    fn div(self, b: Self) -> Self {
+        let inv = b.re.splat(1.0) / b.re;
+        Dual {
+            re: self.re * inv,
+            eps: (self.eps * b.re - b.eps * self.re) * inv * inv,
+        }
+    }
+}
+
+/// `a . b` over three components.
+#[inline(always)]
+fn dot<V: Lane>(a: &[Dual<V>; 3], b: &[Dual<V>; 3]) -> Dual<V> {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+/// The flows `(dq, dp)` of the Kepler problems `(mu, mass)` for `tau` from `(q, p)`, the
+/// universal anomaly's last iterate `s` one Newton correction from the root.
+#[inline(always)]
+#[allow(clippy::many_single_char_names)]
+fn corrected_flows<V: Lane>(
+    [mu, mass, tau]: [Dual<V>; 3],
+    q: &[Dual<V>; 3],
+    p: &[Dual<V>; 3],
+    s: V,
+) -> ([Dual<V>; 3], [Dual<V>; 3]) {
+    let one = s.splat(1.0);
+    let v = [p[0] / mass, p[1] / mass, p[2] / mass];
+    let (r0_2, v2, eta0) = (dot(q, q), dot(&v, &v), dot(q, &v));
+    let r0 = r0_2.sqrt();
+    let beta = Dual::constant(one, one.splat(2.0)) * mu / r0 - v2;
+    let zeta0 = mu - beta * r0;
+    // the Stiefel functions at s: values by the series, dual parts by the chain rule
+    // (dG_k = s^(k+2) c_k'(z) dbeta / 2, c_k' = (k c_(k+2) - c_(k+1)) / 2)
+    let s2 = s * s;
+    let z = beta.re * s2;
+    let (z2, z4) = (z * z, z * z * (z * z));
+    let z8 = z4 * z4;
+    // no closures here: a call would not be inlined into the AVX2 function
+    let (c2, c3) = (
+        series_long(&STUMPFF_C2, z, z2, z4, z8),
+        series_long(&STUMPFF_C3, z, z2, z4, z8),
+    );
+    let (c4, c5) = (
+        series_long(&STUMPFF_C4, z, z2, z4, z8),
+        series_long(&STUMPFF_C5, z, z2, z4, z8),
+    );
+    let (c0, c1) = (one - z * c2, one - z * c3);
+    let half = beta.eps.times(0.5);
+    let s4 = s2 * s2;
+    let g0 = Dual::with_slope(c0, half, s.splat(0.0) - c1 * s2);
+    let g1 = Dual::with_slope(s * c1, half, (c3 - c2) * s2 * s);
+    let g2 = Dual::with_slope(s2 * c2, half, (c4.times(2.0) - c3) * s4);
+    let g3 = Dual::with_slope(s2 * s * c3, half, (c5.times(3.0) - c4) * s4 * s);
+    // the Newton correction on dual numbers, to first order
+    let s = Dual::constant(one, s);
+    let residual = r0 * s + eta0 * g2 + zeta0 * g3 - tau;
+    let r = r0 + eta0 * g1 + zeta0 * g2;
+    let ds = residual.negated() / r;
+    let (g1, g2, g3) = (g1 + ds * g0, g2 + ds * g1, g3 + ds * g2);
+    let r = r0 + eta0 * g1 + zeta0 * g2;
+    let minus_mu = mu.negated();
+    let (f_minus_one, g_coef) = (minus_mu * g2 / r0, tau - mu * g3);
+    let (f_dot, g_dot_minus_one) = (minus_mu * g1 / (r * r0), minus_mu * g2 / r);
+    let (mut dq, mut dp) = (*q, *q);
+    for c in 0..3 {
+        dq[c] = f_minus_one * q[c] + g_coef * v[c];
+        dp[c] = mass * (f_dot * q[c] + g_dot_minus_one * v[c]);
+    }
+    (dq, dp)
+}
+
+/// The flows on dual numbers of [`KeplerLanes::solve_dual`], `[c][k]`, and which lanes
+/// they hold (the others: unspecified).
+#[derive(Clone, Copy, Debug)]
+pub struct DualLaneFlows {
+    /// What the flow adds to the positions.
+    pub dq: [[Dual64; LANES]; 3],
+    /// What the flow adds to the momenta.
+    pub dp: [[Dual64; LANES]; 3],
+    /// The lanes the sequences solved.
+    pub solved: [bool; LANES],
+}
+
+impl Default for DualLaneFlows {
+    /// Zeros, no lane solved.
+    fn default() -> Self {
+        let zeros = [[Dual64::from(0.0); LANES]; 3];
+        DualLaneFlows {
+            dq: zeros,
+            dp: zeros,
+            solved: [false; LANES],
+        }
+    }
+}
+
+/// [`corrected_flows`] on the parts by lane: `[i][j]` for the positions (`i` = 0 to 2),
+/// the momenta (3 to 5), `mu`, the mass and `tau` (6 to 8) of lane `j`.
+/// The flows go to `out` (by reference: the arrays are not copied on the way).
+struct Correct<'a> {
+    re: &'a [[f64; LANES]; 9],
+    eps: &'a [[f64; LANES]; 9],
+    s: [f64; LANES],
+    out: &'a mut DualLaneFlows,
+}
+
+impl LaneTask for Correct<'_> {
+    type Output = ();
+
+    #[inline(always)]
+    fn run<V: Lane>(self, lane: impl Fn([f64; LANES]) -> V) -> Self::Output {
+        let mut duals = [Dual::constant(lane(self.s), lane(self.s)); 9];
+        for i in 0..9 {
+            duals[i] = Dual {
+                re: lane(self.re[i]),
+                eps: lane(self.eps[i]),
+            };
+        }
+        let [q0, q1, q2, p0, p1, p2, mu, mass, tau] = duals;
+        let (dq, dp) = corrected_flows([mu, mass, tau], &[q0, q1, q2], &[p0, p1, p2], lane(self.s));
+        for c in 0..3 {
+            let (q_re, q_eps, p_re, p_eps) = (dq[c].re.array(), dq[c].eps.array(), dp[c].re.array(), dp[c].eps.array());
+            for j in 0..LANES {
+                self.out.dq[c][j] = Dual64::new(q_re[j], q_eps[j]);
+                self.out.dp[c][j] = Dual64::new(p_re[j], p_eps[j]);
+            }
+        }
+    }
+}
+
+impl KeplerLanes {
+    /// The flows of the first `count` problems on dual numbers, for time `tau` from the
+    /// states read by `load(c, j)` (component `c` of the position and the momentum of lane
+    /// `j`, as [`KeplerLanes::solve_with`] reads them), the problems' gravitational
+    /// parameters `mu` and masses `mass` on dual numbers (their values this
+    /// `KeplerLanes`'s, their dual parts those of a derivative with respect to them): the
+    /// roots from [`KeplerLanes::iterates`], the correction on dual numbers in lanes. A lane
+    /// the sequences do not solve is marked unsolved, for the caller's scalar solve
+    /// ([`LagrangeCoefficients::new`](super::LagrangeCoefficients::new) on dual numbers).
+    #[inline(always)]
+    pub fn solve_dual(
+        &self,
+        tau: Dual64,
+        [mu, mass]: [[Dual64; LANES]; 2],
+        count: usize,
+        load: impl Fn(usize, usize) -> (Dual64, Dual64),
+        flows: &mut DualLaneFlows,
+    ) {
+        // the states read once, by part
+        let (mut re, mut eps) = ([[0.0; LANES]; 9], [[0.0; LANES]; 9]);
+        for j in 0..LANES {
+            for c in 0..3 {
+                let (q, p) = load(c, j);
+                (re[c][j], eps[c][j], re[3 + c][j], eps[3 + c][j]) = (q.re, q.eps, p.re, p.eps);
+            }
+            for (i, x) in [mu[j], mass[j], tau].into_iter().enumerate() {
+                (re[6 + i][j], eps[6 + i][j]) = (x.re, x.eps);
+            }
+        }
+        let iterates = self.iterates(tau.re, count, |c, j| (re[c][j], re[3 + c][j]));
+        dispatch(Correct {
+            re: &re,
+            eps: &eps,
+            // an unsolved lane is corrected from 0: finite, never read
+            s: iterates.map(|s| s.unwrap_or(0.0)),
+            out: &mut *flows,
+        });
+        flows.solved = iterates.map(|s| s.is_some());
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::kepler::LagrangeCoefficients;
+
+    /// The flows of [`KeplerLanes::solve_dual`] are those of the scalar correction on dual
+    /// numbers ([`LagrangeCoefficients::near_root`](super::LagrangeCoefficients::near_root)) to round-off, values and dual parts,
+    /// for variations of the states and of `mu`.
+    #[test]
+    fn the_lanes_on_dual_numbers_are_the_scalar_correction_to_round_off() {
+        let lanes = KeplerLanes {
+            mu: [1.0, 1.0, 0.5, 2.0],
+            mass: [1.0, 1e-3, 1.0, 3e-4],
+        };
+        let q = [[1.0, 0.0, 0.0], [0.0, 2.0, 0.1], [1.0, 1.0, 0.0], [0.3, 0.0, 0.9]];
+        let v = [[0.0, 1.0, 0.1], [-0.7, 0.0, 0.0], [-0.5, 0.5, 0.2], [0.0, 1.2, 0.0]];
+        let dual = |x: f64, k: usize, c: usize| Dual64::new(x, 0.1 * (k as f64 + 1.0) - 0.03 * c as f64);
+        let mu = core::array::from_fn(|k| Dual64::new(lanes.mu[k], 0.01 * k as f64));
+        let mass = lanes.mass.map(Dual64::from);
+        for tau in [0.05, 0.4, -0.3] {
+            let tau = Dual64::from(tau);
+            let load = |c: usize, j: usize| (dual(q[j][c], j, c), dual(v[j][c], j, c + 3) * mass[j]);
+            let mut flows = DualLaneFlows::default();
+            lanes.solve_dual(tau, [mu, mass], 4, load, &mut flows);
+            assert_eq!(flows.solved, [true; 4], "tau {}", tau.re);
+            for k in 0..4 {
+                let qk: [Dual64; 3] = core::array::from_fn(|c| load(c, k).0);
+                let vk: [Dual64; 3] = core::array::from_fn(|c| load(c, k).1 / mass[k]);
+                let s = lanes.iterates(tau.re, 4, |c, j| (load(c, j).0.re, load(c, j).1.re))[k].unwrap();
+                let c = LagrangeCoefficients::near_root(mu[k], tau, &qk, &vk, s);
+                for i in 0..3 {
+                    let dq = c.f_minus_one * qk[i] + c.g * vk[i];
+                    let dp = mass[k] * (c.f_dot * qk[i] + c.g_dot_minus_one * vk[i]);
+                    for (lane, scalar) in [(flows.dq[i][k], dq), (flows.dp[i][k], dp)] {
+                        let close = |a: f64, b: f64| (a - b).abs() <= 1e-14 * (1.0 + b.abs());
+                        assert!(
+                            close(lane.re, scalar.re) && close(lane.eps, scalar.eps),
+                            "{lane} {scalar}"
+                        );
+                    }
+                }
+            }
+        }
+    }
+}
