@@ -175,45 +175,21 @@ fn corrected_flows<V: Lane>(
     (dq, dp)
 }
 
-/// The flows on dual numbers of [`KeplerLanes::solve_dual`], `[c][k]`, and which lanes
-/// they hold (the others: unspecified).
-#[derive(Clone, Copy, Debug)]
-pub struct DualLaneFlows {
-    /// What the flow adds to the positions.
-    pub dq: [[Dual64; LANES]; 3],
-    /// What the flow adds to the momenta.
-    pub dp: [[Dual64; LANES]; 3],
-    /// The lanes the sequences solved.
-    pub solved: [bool; LANES],
-}
-
-impl Default for DualLaneFlows {
-    /// Zeros, no lane solved.
-    fn default() -> Self {
-        let zeros = [[Dual64::from(0.0); LANES]; 3];
-        DualLaneFlows {
-            dq: zeros,
-            dp: zeros,
-            solved: [false; LANES],
-        }
-    }
-}
-
 /// [`corrected_flows`] on the parts by lane: `[i][j]` for the positions (`i` = 0 to 2),
 /// the momenta (3 to 5), `mu`, the mass and `tau` (6 to 8) of lane `j`.
-/// The flows go to `out` (by reference: the arrays are not copied on the way).
-struct Correct<'a> {
+/// The flows go to `store(c, j, dq, dp)` (no array of them is built and copied).
+struct Correct<'a, F> {
     re: &'a [[f64; LANES]; 9],
     eps: &'a [[f64; LANES]; 9],
     s: [f64; LANES],
-    out: &'a mut DualLaneFlows,
+    store: F,
 }
 
-impl LaneTask for Correct<'_> {
+impl<F: FnMut(usize, usize, Dual64, Dual64)> LaneTask for Correct<'_, F> {
     type Output = ();
 
     #[inline(always)]
-    fn run<V: Lane>(self, lane: impl Fn([f64; LANES]) -> V) -> Self::Output {
+    fn run<V: Lane>(mut self, lane: impl Fn([f64; LANES]) -> V) -> Self::Output {
         let mut duals = [Dual::constant(lane(self.s), lane(self.s)); 9];
         for i in 0..9 {
             duals[i] = Dual {
@@ -226,8 +202,7 @@ impl LaneTask for Correct<'_> {
         for c in 0..3 {
             let (q_re, q_eps, p_re, p_eps) = (dq[c].re.array(), dq[c].eps.array(), dp[c].re.array(), dp[c].eps.array());
             for j in 0..LANES {
-                self.out.dq[c][j] = Dual64::new(q_re[j], q_eps[j]);
-                self.out.dp[c][j] = Dual64::new(p_re[j], p_eps[j]);
+                (self.store)(c, j, Dual64::new(q_re[j], q_eps[j]), Dual64::new(p_re[j], p_eps[j]));
             }
         }
     }
@@ -239,9 +214,11 @@ impl KeplerLanes {
     /// `j`, as [`KeplerLanes::solve_with`] reads them), the problems' gravitational
     /// parameters `mu` and masses `mass` on dual numbers (their values this
     /// `KeplerLanes`'s, their dual parts those of a derivative with respect to them): the
-    /// roots from [`KeplerLanes::iterates`], the correction on dual numbers in lanes. A lane
-    /// the sequences do not solve is marked unsolved, for the caller's scalar solve
-    /// ([`LagrangeCoefficients::new`](super::LagrangeCoefficients::new) on dual numbers).
+    /// roots from [`KeplerLanes::iterates`], the correction on dual numbers in lanes. What
+    /// the flow adds to component `c` of lane `j`'s position and momentum goes to
+    /// `store(c, j, dq, dp)` for every lane; gives the lanes the sequences solved (the
+    /// others' flows are meaningless, for the caller's scalar solve,
+    /// [`LagrangeCoefficients::new`](super::LagrangeCoefficients::new) on dual numbers).
     #[inline(always)]
     pub fn solve_dual(
         &self,
@@ -249,8 +226,8 @@ impl KeplerLanes {
         [mu, mass]: [[Dual64; LANES]; 2],
         count: usize,
         load: impl Fn(usize, usize) -> (Dual64, Dual64),
-        flows: &mut DualLaneFlows,
-    ) {
+        store: impl FnMut(usize, usize, Dual64, Dual64),
+    ) -> [bool; LANES] {
         // the states read once, by part
         let (mut re, mut eps) = ([[0.0; LANES]; 9], [[0.0; LANES]; 9]);
         for j in 0..LANES {
@@ -268,9 +245,9 @@ impl KeplerLanes {
             eps: &eps,
             // an unsolved lane is corrected from 0: finite, never read
             s: iterates.map(|s| s.unwrap_or(0.0)),
-            out: &mut *flows,
+            store,
         });
-        flows.solved = iterates.map(|s| s.is_some());
+        iterates.map(|s| s.is_some())
     }
 }
 
@@ -296,9 +273,11 @@ mod tests {
         for tau in [0.05, 0.4, -0.3] {
             let tau = Dual64::from(tau);
             let load = |c: usize, j: usize| (dual(q[j][c], j, c), dual(v[j][c], j, c + 3) * mass[j]);
-            let mut flows = DualLaneFlows::default();
-            lanes.solve_dual(tau, [mu, mass], 4, load, &mut flows);
-            assert_eq!(flows.solved, [true; 4], "tau {}", tau.re);
+            let zeros = [[Dual64::from(0.0); LANES]; 3];
+            let (mut dq_lanes, mut dp_lanes) = (zeros, zeros);
+            let store = |c: usize, j: usize, dq, dp| (dq_lanes[c][j], dp_lanes[c][j]) = (dq, dp);
+            let solved = lanes.solve_dual(tau, [mu, mass], 4, load, store);
+            assert_eq!(solved, [true; 4], "tau {}", tau.re);
             for k in 0..4 {
                 let qk: [Dual64; 3] = core::array::from_fn(|c| load(c, k).0);
                 let vk: [Dual64; 3] = core::array::from_fn(|c| load(c, k).1 / mass[k]);
@@ -307,7 +286,7 @@ mod tests {
                 for i in 0..3 {
                     let dq = c.f_minus_one * qk[i] + c.g * vk[i];
                     let dp = mass[k] * (c.f_dot * qk[i] + c.g_dot_minus_one * vk[i]);
-                    for (lane, scalar) in [(flows.dq[i][k], dq), (flows.dp[i][k], dp)] {
+                    for (lane, scalar) in [(dq_lanes[i][k], dq), (dp_lanes[i][k], dp)] {
                         let close = |a: f64, b: f64| (a - b).abs() <= 1e-14 * (1.0 + b.abs());
                         assert!(
                             close(lane.re, scalar.re) && close(lane.eps, scalar.eps),

@@ -18,7 +18,6 @@ mod universal;
 pub use drift::KeplerDrift;
 pub use lagrange::LagrangeCoefficients;
 pub use lanes::{KeplerLanes, LaneFlows, LaneStates, LANES};
-pub use lanes_dual::DualLaneFlows;
 pub use stumpff::stumpff;
 
 use crate::Real;

@@ -8,7 +8,7 @@ use super::nbody::NBody;
 use super::nbody_shape::{AnyShape, Shape};
 use crate::flows::{QuadraticKinetic, Splittable};
 use crate::hamiltonian::Hamiltonian;
-use crate::kepler::{DualLaneFlows, KeplerLanes, LagrangeCoefficients, LaneFlows, LaneStates, LANES};
+use crate::kepler::{KeplerLanes, LagrangeCoefficients, LaneFlows, LaneStates, LANES};
 use crate::method::Families;
 #[allow(unused_imports)]
 use crate::real::ops::*;
@@ -324,15 +324,9 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> KeplerSplit<T, S, K> {
         let mut out = [[[T::zero(); LANES]; 3]; 2];
         // on dual numbers, the roots found on the values and the correction made in the
         // lanes; a lane they do not solve, solved alone below
-        let mut solved = [false; LANES];
-        if let Some(flows) = self.dual_chunk(tau, q, p, first, count) {
-            solved = flows.solved;
-            for c in 0..d {
-                for j in (0..count).filter(|&j| solved[j]) {
-                    (out[0][c][j], out[1][c][j]) = (from_dual(flows.dq[c][j]), from_dual(flows.dp[c][j]));
-                }
-            }
-        }
+        let solved = self
+            .dual_chunk(tau, q, p, first, count, &mut out)
+            .unwrap_or([false; LANES]);
         for j in (0..count).filter(|&j| !solved[j]) {
             let (k, (mu, mass)) = (first + j, self.kepler[first + j]);
             let (qk, pk) = (&q[k * d..(k + 1) * d], &p[k * d..(k + 1) * d]);
@@ -349,10 +343,19 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> KeplerSplit<T, S, K> {
         out
     }
 
-    /// [`KeplerSplit::kepler_chunk`] on [`Dual64`] ([`KeplerLanes::solve_dual`]); `None`
-    /// for every other scalar (decided when the code is compiled).
+    /// [`KeplerSplit::kepler_chunk`] on [`Dual64`] ([`KeplerLanes::solve_dual`]) into
+    /// `out`: the lanes it solved; `None` for every other scalar (decided when the code is
+    /// compiled).
     #[inline(always)]
-    fn dual_chunk(&self, tau: T, q: &[T], p: &[T], first: usize, count: usize) -> Option<DualLaneFlows> {
+    fn dual_chunk(
+        &self,
+        tau: T,
+        q: &[T],
+        p: &[T],
+        first: usize,
+        count: usize,
+        out: &mut [[[T; LANES]; 3]; 2],
+    ) -> Option<[bool; LANES]> {
         if core::any::TypeId::of::<T>() != core::any::TypeId::of::<Dual64>() {
             return None;
         }
@@ -372,9 +375,12 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> KeplerSplit<T, S, K> {
             let dual = |x: T| to_dual(x).unwrap_or(Dual64::from(0.0));
             (dual(q[i]), dual(p[i]))
         };
-        let mut flows = DualLaneFlows::default();
-        self.lanes[(first - 1) / LANES].solve_dual(to_dual(tau)?, constants, count, load, &mut flows);
-        Some(flows)
+        let store = |c: usize, j: usize, dq: Dual64, dp: Dual64| {
+            if c < d && j < count {
+                (out[0][c][j], out[1][c][j]) = (from_dual(dq), from_dual(dp));
+            }
+        };
+        Some(self.lanes[(first - 1) / LANES].solve_dual(to_dual(tau)?, constants, count, load, store))
     }
 
     /// Every body's Kepler motion (the first body's entry, the centre of mass: free

@@ -23,6 +23,18 @@ const ZERO: Parts = Parts {
     eps: [0.0; 4],
 };
 
+/// `a - b`, component by component (computed twice rather than kept: the arrays of every
+/// pair's would be cleared at every call).
+#[inline(always)]
+fn separation(a: &Parts, b: &Parts) -> Parts {
+    let mut d = ZERO;
+    for c in 0..4 {
+        d.re[c] = a.re[c] - b.re[c];
+        d.eps[c] = a.eps[c] - b.eps[c];
+    }
+    d
+}
+
 /// `x` as the [`Dual64`] it is (`None` for another scalar; decided at compile time).
 #[inline(always)]
 fn dual<T: Real>(x: &T) -> Option<Dual64> {
@@ -73,18 +85,15 @@ fn forces<const D: usize, const N: usize>(gms: &[Dual64; N], ms: &[Dual64; N], q
     if pairs > MAX_PAIRS {
         return None;
     }
-    let (mut d, mut r2, mut r2_eps) = ([ZERO; MAX_PAIRS], [1.0; MAX_PAIRS], [0.0; MAX_PAIRS]);
+    let (mut r2, mut r2_eps) = ([1.0; MAX_PAIRS], [0.0; MAX_PAIRS]);
     let mut pair = 0;
     for k in 0..N {
         for l in k + 1..N {
-            for c in 0..4 {
-                d[pair].re[c] = qs[k].re[c] - qs[l].re[c];
-                d[pair].eps[c] = qs[k].eps[c] - qs[l].eps[c];
-            }
+            let d = separation(&qs[k], &qs[l]);
             let (mut sum, mut sum_eps) = (0.0, 0.0);
             for c in 0..D {
-                sum += d[pair].re[c] * d[pair].re[c];
-                sum_eps += d[pair].re[c] * d[pair].eps[c];
+                sum += d.re[c] * d.re[c];
+                sum_eps += d.re[c] * d.eps[c];
             }
             (r2[pair], r2_eps[pair]) = (sum, 2.0 * sum_eps);
             pair += 1;
@@ -105,7 +114,7 @@ fn forces<const D: usize, const N: usize>(gms: &[Dual64; N], ms: &[Dual64; N], q
             // gm_k m_l on dual numbers, then the factor over r^3 (`over_r_cubed`)
             let num = gms[k].re * ms[l].re;
             let num_eps = gms[k].eps * ms[l].re + ms[l].eps * gms[k].re;
-            let (inverse, d) = (inverse[pair], d[pair]);
+            let (inverse, d) = (inverse[pair], separation(&qs[k], &qs[l]));
             let s = num * inverse;
             let s_eps = inverse * (num_eps - 1.5 * num * r2_eps[pair] * (root[pair] * inverse));
             pair += 1;
