@@ -123,6 +123,21 @@ pub(crate) mod ops {
 
 #[cfg(test)]
 mod tests {
+    #[test]
+    #[allow(clippy::float_cmp)] // exact values
+    fn the_inverse_cube_is_the_quotient_as_written_on_f64_and_to_round_off_on_dual_numbers() {
+        for (num, r2) in [(3.0f64, 2.0f64), (1e-3, 25.0), (-7.5, 0.01)] {
+            assert_eq!(over_r_cubed(num, r2).to_bits(), (num / (r2 * r2.sqrt())).to_bits());
+            let (num, r2) = (Dual64::new(num, 0.3), Dual64::new(r2, -1.7));
+            let (fast, rules) = (over_r_cubed(num, r2), num / (r2 * ComplexField::sqrt(r2)));
+            assert_eq!(fast.re.to_bits(), rules.re.to_bits());
+            assert!(
+                (fast.eps - rules.eps).abs() <= 1e-14 * rules.eps.abs(),
+                "{fast} {rules}"
+            );
+        }
+    }
+
     use super::*;
     use nalgebra::ComplexField;
     use num_dual::Dual64;

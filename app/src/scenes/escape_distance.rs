@@ -87,4 +87,23 @@ mod tests {
         assert_eq!(farthest(&bodies, &y), (1, 3.0));
         assert_eq!(farthest(&bodies, &[0.0, f64::NAN, 0.0, 0.0]).0, 1);
     }
+
+    #[test]
+    fn the_split_bound_is_never_below_the_farthest_body_in_either_coordinates() {
+        use crate::scenes::{load, AnyScene};
+        use stormer::models::{KeplerCoordinates, SplitMix64};
+        for coordinates in [KeplerCoordinates::Jacobi, KeplerCoordinates::DemocraticHeliocentric] {
+            let AnyScene::KeplerSplit(setup) = load("outer-solar-system").unwrap().with_split(coordinates).unwrap()
+            else {
+                panic!("not split");
+            };
+            let mut draws = SplitMix64::new(11);
+            for scale in [0.1, 1.0, 30.0] {
+                let y = setup.y0.map(|x| x + scale * draws.next().unwrap());
+                let (_, r) = farthest_in(&setup.model, &y).unwrap();
+                let bound = setup.model.distance_bound(&y).unwrap();
+                assert!(bound >= r && bound <= 5.0 * r, "{coordinates:?} {scale}: {bound} {r}");
+            }
+        }
+    }
 }
