@@ -247,13 +247,11 @@ const SHORT: bool = false;
 const LONG: bool = true;
 
 /// What a lanes' sequence gives: the increments `(dq, dp)` of the positions and momenta,
-/// which lanes it solved, and in each the last iterate `s` of the universal anomaly (one
-/// Newton correction from the root: where a solve on dual numbers takes its derivative).
+/// and which lanes it solved.
 struct Solved<V> {
     dq: [V; 3],
     dp: [V; 3],
     solved: [bool; LANES],
-    iterate: [f64; LANES],
 }
 
 /// The lanes' sequence ([`KeplerLanes`]), short or [`LONG`].
@@ -324,12 +322,7 @@ fn solve<V: Lane, const L: bool>(mu: V, mass: V, tau: f64, q: &[V; 3], p: &[V; 3
         // r0 = 0 makes the steps NaN; a non-finite input, the size
         solved[k] = (size[k] + tau).is_finite() && within[k] && ds[k].abs() <= CONVERGED * iterate[k].abs();
     }
-    Solved {
-        dq,
-        dp,
-        solved,
-        iterate,
-    }
+    Solved { dq, dp, solved }
 }
 
 /// The larger `|z|` lane by lane (NaN stays: it compares false).
@@ -384,7 +377,7 @@ impl<W: LaneTask> pulp::NullaryFnOnce for Avx2Task<W> {
 }
 
 /// [`solve`] from states read by `load(c, j)` (component `c` of lane `j`), into the lanes
-/// of `out` it is to `take` and solves; gives which it solved and their last iterates.
+/// of `out` it is to `take` and solves; gives which it solved.
 struct Solve<'a, F, const L: bool> {
     constants: &'a KeplerLanes,
     tau: f64,
@@ -394,7 +387,7 @@ struct Solve<'a, F, const L: bool> {
 }
 
 impl<F: Fn(usize, usize) -> (f64, f64), const L: bool> LaneTask for Solve<'_, F, L> {
-    type Output = ([bool; LANES], [f64; LANES]);
+    type Output = [bool; LANES];
 
     #[inline(always)]
     fn run<V: Lane>(self, lane: impl Fn([f64; LANES]) -> V) -> Self::Output {
@@ -410,7 +403,7 @@ impl<F: Fn(usize, usize) -> (f64, f64), const L: bool> LaneTask for Solve<'_, F,
                 }
             }
         }
-        (solved.solved, solved.iterate)
+        solved.solved
     }
 }
 
@@ -544,7 +537,7 @@ impl KeplerLanes {
     /// needs it, wherever the states are).
     #[inline(always)]
     pub fn solve_with(&self, tau: f64, count: usize, load: impl Fn(usize, usize) -> (f64, f64), flows: &mut LaneFlows) {
-        let (solved, _) = self.in_lanes(tau, count, &load, flows);
+        let solved = self.in_lanes(tau, count, &load, flows);
         for k in 0..count.min(LANES) {
             if !solved[k] {
                 let q: [f64; 3] = core::array::from_fn(|c| load(c, k).0);
@@ -554,26 +547,9 @@ impl KeplerLanes {
         }
     }
 
-    /// The last iterate of the universal anomaly in each of the first `count` lanes the
-    /// sequences solve (`None` in the others): one Newton correction from the root, where
-    /// [`LagrangeCoefficients::near_root`] takes the derivative of the flow on dual numbers.
-    #[inline(always)]
-    pub fn iterates(&self, tau: f64, count: usize, load: impl Fn(usize, usize) -> (f64, f64)) -> [Option<f64>; LANES] {
-        let mut flows = LaneFlows {
-            dq: [[0.0; LANES]; 3],
-            dp: [[0.0; LANES]; 3],
-        };
-        let (solved, iterate) = self.in_lanes(tau, count, &load, &mut flows);
-        let mut out = [None; LANES];
-        for k in 0..count.min(LANES) {
-            out[k] = solved[k].then_some(iterate[k]);
-        }
-        out
-    }
-
     /// The short sequence in every lane, then the long one in those of the first `count`
     /// it left unsolved, in AVX2 registers when the CPU has them: which lanes are solved,
-    /// their flows in `out` and their last iterates.
+    /// their flows in `out`.
     #[inline(always)]
     fn in_lanes<F: Fn(usize, usize) -> (f64, f64)>(
         &self,
@@ -581,8 +557,8 @@ impl KeplerLanes {
         count: usize,
         load: &F,
         out: &mut LaneFlows,
-    ) -> ([bool; LANES], [f64; LANES]) {
-        let (mut solved, mut iterate) = dispatch(Solve::<F, SHORT> {
+    ) -> [bool; LANES] {
+        let mut solved = dispatch(Solve::<F, SHORT> {
             constants: self,
             tau,
             load,
@@ -590,10 +566,10 @@ impl KeplerLanes {
             out: &mut *out,
         });
         if (0..count.min(LANES)).all(|k| solved[k]) {
-            return (solved, iterate);
+            return solved;
         }
         let take = solved.map(|s| !s);
-        let (long, long_iterate) = dispatch(Solve::<F, LONG> {
+        let long = dispatch(Solve::<F, LONG> {
             constants: self,
             tau,
             load,
@@ -601,11 +577,9 @@ impl KeplerLanes {
             out,
         });
         for k in 0..LANES {
-            if take[k] && long[k] {
-                (solved[k], iterate[k]) = (true, long_iterate[k]);
-            }
+            solved[k] |= take[k] && long[k];
         }
-        (solved, iterate)
+        solved
     }
 
     /// The first `count` problems moved along their orbits for time `tau`, in place: `q +

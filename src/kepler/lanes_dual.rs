@@ -2,14 +2,19 @@
 //! in lanes: the drift of a planetary system carrying a variation (the tangent map of the
 //! Wisdom-Holman step, `crate::chaos`) at little more than the cost of its values.
 //!
-//! The roots come from the lanes' sequences on the values ([`KeplerLanes::iterates`]); the
-//! derivative of the flow comes from one Newton correction on dual numbers from the last
-//! iterate (that of the implicit function, whatever the iterates carried), made here
-//! four problems at a time: the value and the dual part of every quantity each in a lane
-//! register. The operations are those of [`LagrangeCoefficients::near_root`](super::LagrangeCoefficients::near_root) on
-//! `Dual64` (num-dual's product, quotient and root rules, the Stiefel functions' dual
-//! parts by the chain rule), with the Stumpff functions summed by Estrin's scheme instead
-//! of Horner's: the same flows to round-off.
+//! Everything happens in one pass over the lanes, the value and the dual part of every
+//! quantity each in a lane register: the root of the universal Kepler equation on the
+//! values alone (the cubic Taylor guess, then Halley steps, two for a step of a radian of
+//! eccentric anomaly, one for a short one), then one Newton correction on dual numbers from
+//! it, which gives the derivative of the flow (that of the implicit function) exactly. The
+//! operations of the correction are those of
+//! the scalar solve's on `Dual64` ([`LagrangeCoefficients::new`](super::LagrangeCoefficients::new))
+//! (num-dual's product, quotient and root rules, the Stiefel functions' dual parts by the
+//! chain rule), with the Stumpff functions summed by Estrin's scheme: the same flows to
+//! round-off. The Halley steps stop when every lane has settled, so a settled lane may take
+//! one more step for another's sake: its flow is then the same to round-off, not bit for
+//! bit (the values of the plain `f64` drift, [`KeplerLanes::advance`], never depend on
+//! the other lanes).
 
 use num_dual::Dual64;
 
@@ -119,26 +124,90 @@ fn dot<V: Lane>(a: &[Dual<V>; 3], b: &[Dual<V>; 3]) -> Dual<V> {
     a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 }
 
-/// The flows `(dq, dp)` of the Kepler problems `(mu, mass)` for `tau` from `(q, p)`, the
-/// universal anomaly's last iterate `s` one Newton correction from the root.
+/// Halley steps on the values stop once the last moved `s` by at most this fraction of
+/// it: the error left is then below its cube, and the correction on dual numbers squares it.
+const HALLEY_SETTLED: f64 = 1e-6;
+
+/// At most this many Halley steps (a step of a radian of eccentric anomaly takes two from
+/// the cubic guess, as in the lanes' long sequence).
+const HALLEY_STEPS: usize = 3;
+
+/// The correction on dual numbers must be at most this fraction of `s` (the lanes'
+/// sequences' own test), and the series are summed at `|beta s^2|` up to 1 (nine terms, a
+/// radian of eccentric anomaly).
+const CONVERGED: f64 = 1e-9;
+const LARGEST_ARGUMENT: f64 = 1.0;
+
+/// The larger `|z|` lane by lane (NaN stays).
+#[inline(always)]
+fn wider(a: [f64; LANES], z: [f64; LANES]) -> [f64; LANES] {
+    let mut out = a;
+    for k in 0..LANES {
+        out[k] = if z[k].abs() > a[k] || z[k].is_nan() {
+            z[k].abs()
+        } else {
+            a[k]
+        };
+    }
+    out
+}
+
+/// The flows `(dq, dp)` of the Kepler problems `(mu, mass)` for `tau` from `(q, p)`, and
+/// the lanes solved to round-off among the first `count`: the root of the universal
+/// Kepler equation found on the values (the cubic Taylor guess, then Halley steps until
+/// every lane has settled), then one Newton correction on dual numbers from it.
 #[inline(always)]
 #[allow(clippy::many_single_char_names)]
-fn corrected_flows<V: Lane>(
+fn dual_flows<V: Lane>(
     [mu, mass, tau]: [Dual<V>; 3],
     q: &[Dual<V>; 3],
     p: &[Dual<V>; 3],
-    s: V,
-) -> ([Dual<V>; 3], [Dual<V>; 3]) {
-    let one = s.splat(1.0);
+    count: usize,
+) -> ([Dual<V>; 3], [Dual<V>; 3], [bool; LANES]) {
+    let one = mu.re.splat(1.0);
     let v = [p[0] / mass, p[1] / mass, p[2] / mass];
     let (r0_2, v2, eta0) = (dot(q, q), dot(&v, &v), dot(q, &v));
     let r0 = r0_2.sqrt();
     let beta = Dual::constant(one, one.splat(2.0)) * mu / r0 - v2;
     let zeta0 = mu - beta * r0;
+    // the root on the values: the third-order Taylor inverse of t(s) about s = 0 (as
+    // `universal::guess`), then Halley steps, s - 2 f r / (2 r^2 - f r')
+    let inv_r0 = one / r0.re;
+    let (u, a) = (tau.re * inv_r0, eta0.re * inv_r0);
+    let cubic = (a * a).times(0.5) - (zeta0.re * inv_r0).times(1.0 / 6.0);
+    let mut s = u * (one - u * (a.times(0.5) - u * cubic));
+    let mut largest = [0.0; LANES];
+    for _ in 0..HALLEY_STEPS {
+        let s2 = s * s;
+        let z = beta.re * s2;
+        let (z2, z4) = (z * z, z * z * (z * z));
+        let z8 = z4 * z4;
+        let (c2, c3) = (
+            series_long(&STUMPFF_C2, z, z2, z4, z8),
+            series_long(&STUMPFF_C3, z, z2, z4, z8),
+        );
+        let (g0, g1, g2, g3) = (one - z * c2, s * (one - z * c3), s2 * c2, s2 * s * c3);
+        let f = (r0.re * s + eta0.re * g2 + zeta0.re * g3) - tau.re;
+        let r = r0.re + eta0.re * g1 + zeta0.re * g2;
+        let r_prime = eta0.re * g0 + zeta0.re * g1;
+        let step = (f * r).times(2.0) / ((r * r).times(2.0) - f * r_prime);
+        s = s - step;
+        largest = wider(largest, z.array());
+        let (step, at) = (step.array(), s.array());
+        let mut settled = true;
+        for k in 0..count.min(LANES) {
+            // a NaN lane is left to the test below
+            settled &= !(step[k].abs() > HALLEY_SETTLED * at[k].abs());
+        }
+        if settled {
+            break;
+        }
+    }
     // the Stiefel functions at s: values by the series, dual parts by the chain rule
     // (dG_k = s^(k+2) c_k'(z) dbeta / 2, c_k' = (k c_(k+2) - c_(k+1)) / 2)
     let s2 = s * s;
     let z = beta.re * s2;
+    let largest = wider(largest, z.array());
     let (z2, z4) = (z * z, z * z * (z * z));
     let z8 = z4 * z4;
     // no closures here: a call would not be inlined into the AVX2 function
@@ -172,25 +241,36 @@ fn corrected_flows<V: Lane>(
         dq[c] = f_minus_one * q[c] + g_coef * v[c];
         dp[c] = mass * (f_dot * q[c] + g_dot_minus_one * v[c]);
     }
-    (dq, dp)
+    let (ds, at, size) = (
+        ds.re.array(),
+        s.re.array(),
+        (r0_2.re + v2.re + eta0.re + mu.re + tau.re).array(),
+    );
+    let mut solved = [false; LANES];
+    for k in 0..count.min(LANES) {
+        // r0 = 0 makes the steps NaN; a non-finite input, the size
+        solved[k] = size[k].is_finite() && largest[k] <= LARGEST_ARGUMENT && ds[k].abs() <= CONVERGED * at[k].abs();
+    }
+    (dq, dp, solved)
 }
 
-/// [`corrected_flows`] on the parts by lane: `[i][j]` for the positions (`i` = 0 to 2),
+/// [`dual_flows`] on the parts by lane: `[i][j]` for the positions (`i` = 0 to 2),
 /// the momenta (3 to 5), `mu`, the mass and `tau` (6 to 8) of lane `j`.
 /// The flows go to `store(c, j, dq, dp)` (no array of them is built and copied).
 struct Correct<'a, F> {
     re: &'a [[f64; LANES]; 9],
     eps: &'a [[f64; LANES]; 9],
-    s: [f64; LANES],
+    count: usize,
     store: F,
 }
 
 impl<F: FnMut(usize, usize, Dual64, Dual64)> LaneTask for Correct<'_, F> {
-    type Output = ();
+    type Output = [bool; LANES];
 
     #[inline(always)]
     fn run<V: Lane>(mut self, lane: impl Fn([f64; LANES]) -> V) -> Self::Output {
-        let mut duals = [Dual::constant(lane(self.s), lane(self.s)); 9];
+        let zero = lane([0.0; LANES]);
+        let mut duals = [Dual::constant(zero, zero); 9];
         for i in 0..9 {
             duals[i] = Dual {
                 re: lane(self.re[i]),
@@ -198,13 +278,14 @@ impl<F: FnMut(usize, usize, Dual64, Dual64)> LaneTask for Correct<'_, F> {
             };
         }
         let [q0, q1, q2, p0, p1, p2, mu, mass, tau] = duals;
-        let (dq, dp) = corrected_flows([mu, mass, tau], &[q0, q1, q2], &[p0, p1, p2], lane(self.s));
+        let (dq, dp, solved) = dual_flows([mu, mass, tau], &[q0, q1, q2], &[p0, p1, p2], self.count);
         for c in 0..3 {
             let (q_re, q_eps, p_re, p_eps) = (dq[c].re.array(), dq[c].eps.array(), dp[c].re.array(), dp[c].eps.array());
             for j in 0..LANES {
                 (self.store)(c, j, Dual64::new(q_re[j], q_eps[j]), Dual64::new(p_re[j], p_eps[j]));
             }
         }
+        solved
     }
 }
 
@@ -214,7 +295,7 @@ impl KeplerLanes {
     /// `j`, as [`KeplerLanes::solve_with`] reads them), the problems' gravitational
     /// parameters `mu` and masses `mass` on dual numbers (their values this
     /// `KeplerLanes`'s, their dual parts those of a derivative with respect to them): the
-    /// roots from [`KeplerLanes::iterates`], the correction on dual numbers in lanes. What
+    /// roots found on the values and the correction on dual numbers, in lanes. What
     /// the flow adds to component `c` of lane `j`'s position and momentum goes to
     /// `store(c, j, dq, dp)` for every lane; gives the lanes the sequences solved (the
     /// others' flows are meaningless, for the caller's scalar solve,
@@ -239,15 +320,12 @@ impl KeplerLanes {
                 (re[6 + i][j], eps[6 + i][j]) = (x.re, x.eps);
             }
         }
-        let iterates = self.iterates(tau.re, count, |c, j| (re[c][j], re[3 + c][j]));
         dispatch(Correct {
             re: &re,
             eps: &eps,
-            // an unsolved lane is corrected from 0: finite, never read
-            s: iterates.map(|s| s.unwrap_or(0.0)),
+            count,
             store,
-        });
-        iterates.map(|s| s.is_some())
+        })
     }
 }
 
@@ -257,7 +335,7 @@ mod tests {
     use crate::kepler::LagrangeCoefficients;
 
     /// The flows of [`KeplerLanes::solve_dual`] are those of the scalar correction on dual
-    /// numbers ([`LagrangeCoefficients::near_root`](super::LagrangeCoefficients::near_root)) to round-off, values and dual parts,
+    /// numbers ([`LagrangeCoefficients::new`](super::LagrangeCoefficients::new)) to round-off, values and dual parts,
     /// for variations of the states and of `mu`.
     #[test]
     fn the_lanes_on_dual_numbers_are_the_scalar_correction_to_round_off() {
@@ -270,19 +348,26 @@ mod tests {
         let dual = |x: f64, k: usize, c: usize| Dual64::new(x, 0.1 * (k as f64 + 1.0) - 0.03 * c as f64);
         let mu = core::array::from_fn(|k| Dual64::new(lanes.mu[k], 0.01 * k as f64));
         let mass = lanes.mass.map(Dual64::from);
-        for tau in [0.05, 0.4, -0.3] {
+        for tau in [0.05, 0.4, -0.3, 1.2, 40.0] {
             let tau = Dual64::from(tau);
             let load = |c: usize, j: usize| (dual(q[j][c], j, c), dual(v[j][c], j, c + 3) * mass[j]);
             let zeros = [[Dual64::from(0.0); LANES]; 3];
             let (mut dq_lanes, mut dp_lanes) = (zeros, zeros);
             let store = |c: usize, j: usize, dq, dp| (dq_lanes[c][j], dp_lanes[c][j]) = (dq, dp);
             let solved = lanes.solve_dual(tau, [mu, mass], 4, load, store);
-            assert_eq!(solved, [true; 4], "tau {}", tau.re);
-            for k in 0..4 {
+            if tau.re.abs() < 1.0 {
+                assert_eq!(solved, [true; 4], "tau {}", tau.re);
+            }
+            if tau.re > 10.0 {
+                // several periods: beyond the lanes, left to the scalar solve
+                assert_eq!(solved, [false; 4]);
+            }
+            for k in (0..4).filter(|&k| solved[k]) {
                 let qk: [Dual64; 3] = core::array::from_fn(|c| load(c, k).0);
                 let vk: [Dual64; 3] = core::array::from_fn(|c| load(c, k).1 / mass[k]);
-                let s = lanes.iterates(tau.re, 4, |c, j| (load(c, j).0.re, load(c, j).1.re))[k].unwrap();
-                let c = LagrangeCoefficients::near_root(mu[k], tau, &qk, &vk, s);
+                // the scalar solve on dual numbers: the root converged on the values, then
+                // the correction on dual numbers
+                let c = LagrangeCoefficients::new(mu[k], tau, &qk, &vk);
                 for i in 0..3 {
                     let dq = c.f_minus_one * qk[i] + c.g * vk[i];
                     let dp = mass[k] * (c.f_dot * qk[i] + c.g_dot_minus_one * vk[i]);

@@ -107,7 +107,7 @@ impl<T: Real> LagrangeCoefficients<T> {
         if let Some(dual) = on_dual_numbers(mu, tau, r0_2, v2, eta0) {
             return dual;
         }
-        Self::from_invariants(mu, tau, (r0_2, v2, eta0), true, |orbit, tau, bracket| {
+        Self::from_invariants(mu, tau, (r0_2, v2, eta0), |orbit, tau, bracket| {
             let (s, at_root) = solve(orbit, tau, bracket);
             if carries_values_only::<T>() {
                 at_root
@@ -117,33 +117,13 @@ impl<T: Real> LagrangeCoefficients<T> {
         })
     }
 
-    /// [`LagrangeCoefficients::new`] from `s`, an iterate of the universal anomaly one
-    /// Newton correction from the root ([`super::KeplerLanes::iterates`] gives them for a
-    /// step of up to a radian of eccentric anomaly): the correction is made here, so on
-    /// dual numbers the coefficients carry the derivative of the flow with no iteration on
-    /// dual numbers at all.
-    #[inline]
-    pub fn near_root(mu: T, tau: T, q: &[T], v: &[T], s: f64) -> Self {
-        let (r0_2, v2, eta0) = (dot(q, q), dot(v, v), dot(q, v));
-        if let Some(dual) = near_root_on_dual_numbers(mu, tau, r0_2, v2, eta0, s) {
-            return dual;
-        }
-        Self::from_invariants(mu, tau, (r0_2, v2, eta0), false, |orbit, tau, _| {
-            corrected(orbit, tau, lit(s))
-        })
-    }
-
     /// The coefficients from `|q|^2`, `|v|^2` and `q.v`, the root of the reduced equation
-    /// found by `root` (given the orbit, the reduced `tau` and the bracket). With `reduce`
-    /// false, `tau` is not reduced modulo the period and the bracket is empty: for a `root`
-    /// that starts from an iterate of the unreduced equation ([`Self::near_root`]; a step
-    /// of at most a radian of eccentric anomaly, which reduction leaves as it is).
+    /// found by `root` (given the orbit, the reduced `tau` and the bracket).
     #[inline(always)]
     fn from_invariants(
         mu: T,
         tau: T,
         (r0_2, v2, eta0): (T, T, T),
-        reduce: bool,
         root: impl FnOnce(&Orbit<T>, T, (T, T)) -> Stiefel<T>,
     ) -> Self {
         let r0 = r0_2.sqrt();
@@ -158,11 +138,7 @@ impl<T: Real> LagrangeCoefficients<T> {
             zeta0: mu - beta * r0,
             beta,
         };
-        let (tau, bracket) = if reduce {
-            reduced(&orbit, mu, tau)
-        } else {
-            (tau, (T::zero(), T::zero()))
-        };
+        let (tau, bracket) = reduced(&orbit, mu, tau);
         let [_, g1, g2, g3] = root(&orbit, tau, bracket).g;
         let r = orbit.r0 + orbit.eta0 * g1 + orbit.zeta0 * g2;
         LagrangeCoefficients {
@@ -186,7 +162,7 @@ fn on_dual_numbers<T: Real>(mu: T, tau: T, r0_2: T, v2: T, eta0: T) -> Option<La
     use core::any::Any;
     let dual = |x: &T| (x as &dyn Any).downcast_ref::<Dual64>().copied();
     let (mu, tau, r0_2, v2, eta0) = (dual(&mu)?, dual(&tau)?, dual(&r0_2)?, dual(&v2)?, dual(&eta0)?);
-    let c = LagrangeCoefficients::from_invariants(mu, tau, (r0_2, v2, eta0), true, |orbit, tau, (lo, hi)| {
+    let c = LagrangeCoefficients::from_invariants(mu, tau, (r0_2, v2, eta0), |orbit, tau, (lo, hi)| {
         let values = Orbit {
             r0: orbit.r0.re,
             eta0: orbit.eta0.re,
@@ -194,25 +170,6 @@ fn on_dual_numbers<T: Real>(mu: T, tau: T, r0_2: T, v2: T, eta0: T) -> Option<La
             beta: orbit.beta.re,
         };
         let (s, _) = solve(&values, tau.re, (lo.re, hi.re));
-        corrected_on_dual_numbers(orbit, tau, s)
-    });
-    back_from_dual(c)
-}
-
-/// [`LagrangeCoefficients::near_root`] on [`Dual64`] (`None` for every other scalar).
-#[inline(always)]
-fn near_root_on_dual_numbers<T: Real>(
-    mu: T,
-    tau: T,
-    r0_2: T,
-    v2: T,
-    eta0: T,
-    s: f64,
-) -> Option<LagrangeCoefficients<T>> {
-    use core::any::Any;
-    let dual = |x: &T| (x as &dyn Any).downcast_ref::<Dual64>().copied();
-    let (mu, tau, r0_2, v2, eta0) = (dual(&mu)?, dual(&tau)?, dual(&r0_2)?, dual(&v2)?, dual(&eta0)?);
-    let c = LagrangeCoefficients::from_invariants(mu, tau, (r0_2, v2, eta0), false, |orbit, tau, _| {
         corrected_on_dual_numbers(orbit, tau, s)
     });
     back_from_dual(c)

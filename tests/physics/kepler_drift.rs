@@ -205,58 +205,83 @@ fn the_drift_in_lanes_agrees_with_the_scalar_drift_to_round_off() {
 }
 
 #[test]
-fn steps_of_up_to_a_radian_are_solved_in_the_lanes_and_give_dual_numbers_the_same_derivative() {
+fn steps_of_up_to_a_radian_are_solved_in_the_lanes_on_dual_numbers_with_the_same_derivative() {
     let lanes = KeplerLanes {
         mu: [1.0; LANES],
         mass: [1.0; LANES],
     };
     // a circular orbit of radius 1 in lane 0 (eccentric anomaly = tau) and an eccentric
-    // one in lane 1; the unused lanes a unit circle
+    // one in lane 1; the unused lanes a unit circle. Seeded along a direction of the
+    // initial state and the parameter together (one that changes the energy: beta's
+    // derivative part 0.4, not 0)
+    let seed = |x: f64, d: f64| Dual64::new(x, d);
     let states = [([1.0, 0.0, 0.0], [0.0, 1.0, 0.0]), ([0.5, 0.1, 0.0], [0.2, 1.6, 0.1])];
-    let load = |c: usize, j: usize| match states.get(j) {
-        Some((q, v)) => (q[c], v[c]),
-        None => ((c == 0) as u8 as f64, (c == 1) as u8 as f64),
+    let directions = [[0.3, -0.2, 0.1], [0.1, 0.4, -0.5]];
+    let state = |j: usize| {
+        let (q, v) = states[j];
+        let q: Vec<Dual64> = q.iter().zip(directions[0]).map(|(&x, d)| seed(x, d)).collect();
+        let v: Vec<Dual64> = v.iter().zip(directions[1]).map(|(&x, d)| seed(x, d)).collect();
+        (q, v)
     };
+    let load = |c: usize, j: usize| match j {
+        0 | 1 => (state(j).0[c], state(j).1[c]),
+        _ => (Dual64::from((c == 0) as u8 as f64), Dual64::from((c == 1) as u8 as f64)),
+    };
+    let mu = seed(1.0, 0.9);
     for (tau, solved) in [(0.01, true), (0.4, true), (-0.8, true), (1.5, false)] {
-        let iterates = lanes.iterates(tau, 2, load);
-        assert_eq!(iterates[0].is_some(), solved, "tau {tau}: {iterates:?}");
-        let Some(s) = iterates[0] else { continue };
-        // seeded along a direction of the initial state and the parameter together
-        let seed = |x: f64, d: f64| Dual64::new(x, d);
-        let (q, v) = states[0];
-        let q: Vec<Dual64> = q.iter().zip([0.3, -0.2, 0.1]).map(|(&x, d)| seed(x, d)).collect();
-        let v: Vec<Dual64> = v.iter().zip([0.1, 0.4, -0.5]).map(|(&x, d)| seed(x, d)).collect();
-        // (a direction that changes the energy: beta's derivative part 0.4, not 0)
-        let mu = seed(1.0, 0.9);
-        let at_root = LagrangeCoefficients::near_root(mu, Dual64::from(tau), &q, &v, s);
-        let solved = LagrangeCoefficients::new(mu, Dual64::from(tau), &q, &v);
-        // and both against central differences of the f64 solve along the seeded direction
-        let at = |h: f64| {
-            let shift = |x: &[Dual64]| -> Vec<f64> { x.iter().map(|x| x.re + h * x.eps).collect() };
-            let c = LagrangeCoefficients::new(mu.re + h * mu.eps, tau, &shift(&q), &shift(&v));
-            [c.f_minus_one, c.g, c.f_dot, c.g_dot_minus_one]
+        let zeros = [[Dual64::from(0.0); LANES]; 3];
+        let (mut dq, mut dv) = (zeros, zeros);
+        let store = |c: usize, j: usize, q, v| (dq[c][j], dv[c][j]) = (q, v);
+        let lanes_solved = lanes.solve_dual(
+            Dual64::from(tau),
+            [[mu; LANES], [Dual64::from(1.0); LANES]],
+            2,
+            load,
+            store,
+        );
+        assert_eq!(lanes_solved[0], solved, "tau {tau}: {lanes_solved:?}");
+        if !solved {
+            continue;
+        }
+        // against the scalar solve on dual numbers (the root converged on the values)
+        let (q, v) = state(0);
+        let c = LagrangeCoefficients::new(mu, Dual64::from(tau), &q, &v);
+        let scalar = |i: usize| {
+            (
+                c.f_minus_one * q[i] + c.g * v[i],
+                c.f_dot * q[i] + c.g_dot_minus_one * v[i],
+            )
         };
-        let (plus, minus) = (at(1e-6), at(-1e-6));
-        let pairs = [
-            (at_root.f_minus_one, solved.f_minus_one),
-            (at_root.g, solved.g),
-            (at_root.f_dot, solved.f_dot),
-            (at_root.g_dot_minus_one, solved.g_dot_minus_one),
-        ];
-        for (k, (a, b)) in pairs.into_iter().enumerate() {
-            assert!(
-                (a.re - b.re).abs() <= 4.0 * EPS * b.re.abs().max(1.0),
-                "tau {tau}: {a} vs {b}"
-            );
-            assert!(
-                (a.eps - b.eps).abs() <= 1e-13 * b.eps.abs().max(1.0),
-                "tau {tau}: {a} vs {b}"
-            );
-            let difference = (plus[k] - minus[k]) / 2e-6;
-            assert!(
-                (a.eps - difference).abs() <= 1e-7 * difference.abs().max(1.0),
-                "tau {tau}: {a} against differences {difference}"
-            );
+        // and against central differences of the f64 solve along the seeded direction
+        let at = |h: f64, i: usize| {
+            let shift = |x: &[Dual64]| -> Vec<f64> { x.iter().map(|x| x.re + h * x.eps).collect() };
+            let (q, v) = (shift(&q), shift(&v));
+            let c = LagrangeCoefficients::new(mu.re + h * mu.eps, tau, &q, &v);
+            (
+                c.f_minus_one * q[i] + c.g * v[i],
+                c.f_dot * q[i] + c.g_dot_minus_one * v[i],
+            )
+        };
+        for i in 0..3 {
+            let ((plus_q, plus_v), (minus_q, minus_v)) = (at(1e-6, i), at(-1e-6, i));
+            let (scalar_q, scalar_v) = scalar(i);
+            for (a, b, difference) in [
+                (dq[i][0], scalar_q, (plus_q - minus_q) / 2e-6),
+                (dv[i][0], scalar_v, (plus_v - minus_v) / 2e-6),
+            ] {
+                assert!(
+                    (a.re - b.re).abs() <= 4.0 * EPS * b.re.abs().max(1.0),
+                    "tau {tau}: {a} vs {b}"
+                );
+                assert!(
+                    (a.eps - b.eps).abs() <= 1e-13 * b.eps.abs().max(1.0),
+                    "tau {tau}: {a} vs {b}"
+                );
+                assert!(
+                    (a.eps - difference).abs() <= 1e-7 * difference.abs().max(1.0),
+                    "tau {tau}: {a} against differences {difference}"
+                );
+            }
         }
     }
 }
