@@ -695,9 +695,9 @@ mod tests {
             out,
         };
         if portable {
-            task.run(Portable).0
+            task.run(Portable)
         } else {
-            dispatch(task).0
+            dispatch(task)
         }
     }
 

@@ -197,7 +197,7 @@ fn dual_flows<V: Lane>(
         let mut settled = true;
         for k in 0..count.min(LANES) {
             // a NaN lane is left to the test below
-            settled &= !(step[k].abs() > HALLEY_SETTLED * at[k].abs());
+            settled &= step[k].abs() <= HALLEY_SETTLED * at[k].abs() || step[k].is_nan();
         }
         if settled {
             break;
