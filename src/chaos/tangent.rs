@@ -160,15 +160,14 @@ where
         }
         for _ in 0..n {
             let t = origin + lit::<Re<P>>((self.steps - origin_step) as f64) * h;
-            let non_finite = Error::NonFinite {
-                t: to_f64(t),
-                step: self.steps,
-            };
             let (y, y_new) = self.pair();
             stepper.step(problem, P::Scalar::seeded(t, zero), h_dual, y, y_new)?;
             let length = to_f64(finite_variation_length::<P>(y_new));
             if !(length.is_finite() && length > 0.0) {
-                return Err(non_finite);
+                return Err(Error::NonFinite {
+                    t: to_f64(t),
+                    step: self.steps,
+                });
             }
             stepper.accept();
             self.current = 1 - self.current;
