@@ -7,14 +7,14 @@
 //! values alone (the cubic Taylor guess, then Halley steps, two for a step of a radian of
 //! eccentric anomaly, one for a short one), then one Newton correction on dual numbers from
 //! it, which gives the derivative of the flow (that of the implicit function) exactly. The
-//! operations of the correction are those of
-//! the scalar solve's on `Dual64` ([`LagrangeCoefficients::new`](super::LagrangeCoefficients::new))
-//! (num-dual's product, quotient and root rules, the Stiefel functions' dual parts by the
-//! chain rule), with the Stumpff functions summed by Estrin's scheme: the same flows to
-//! round-off. The Halley steps stop when every lane has settled, so a settled lane may take
-//! one more step for another's sake: its flow is then the same to round-off, not bit for
-//! bit (the values of the plain `f64` drift, [`KeplerLanes::advance`], never depend on
-//! the other lanes).
+//! correction is the scalar solve's on `Dual64`
+//! ([`LagrangeCoefficients::new`](super::LagrangeCoefficients::new)): num-dual's product and
+//! quotient rules, the Stiefel functions' dual parts by the chain rule; here the root's dual
+//! part uses the reciprocal the quotients by `r0` share, and the Stumpff functions are summed
+//! by Estrin's scheme: the same flows to round-off. The Halley steps stop when every lane
+//! has settled, so a settled lane may take one more step for another's sake: its flow is
+//! then the same to round-off, not bit for bit (the values of the plain `f64` drift,
+//! [`KeplerLanes::advance`], never depend on the other lanes).
 
 use num_dual::Dual64;
 
@@ -46,17 +46,6 @@ impl<V: Lane> Dual<V> {
         Dual {
             re: value,
             eps: half * slope,
-        }
-    }
-
-    /// num-dual's root rule: `sqrt(x)`, `eps sqrt(x) / x / 2`.
-    #[inline(always)]
-    fn sqrt(self) -> Self {
-        let f0 = self.re.sqrt();
-        let rec = self.re.splat(1.0) / self.re;
-        Dual {
-            re: f0,
-            eps: self.eps * (f0 * rec).times(0.5),
         }
     }
 
@@ -167,12 +156,16 @@ fn dual_flows<V: Lane>(
     let one = mu.re.splat(1.0);
     let v = [p[0] / mass, p[1] / mass, p[2] / mass];
     let (r0_2, v2, eta0) = (dot(q, q), dot(&v, &v), dot(q, &v));
-    let r0 = r0_2.sqrt();
+    // the root rule with the reciprocal the quotients by r0 share: (sqrt x)' = x' / (2 sqrt x)
+    let inv_r0 = one / r0_2.re.sqrt();
+    let r0 = Dual {
+        re: r0_2.re.sqrt(),
+        eps: r0_2.eps * inv_r0.times(0.5),
+    };
     let beta = Dual::constant(one, one.splat(2.0)) * mu / r0 - v2;
     let zeta0 = mu - beta * r0;
     // the root on the values: the third-order Taylor inverse of t(s) about s = 0 (as
     // `universal::guess`), then Halley steps, s - 2 f r / (2 r^2 - f r')
-    let inv_r0 = one / r0.re;
     let (u, a) = (tau.re * inv_r0, eta0.re * inv_r0);
     let cubic = (a * a).times(0.5) - (zeta0.re * inv_r0).times(1.0 / 6.0);
     let mut s = u * (one - u * (a.times(0.5) - u * cubic));
@@ -235,7 +228,8 @@ fn dual_flows<V: Lane>(
     let r = r0 + eta0 * g1 + zeta0 * g2;
     let minus_mu = mu.negated();
     let (f_minus_one, g_coef) = (minus_mu * g2 / r0, tau - mu * g3);
-    let (f_dot, g_dot_minus_one) = (minus_mu * g1 / (r * r0), minus_mu * g2 / r);
+    // (two quotients by the reciprocals already taken, not a third)
+    let (f_dot, g_dot_minus_one) = (minus_mu * g1 / r / r0, minus_mu * g2 / r);
     let (mut dq, mut dp) = (*q, *q);
     for c in 0..3 {
         dq[c] = f_minus_one * q[c] + g_coef * v[c];
@@ -257,14 +251,14 @@ fn dual_flows<V: Lane>(
 /// [`dual_flows`] on the parts by lane: `[i][j]` for the positions (`i` = 0 to 2),
 /// the momenta (3 to 5), `mu`, the mass and `tau` (6 to 8) of lane `j`.
 /// The flows go to `store(c, j, dq, dp)` (no array of them is built and copied).
-struct Correct<'a, F> {
+struct DualSolve<'a, F> {
     re: &'a [[f64; LANES]; 9],
     eps: &'a [[f64; LANES]; 9],
     count: usize,
     store: F,
 }
 
-impl<F: FnMut(usize, usize, Dual64, Dual64)> LaneTask for Correct<'_, F> {
+impl<F: FnMut(usize, usize, Dual64, Dual64)> LaneTask for DualSolve<'_, F> {
     type Output = [bool; LANES];
 
     #[inline(always)]
@@ -293,11 +287,11 @@ impl KeplerLanes {
     /// The flows of the first `count` problems on dual numbers, for time `tau` from the
     /// states read by `load(c, j)` (component `c` of the position and the momentum of lane
     /// `j`, as [`KeplerLanes::solve_with`] reads them), the problems' gravitational
-    /// parameters `mu` and masses `mass` on dual numbers (their values this
-    /// `KeplerLanes`'s, their dual parts those of a derivative with respect to them): the
+    /// parameters `mu` and masses `mass` on dual numbers (their values those of this
+    /// `KeplerLanes`, their dual parts those of a derivative with respect to them): the
     /// roots found on the values and the correction on dual numbers, in lanes. What
     /// the flow adds to component `c` of lane `j`'s position and momentum goes to
-    /// `store(c, j, dq, dp)` for every lane; gives the lanes the sequences solved (the
+    /// `store(c, j, dq, dp)` for every lane; gives the lanes solved to round-off (the
     /// others' flows are meaningless, for the caller's scalar solve,
     /// [`LagrangeCoefficients::new`](super::LagrangeCoefficients::new) on dual numbers).
     #[inline(always)]
@@ -320,7 +314,7 @@ impl KeplerLanes {
                 (re[6 + i][j], eps[6 + i][j]) = (x.re, x.eps);
             }
         }
-        dispatch(Correct {
+        dispatch(DualSolve {
             re: &re,
             eps: &eps,
             count,

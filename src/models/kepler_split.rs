@@ -299,9 +299,11 @@ impl<T: Real, S: State<Scalar = T>, K: Shape> KeplerSplit<T, S, K> {
 
     /// What the Kepler motions for `tau` add to the positions and momenta of the bodies
     /// `first..first + count` (`count <= LANES`, `first >= 1`), `[c][j]` for component `c`
-    /// of body `first + j`, computed from `(q, p)` without forming the new state. In `f64`,
-    /// solved together ([`KeplerLanes`]); in every other scalar (`f32`, the dual numbers of
-    /// `verify`), one by one ([`LagrangeCoefficients::new`]).
+    /// of body `first + j`, computed from `(q, p)` without forming the new state. In `f64`
+    /// and on [`Dual64`] (a tangent map's), solved together ([`KeplerLanes`],
+    /// [`KeplerLanes::solve_dual`]); in every other scalar (`f32`, the second-order dual
+    /// numbers of `verify`), and in a lane the lanes do not solve, one by one
+    /// ([`LagrangeCoefficients::new`]).
     #[inline(always)]
     fn kepler_chunk(&self, tau: T, q: &[T], p: &[T], first: usize, count: usize) -> [[[T; LANES]; 3]; 2] {
         let d = self.bodies.dim();
