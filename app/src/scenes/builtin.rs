@@ -190,7 +190,38 @@ pub fn source(name_or_path: &str) -> Result<SceneSource, Error> {
 /// assert!(err.to_string().contains("unknown field `Q`"));
 /// ```
 pub fn parse(text: &str, origin: &str, name: &str) -> Result<AnyScene, Error> {
-    let src = Source { origin, text };
+    parse_source(
+        &Source {
+            origin,
+            text,
+            table: None,
+        },
+        name,
+    )
+}
+
+/// [`parse`] of a scene file already read into a table (`toml::de::DeTable::parse` of
+/// `text`, numbers possibly replaced in it since): the same scene, without reading the
+/// text again. Its errors' lines are `text`'s.
+pub fn parse_table<'a>(
+    table: &'a toml::Spanned<toml::de::DeTable<'a>>,
+    text: &'a str,
+    origin: &'a str,
+    name: &str,
+) -> Result<AnyScene, Error> {
+    parse_source(
+        &Source {
+            origin,
+            text,
+            table: Some(table),
+        },
+        name,
+    )
+}
+
+/// [`parse`] of a [`Source`].
+fn parse_source(src: &Source<'_>, name: &str) -> Result<AnyScene, Error> {
+    let src = *src;
     let model = model_name(&src)?;
     let scene = match model.get_ref().as_str() {
         Harmonic::MODEL => AnyScene::Harmonic(parse_as(&src, name)?),

@@ -6,6 +6,7 @@ use super::{Scene, Setup};
 use serde::Deserialize;
 use stormer::text::{line_column, one_line, toml_message};
 use stormer::Error;
+use toml::de::DeTable;
 use toml::Spanned;
 
 /// A number read from a scene file, with where it was written (for error messages).
@@ -19,6 +20,9 @@ pub struct Source<'a> {
     pub origin: &'a str,
     /// The file's text.
     pub text: &'a str,
+    /// The file already read into a table, when it was (an ensemble's members: the
+    /// scene's table read once, the varied numbers replaced in it); its spans are `text`'s.
+    pub table: Option<&'a Spanned<DeTable<'a>>>,
 }
 
 impl Source<'_> {
@@ -222,6 +226,10 @@ struct Header {
 /// the file is read alone when it names the model (the whole file, of 10^5 bodies, is
 /// read once, by the second pass). Otherwise the whole file is, for its errors.
 pub(super) fn model_name(src: &Source<'_>) -> Result<Spanned<String>, Error> {
+    let in_table = src.table.and_then(|t| t.get_ref().get("model"));
+    if let Some(name) = in_table.and_then(|m| m.get_ref().as_str()) {
+        return Ok(Spanned::new(in_table.map_or(0..0, |m| m.span()), name.to_string()));
+    }
     let first_table = src
         .text
         .match_indices('\n')
@@ -238,7 +246,11 @@ pub(super) fn model_name(src: &Source<'_>) -> Result<Spanned<String>, Error> {
 
 /// Second pass: the whole file read as a scene of model `S`.
 pub(super) fn parse_as<S: Scene>(src: &Source<'_>, name: &str) -> Result<Setup<S>, Error> {
-    let file: SceneFile<S::Parameters, S::Initial> = toml::from_str(src.text).map_err(|e| src.toml_error(&e))?;
+    let file: SceneFile<S::Parameters, S::Initial> = match src.table {
+        Some(table) => SceneFile::deserialize(toml::de::Deserializer::from(table.clone())),
+        None => toml::from_str(src.text),
+    }
+    .map_err(|e| src.toml_error(&e))?;
     let initial = file
         .initial
         .ok_or_else(|| src.error(format!("missing {} (the initial state)", S::INITIAL)))?;

@@ -67,7 +67,7 @@ mod three_body_outcome;
 mod time_transformed;
 
 pub use arenstorf::{RestrictedThreeBody, ThreeBodyInitial, ThreeBodyParameters};
-pub use builtin::{builtin, load, parse, source, BuiltinScene, SceneSource, BUILTIN};
+pub use builtin::{builtin, load, parse, parse_table, source, BuiltinScene, SceneSource, BUILTIN};
 pub use central_force_file::{CentralForceInitial, CentralForceParameters};
 pub(crate) use chaos::bodies_step_jacobian;
 pub use chaos::{ChaosRun, ChaosSample, Watch, Watched};

@@ -69,6 +69,9 @@ pub struct EnsembleArgs {
 /// method.
 struct Members<'a> {
     scene: &'a SceneText,
+    /// The scene file read into a table once, for every member to replace its numbers in
+    /// (`None` if it cannot be: every member then reads its own text).
+    table: Option<toml::Spanned<toml::de::DeTable<'a>>>,
     varied: Vec<&'a scene_numbers::Entry>,
     axes: &'a [Axis],
     method: &'a Method,
@@ -93,8 +96,24 @@ impl Members<'_> {
         };
         let pairs: Vec<(&scene_numbers::Entry, f64)> =
             self.varied.iter().copied().zip(values.iter().copied()).collect();
-        let text = scene_numbers::substitute(&self.scene.text, &pairs)?;
-        let scene = scenes::parse(&text, &self.scene.origin, &self.scene.name).map_err(refused)?;
+        // the member's numbers replaced in the table read once; where that fails, the
+        // member's own text, read as `stormer run` would (its errors name its lines)
+        let written = scene_numbers::written_values(&pairs);
+        let from_table = self
+            .table
+            .as_ref()
+            .zip(written.as_deref())
+            .and_then(|(table, written)| {
+                let table = scene_numbers::replaced(table, &pairs, written)?;
+                scenes::parse_table(&table, &self.scene.text, &self.scene.origin, &self.scene.name).ok()
+            });
+        let scene = match from_table {
+            Some(scene) => scene,
+            None => {
+                let text = scene_numbers::substitute(&self.scene.text, &pairs)?;
+                scenes::parse(&text, &self.scene.origin, &self.scene.name).map_err(refused)?
+            }
+        };
         scene
             .visit(Flight {
                 method: self.method,
@@ -346,6 +365,7 @@ impl Plan {
     ) -> anyhow::Result<Rows> {
         let members = Members {
             scene: &self.scene,
+            table: toml::de::DeTable::parse(&self.scene.text).ok(),
             varied: self.varied.iter().collect(),
             axes: &self.id.axes,
             method: &self.method,

@@ -151,12 +151,77 @@ pub fn substitute(text: &str, values: &[(&Entry, f64)]) -> Result<String, Error>
     Ok(out)
 }
 
+/// The values written as [`substitute`] writes them into the text (`None` if one cannot
+/// be), for [`replaced`].
+pub fn written_values(values: &[(&Entry, f64)]) -> Option<Vec<String>> {
+    values.iter().map(|(entry, x)| written(entry, *x).ok()).collect()
+}
+
+/// `table` (a scene file read by `toml::de::DeTable::parse`) with each entry's number
+/// replaced by its value as `written` ([`written_values`]): the table [`substitute`]'s text
+/// would read into. `None` where an entry's key does not lead to a number in it (the
+/// caller then reads the substituted text, for its errors).
+pub fn replaced<'i>(
+    table: &toml::Spanned<toml::de::DeTable<'i>>,
+    values: &[(&Entry, f64)],
+    written: &'i [String],
+) -> Option<toml::Spanned<toml::de::DeTable<'i>>> {
+    use toml::de::DeValue;
+    let mut table = table.clone();
+    for ((entry, _), number) in values.iter().zip(written) {
+        let number = DeValue::parse(number).ok()?.into_inner();
+        let mut keys = entry.key.split('.');
+        let mut at = table.get_mut().get_mut(keys.next()?)?.get_mut();
+        for key in keys {
+            at = match at {
+                DeValue::Table(t) => t.get_mut(key)?.get_mut(),
+                DeValue::Array(a) => a.get_mut(key.parse::<usize>().ok()?)?.get_mut(),
+                _ => return None,
+            };
+        }
+        if !matches!(at, DeValue::Float(_) | DeValue::Integer(_)) {
+            return None;
+        }
+        if !matches!(number, DeValue::Float(_) | DeValue::Integer(_)) {
+            return None;
+        }
+        *at = number;
+    }
+    Some(table)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
 
     const SCENE: &str = "model = \"m\" # x = 1\n[parameters]\nspin = 12.5   # rad/s\nE = [0.0, 1, 2e3]\n\
                          [initial]\nalpha = 30.0\n[[bodies]]\nmass = 1.0\n[[bodies]]\nmass = 2.0\n[run]\nevery = 1\n";
+
+    #[test]
+    fn a_table_with_numbers_replaced_reads_as_the_substituted_text() {
+        use serde::Deserialize;
+        let numbers = Numbers::of(SCENE).unwrap();
+        let value =
+            |table: toml::Spanned<DeTable<'_>>| toml::Value::deserialize(toml::de::Deserializer::from(table)).unwrap();
+        let table = DeTable::parse(SCENE).unwrap();
+        // every entry, floats and the integer, arrays and arrays of tables
+        let values: Vec<(&Entry, f64)> = numbers
+            .entries
+            .iter()
+            .zip([0.25, -3.0, 7.0, 1e-9, 2.0, 5.0, 6.0, 4.0])
+            .collect();
+        let written = written_values(&values).unwrap();
+        let in_table = replaced(&table, &values, &written).unwrap();
+        let text = substitute(SCENE, &values).unwrap();
+        assert_eq!(value(in_table), value(DeTable::parse(&text).unwrap()));
+        // a key that leads to no number: left to the text
+        let missing = Entry {
+            key: "parameters.nothing".into(),
+            span: 0..0,
+            integer: false,
+        };
+        assert!(replaced(&table, &[(&missing, 1.0)], &["1.0".to_string()]).is_none());
+    }
 
     #[test]
     fn keys_address_every_number_in_file_order() {
