@@ -327,7 +327,7 @@ fn solve<V: Lane, const L: bool>(mu: V, mass: V, tau: f64, q: &[V; 3], p: &[V; 3
 
 /// The larger `|z|` lane by lane (NaN stays: it compares false).
 #[inline(always)]
-fn wider(a: [f64; LANES], z: [f64; LANES]) -> [f64; LANES] {
+pub(super) fn wider(a: [f64; LANES], z: [f64; LANES]) -> [f64; LANES] {
     let mut out = a;
     for k in 0..LANES {
         out[k] = if z[k].abs() > a[k] || z[k].is_nan() {

@@ -18,7 +18,7 @@
 
 use num_dual::Dual64;
 
-use super::lanes::{dispatch, series_long, Lane, LaneTask};
+use super::lanes::{dispatch, series_long, wider, Lane, LaneTask};
 use super::universal::{STUMPFF_C4, STUMPFF_C5};
 use super::{KeplerLanes, LANES};
 use crate::magnetic::{STUMPFF_C2, STUMPFF_C3};
@@ -126,20 +126,6 @@ const HALLEY_STEPS: usize = 3;
 /// radian of eccentric anomaly).
 const CONVERGED: f64 = 1e-9;
 const LARGEST_ARGUMENT: f64 = 1.0;
-
-/// The larger `|z|` lane by lane (NaN stays).
-#[inline(always)]
-fn wider(a: [f64; LANES], z: [f64; LANES]) -> [f64; LANES] {
-    let mut out = a;
-    for k in 0..LANES {
-        out[k] = if z[k].abs() > a[k] || z[k].is_nan() {
-            z[k].abs()
-        } else {
-            a[k]
-        };
-    }
-    out
-}
 
 /// The flows `(dq, dp)` of the Kepler problems `(mu, mass)` for `tau` from `(q, p)`, and
 /// the lanes solved to round-off among the first `count`: the root of the universal
