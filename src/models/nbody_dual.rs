@@ -49,11 +49,13 @@ pub(super) fn pairwise_fixed<T: Real, const D: usize, const N: usize>(gm: &[T], 
     if TypeId::of::<T>() != TypeId::of::<Dual64>() || D > 3 {
         return false;
     }
-    let (mut gms, mut ms, mut qs) = ([Dual64::from(0.0); N], [Dual64::from(0.0); N], [ZERO; N]);
+    // (T is Dual64 here: the conversions cannot fail)
+    let zero = Dual64::from(0.0);
+    let (mut gms, mut ms, mut qs) = ([zero; N], [zero; N], [ZERO; N]);
     for k in 0..N {
-        (gms[k], ms[k]) = (dual(&gm[k]).unwrap_or(gms[k]), dual(&m[k]).unwrap_or(ms[k]));
+        (gms[k], ms[k]) = (dual(&gm[k]).unwrap_or(zero), dual(&m[k]).unwrap_or(zero));
         for c in 0..D {
-            let x = dual(&q[k * D + c]).unwrap_or(gms[k]);
+            let x = dual(&q[k * D + c]).unwrap_or(zero);
             (qs[k].re[c], qs[k].eps[c]) = (x.re, x.eps);
         }
     }
