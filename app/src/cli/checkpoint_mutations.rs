@@ -159,14 +159,6 @@ proptest! {
 #[test]
 fn the_good_checkpoint_is_read_and_its_state_resumes() {
     let (good, _) = good_checkpoint();
-    let run = driver().run_resumable(
-        &Kepler::new(1.0),
-        &mut stepper(),
-        0.0,
-        &Y0,
-        3.0,
-        &mut Solution::default(),
-        Some(&good.run),
-    );
+    let run = kepler_run(driver(), Some(&good.run));
     assert!(run.outcome.is_ok());
 }
